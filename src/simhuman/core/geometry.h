@@ -1,0 +1,52 @@
+#pragma once
+/// Plain geometry shared by world, plan and control: primitive shapes and rigid poses.
+/// No MuJoCo here. Lengths in metres, quaternions in MuJoCo order (w, x, y, z).
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace simhuman::core {
+
+/// A rigid transform: world_from_local.
+struct Pose {
+  Eigen::Vector3d pos = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond quat = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d Apply(const Eigen::Vector3d& p_local) const { return pos + quat * p_local; }
+  Eigen::Vector3d ApplyInverse(const Eigen::Vector3d& p_world) const {
+    return quat.conjugate() * (p_world - pos);
+  }
+  Pose Compose(const Pose& child) const { return {Apply(child.pos), quat * child.quat}; }
+  /// A pose from a position and a yaw about +z (radians).
+  static Pose FromYaw(const Eigen::Vector3d& pos, double yaw_rad);
+};
+
+enum class ShapeKind { kBox, kSphere, kCapsule, kCylinder };
+
+/// A solid primitive in its parent's frame. `size` follows MuJoCo geom conventions:
+/// box half-extents (x, y, z); sphere (r); capsule and cylinder (r, half-length along local z).
+struct Shape {
+  ShapeKind kind = ShapeKind::kBox;
+  Pose pose;  // parent_from_shape
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+};
+
+/// Nearest point of the solid `shape` (placed at `world_from_parent`) to `p_world`; returns
+/// `p_world` itself when the point is inside the solid.
+Eigen::Vector3d NearestPointOnShape(const Shape& shape, const Pose& world_from_parent,
+                                    const Eigen::Vector3d& p_world);
+
+/// Nearest point over a union of shapes (at least one shape required).
+Eigen::Vector3d NearestPointOnShapes(const std::vector<Shape>& shapes,
+                                     const Pose& world_from_parent,
+                                     const Eigen::Vector3d& p_world);
+
+/// Samples points on the surface of `shape` with roughly `spacing_m` between neighbours, in the
+/// parent frame. Deterministic.
+std::vector<Eigen::Vector3d> SampleShapeSurface(const Shape& shape, double spacing_m);
+
+/// Axis-aligned bounds (in the parent frame) of a set of shapes: {min, max}.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> ShapesBounds(const std::vector<Shape>& shapes);
+
+}  // namespace simhuman::core

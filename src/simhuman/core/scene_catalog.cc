@@ -1,0 +1,62 @@
+#include "simhuman/core/scene_catalog.h"
+
+#include <cctype>
+
+namespace simhuman::core {
+
+std::string NormalizeName(std::string_view name) {
+  std::string s;
+  for (char c : name) {
+    s += (c == '_') ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  while (!s.empty() && (std::isdigit(static_cast<unsigned char>(s.back())) || s.back() == ' ')) {
+    s.pop_back();
+  }
+  size_t b = s.find_first_not_of(' ');
+  return b == std::string::npos ? std::string() : s.substr(b);
+}
+
+const CatalogPart* CatalogObject::FindPart(std::string_view name) const {
+  std::string n = NormalizeName(name);
+  for (const CatalogPart& p : parts) {
+    if (NormalizeName(p.name) == n) return &p;
+  }
+  for (const CatalogPart& p : parts) {
+    for (const std::string& a : p.aliases) {
+      if (NormalizeName(a) == n) return &p;
+    }
+  }
+  return nullptr;
+}
+
+std::vector<std::string> CatalogObject::PartNames() const {
+  std::vector<std::string> out;
+  for (const CatalogPart& p : parts) out.push_back(p.name);
+  return out;
+}
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> CatalogObject::LocalBounds() const {
+  return ShapesBounds(shapes);
+}
+
+const CatalogObject* SceneCatalog::Find(std::string_view id) const {
+  for (const CatalogObject& o : objects) {
+    if (o.id == id) return &o;
+  }
+  return nullptr;
+}
+
+CatalogObject* SceneCatalog::Find(std::string_view id) {
+  for (CatalogObject& o : objects) {
+    if (o.id == id) return &o;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> SceneCatalog::ObjectIds() const {
+  std::vector<std::string> out;
+  for (const CatalogObject& o : objects) out.push_back(o.id);
+  return out;
+}
+
+}  // namespace simhuman::core

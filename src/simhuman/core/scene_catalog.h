@@ -1,0 +1,59 @@
+#pragma once
+/// A plain description of a scene's objects and their named parts, exported by world/ and used
+/// by plan/ (grounding, metrics) and control/ (contact targets). No MuJoCo here.
+///
+/// Object frame convention: +z up, +x is the object's "front" (the way a seated person faces,
+/// the side one approaches a bed or table from); +y is the object's left as seen by a person
+/// facing the object's front... i.e. the seated person's left. Yaw rotates about +z.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "simhuman/core/geometry.h"
+
+namespace simhuman::core {
+
+/// A named part of an object: a union of solid primitives in the object frame.
+struct CatalogPart {
+  std::string name;                  // canonical, e.g. "seat surface"
+  std::vector<std::string> aliases;  // other accepted names, e.g. "seat", "seat soft surface"
+  std::vector<Shape> shapes;         // in the object frame; never empty
+};
+
+/// One object of a scene.
+struct CatalogObject {
+  std::string id;     // unique, e.g. "chair000"
+  std::string type;   // built-in type, e.g. "chair", "bed", "box"
+  std::string color;  // colour name, e.g. "red" (may be empty)
+  Pose pose;          // world_from_object; updated from the simulation for movable objects
+  bool movable = false;
+  double mass_kg = 0.0;            // movable objects only
+  std::vector<CatalogPart> parts;  // named parts
+  std::vector<Shape> shapes;       // every solid of the object (parts and unnamed, e.g. legs)
+
+  /// The part whose name or alias matches `name` (case-insensitive; trailing digits of
+  /// ScenePlan names such as "mattress25" are ignored). nullptr when none matches.
+  const CatalogPart* FindPart(std::string_view name) const;
+  /// Canonical part names, for error messages.
+  std::vector<std::string> PartNames() const;
+  /// Bounds of all shapes in the object frame: {min, max}.
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> LocalBounds() const;
+};
+
+/// All objects of a scene plus the number of simulated humans.
+struct SceneCatalog {
+  std::vector<CatalogObject> objects;
+  int num_agents = 1;
+
+  const CatalogObject* Find(std::string_view id) const;
+  CatalogObject* Find(std::string_view id);
+  std::vector<std::string> ObjectIds() const;
+};
+
+/// Normalizes a part or object name for matching: lower case, '_' -> ' ', trailing digits and
+/// surrounding spaces removed ("Seat_Soft_Surface42" -> "seat soft surface").
+std::string NormalizeName(std::string_view name);
+
+}  // namespace simhuman::core
