@@ -1,0 +1,56 @@
+#pragma once
+/// The controller interface the episode runner drives.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <mujoco/mujoco.h>
+
+#include "simhuman/control/task.h"
+#include "simhuman/core/status.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::control {
+
+/// What a controller sees at a control tick. Learned policies read only proprioception
+/// (`data` restricted to their agent), the contact targets of the current step and the height
+/// map; model-based planners (the sampling MPC) also read the full simulator state through
+/// `world`/`data`, because they roll the model forward.
+struct Observation {
+  double time_s = 0;
+  int agent = 0;
+  const world::SimWorld* world = nullptr;
+  const mjData* data = nullptr;
+  int step_index = 0;          ///< index of the current plan step
+  const StepTask* task = nullptr;  ///< the current step in controller terms
+  std::array<Eigen::Vector3d, core::kNumBodyJoints> body_points;  ///< world positions
+  /// Per term of `task`: target point minus joint (UniHSI's v_np - v_j).
+  std::vector<Eigen::Vector3d> contact_offsets;
+  /// Ego-centric height map (row-major, `heightmap_size` x `heightmap_size` cells of
+  /// `heightmap_cell_m`, centred on the pelvis, x forward): heights above the floor.
+  std::vector<float> heightmap;
+  int heightmap_size = 0;
+  double heightmap_cell_m = 0;
+};
+
+/// A controller of one agent. Not thread-safe; one instance per agent.
+class Controller {
+ public:
+  virtual ~Controller() = default;
+  virtual std::string name() const = 0;
+  /// Called at the control rate. Plans or infers; must not step `obs.data`.
+  virtual absl::Status Act(const Observation& obs) = 0;
+  /// Called every physics step: writes the agent's 28 servo targets for time `time_s`.
+  virtual void Targets(double time_s, double* ctrl28) const = 0;
+  /// Control period (s) at which the runner calls Act().
+  virtual double control_period_s() const = 0;
+};
+
+/// Builds an ego-centric height map around agent `agent` from the scene catalog's shapes
+/// (ray-free: the top of every object shape under each cell).
+void BuildHeightmap(const core::SceneCatalog& scene, const Eigen::Vector3d& pelvis,
+                    double yaw_rad, int size, double cell_m, std::vector<float>* out);
+
+}  // namespace simhuman::control

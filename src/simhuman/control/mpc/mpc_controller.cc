@@ -1,0 +1,351 @@
+#include "simhuman/control/mpc/mpc_controller.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <thread>
+
+#include "simhuman/core/rng.h"
+
+namespace simhuman::control {
+namespace {
+
+constexpr int kDofs = world::kHumanoidDofs;
+constexpr double kRefTableDt = 0.02;
+
+double SmoothL1(double x, double delta) {
+  return x < delta ? 0.5 * x * x / delta : x - 0.5 * delta;
+}
+
+double Smoothstep(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3 - 2 * x);
+}
+
+// importance of each body point in reference tracking
+constexpr std::array<double, core::kNumBodyJoints> kTrackWeight = {
+    2.0,  // pelvis
+    1.5,  // torso
+    1.5,  // head
+    0.4, 0.4, 0.4,  // left shoulder, elbow, hand
+    0.4, 0.4, 0.4,  // right shoulder, elbow, hand
+    0.6, 1.0, 1.0,  // left hip, knee, foot
+    0.6, 1.0, 1.0,  // right hip, knee, foot
+};
+
+}  // namespace
+
+absl::StatusOr<std::unique_ptr<MpcController>> MpcController::Create(const world::SimWorld* world,
+                                                                     int agent,
+                                                                     const MpcConfig& config,
+                                                                     uint64_t seed) {
+  SH_RETURN_IF_ERROR(config.Validate());
+  if (agent < 0 || agent >= world->num_agents()) {
+    return absl::InvalidArgumentError("agent index " + std::to_string(agent) + " out of range");
+  }
+  std::unique_ptr<MpcController> c(new MpcController());
+  c->world_ = world;
+  c->agent_ = agent;
+  c->config_ = config;
+  c->seed_ = seed;
+  c->plan_model_ = mj_copyModel(nullptr, world->model());
+  c->plan_model_->opt.timestep = config.plan_dt_s;
+  for (int t = 0; t < config.threads; ++t) c->thread_data_.push_back(mj_makeData(c->plan_model_));
+  c->scratch_ = mj_makeData(world->model());
+  const mjModel* m = world->model();
+  const world::AgentIndex& a = world->agent(agent);
+  const auto& names = world::HumanoidJointNames();
+  for (int j = 0; j < kDofs; ++j) {
+    c->lo_[j] = m->actuator_ctrlrange[2 * a.actuator[j]];
+    c->hi_[j] = m->actuator_ctrlrange[2 * a.actuator[j] + 1];
+    bool arm = names[j].find("shoulder") != std::string::npos ||
+               names[j].find("elbow") != std::string::npos;
+    bool neck = names[j].find("neck") != std::string::npos;
+    c->noise_scale_[j] = arm ? 1.5 : (neck ? 0.5 : 1.0);
+  }
+  return c;
+}
+
+MpcController::~MpcController() {
+  for (mjData* d : thread_data_) mj_deleteData(d);
+  if (scratch_) mj_deleteData(scratch_);
+  if (plan_model_) mj_deleteModel(plan_model_);
+}
+
+void MpcController::Interp(const Knots& knots, double t0, double span, double t, double* out) {
+  const int k = static_cast<int>(knots.size());
+  double u = std::clamp((t - t0) / span, 0.0, 1.0) * (k - 1);
+  int i = std::min(static_cast<int>(u), k - 2);
+  double f = u - i;
+  for (int j = 0; j < kDofs; ++j) out[j] = (1 - f) * knots[i][j] + f * knots[i + 1][j];
+}
+
+std::array<double, kDofs> MpcController::RefHinges(double t) const {
+  double s = Smoothstep((t - ramp_t0_) / ramp_s_);
+  std::array<double, kDofs> q;
+  for (int j = 0; j < kDofs; ++j) q[j] = start_.hinges[j] + s * (goal_.hinges[j] - start_.hinges[j]);
+  return q;
+}
+
+void MpcController::RefPoints(double t, std::array<Eigen::Vector3d, core::kNumBodyJoints>* pts) const {
+  int n = static_cast<int>(ref_table_.size());
+  double u = std::clamp((t - ramp_t0_) / kRefTableDt, 0.0, static_cast<double>(n - 1));
+  int i = std::min(static_cast<int>(u), n - 2);
+  if (n == 1) {
+    *pts = ref_table_[0];
+    return;
+  }
+  double f = u - i;
+  for (int b = 0; b < core::kNumBodyJoints; ++b) {
+    (*pts)[b] = (1 - f) * ref_table_[i][b] + f * ref_table_[i + 1][b];
+  }
+}
+
+void MpcController::StartStep(const Observation& obs, const StepTask& task) {
+  const world::AgentIndex& a = world_->agent(agent_);
+  task_ = task;
+  step_index_ = obs.step_index;
+  start_ = GetAgentPose(a, obs.data);
+  goal_ = SolveReferencePose(*world_, agent_, task_, obs.data, scratch_);
+  // ramp duration from the largest joint change and the root travel
+  double dq = 0;
+  for (int j = 0; j < kDofs; ++j) dq = std::max(dq, std::abs(goal_.hinges[j] - start_.hinges[j]));
+  double dx = std::hypot(goal_.root[0] - start_.root[0], goal_.root[1] - start_.root[1]);
+  double dz = std::abs(goal_.root[2] - start_.root[2]);
+  ramp_s_ = std::clamp(std::max({dq / config_.ramp_speed_rad_s, dx / 0.35, dz / 0.4}),
+                       config_.min_ramp_s, config_.max_ramp_s);
+  ramp_t0_ = obs.time_s;
+  // reference body points along the ramp
+  ref_table_.clear();
+  mj_copyData(scratch_, world_->model(), obs.data);
+  Eigen::Quaterniond q0(start_.root[3], start_.root[4], start_.root[5], start_.root[6]);
+  Eigen::Quaterniond q1(goal_.root[3], goal_.root[4], goal_.root[5], goal_.root[6]);
+  int n = static_cast<int>(std::ceil(ramp_s_ / kRefTableDt)) + 1;
+  for (int i = 0; i < n; ++i) {
+    double s = Smoothstep(i * kRefTableDt / ramp_s_);
+    ReferencePose p;
+    for (int k = 0; k < 3; ++k) p.root[k] = start_.root[k] + s * (goal_.root[k] - start_.root[k]);
+    Eigen::Quaterniond q = q0.slerp(s, q1);
+    p.root[3] = q.w();
+    p.root[4] = q.x();
+    p.root[5] = q.y();
+    p.root[6] = q.z();
+    for (int j = 0; j < kDofs; ++j) p.hinges[j] = start_.hinges[j] + s * (goal_.hinges[j] - start_.hinges[j]);
+    SetAgentPose(a, p, scratch_);
+    mj_kinematics(world_->model(), scratch_);
+    ref_table_.push_back(world_->BodyPoints(scratch_, agent_));
+  }
+  // seat height gates the balance term while sitting down
+  seat_top_z_ = -1;
+  for (const ContactTerm& t : task_.terms) {
+    if (t.joint == core::BodyJoint::kPelvis && t.part && t.type == plan::ContactType::kContact) {
+      auto [lo, hi] = core::ShapesBounds(t.part->shapes);
+      seat_top_z_ = t.object->pose.pos.z() + hi.z();
+    }
+  }
+  // the nominal starts at the reference
+  nominal_.assign(config_.knots, {});
+  nominal_t0_ = obs.time_s;
+  double span = config_.horizon_s;
+  for (int k = 0; k < config_.knots; ++k) {
+    nominal_[k] = RefHinges(obs.time_s + span * k / (config_.knots - 1));
+  }
+}
+
+double MpcController::Rollout(int thread, const Knots& knots, double t0,
+                              const mjData* start) const {
+  const mjModel* m = plan_model_;
+  mjData* d = thread_data_[thread];
+  const world::AgentIndex& a = world_->agent(agent_);
+  d->time = start->time;
+  std::memcpy(d->qpos, start->qpos, sizeof(mjtNum) * m->nq);
+  std::memcpy(d->qvel, start->qvel, sizeof(mjtNum) * m->nv);
+  std::memcpy(d->qacc_warmstart, start->qacc_warmstart, sizeof(mjtNum) * m->nv);
+  std::memcpy(d->ctrl, start->ctrl, sizeof(mjtNum) * m->nu);
+  if (m->na) std::memcpy(d->act, start->act, sizeof(mjtNum) * m->na);
+
+  const int steps = std::max(1, static_cast<int>(std::lround(config_.horizon_s / config_.plan_dt_s)));
+  const double scale = a.scale;
+  const bool standing = task_.posture == Posture::kStand || task_.posture == Posture::kLean;
+  const bool sitting = task_.posture == Posture::kSit;
+  const bool lying = task_.posture == Posture::kLieBack || task_.posture == Posture::kLieSide;
+  std::array<double, kDofs> u;
+  std::array<Eigen::Vector3d, core::kNumBodyJoints> pts, ref;
+  Eigen::Vector3d com_prev = Eigen::Vector3d::Zero();
+  double cost = 0;
+  for (int h = 0; h < steps; ++h) {
+    double t = d->time;
+    Interp(knots, t0, config_.horizon_s, t, u.data());
+    for (int j = 0; j < kDofs; ++j) d->ctrl[a.actuator[j]] = u[j];
+    mj_step(m, d);
+    if (!world::AllFinite(d->qpos, m->nq) || !world::AllFinite(d->qvel, m->nv)) {
+      return std::numeric_limits<double>::infinity();
+    }
+    // positions below are those of time t (mj_step computes kinematics before integrating)
+    for (int b = 0; b < core::kNumBodyJoints; ++b) {
+      const mjtNum* x = d->site_xpos + 3 * a.site[b];
+      pts[b] = Eigen::Vector3d(x[0], x[1], x[2]);
+    }
+    RefPoints(t, &ref);
+    double c = 0;
+    // reference tracking
+    double track = 0;
+    for (int b = 0; b < core::kNumBodyJoints; ++b) {
+      track += kTrackWeight[b] * SmoothL1((pts[b] - ref[b]).norm(), 0.05);
+    }
+    c += config_.w_track * track;
+    // contact terms with adaptive weights
+    for (size_t k = 0; k < task_.terms.size(); ++k) {
+      const ContactTerm& term = task_.terms[k];
+      const Eigen::Vector3d& p = pts[static_cast<int>(term.joint)];
+      Eigen::Vector3d np = term.Nearest(p, pts);
+      double w = config_.w_contact * (0.3 + term_weights_[k]);
+      if (term.type == plan::ContactType::kContact) {
+        Eigen::Vector3d dir = term.dir;
+        if (dir.squaredNorm() < 0.5) {
+          Eigen::Vector3d away = p - np;
+          dir = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
+        }
+        c += w * SmoothL1((p - (np + dir * term.clearance_m)).norm(), 0.03);
+      } else {
+        c += w * std::max(0.0, 0.18 * scale - (p - np).norm());
+      }
+    }
+    // balance: capture point over the middle of the feet, while standing (or not yet seated)
+    const mjtNum* comp = d->subtree_com + 3 * a.pelvis_body;
+    Eigen::Vector3d com(comp[0], comp[1], comp[2]);
+    const Eigen::Vector3d& pelvis = pts[static_cast<int>(core::BodyJoint::kPelvis)];
+    bool balance = standing || (sitting && pelvis.z() > seat_top_z_ + 0.2 * scale);
+    if (balance && h > 0) {
+      Eigen::Vector3d v = (com - com_prev) / config_.plan_dt_s;
+      Eigen::Vector3d cp = com + v * std::sqrt(std::max(com.z(), 0.1) / 9.81);
+      Eigen::Vector3d mid = 0.5 * (pts[static_cast<int>(core::BodyJoint::kLeftFoot)] +
+                                   pts[static_cast<int>(core::BodyJoint::kRightFoot)]);
+      c += config_.w_balance * SmoothL1((cp.head<2>() - mid.head<2>()).norm(), 0.05);
+    }
+    com_prev = com;
+    // upright torso
+    if (!lying) {
+      double zz = d->xmat[9 * a.torso_body + 8];
+      c += config_.w_upright * (1.0 - zz);
+    }
+    // effort, servo targets near the reference, joint speeds
+    double effort = 0, dev = 0, vel = 0;
+    auto qref = RefHinges(t);
+    for (int j = 0; j < kDofs; ++j) {
+      double lim = m->actuator_forcerange[2 * a.actuator[j] + 1];
+      double f = d->actuator_force[a.actuator[j]] / lim;
+      effort += f * f;
+      dev += (u[j] - qref[j]) * (u[j] - qref[j]);
+      double qd = d->qvel[a.hinge_qvel[j]];
+      vel += qd * qd;
+    }
+    c += config_.w_effort * effort + config_.w_ctrl * dev + config_.w_velocity * vel;
+    // falling
+    double head_z = pts[static_cast<int>(core::BodyJoint::kHead)].z();
+    double safe = lying ? 0.0 : (sitting ? 0.9 : 1.2) * scale;
+    if (head_z < safe) c += config_.w_fall * (safe - head_z);
+    cost += c * (h == steps - 1 ? 3.0 : 1.0);
+  }
+  return cost * config_.plan_dt_s;
+}
+
+absl::Status MpcController::Act(const Observation& obs) {
+  if (!obs.task) return absl::InvalidArgumentError("mpc: observation has no task");
+  if (obs.step_index != step_index_) StartStep(obs, *obs.task);
+  const world::AgentIndex& a = world_->agent(agent_);
+  const double now = obs.time_s;
+
+  // adaptive contact weights (Eq. 9) from the current distances
+  std::vector<double> rewards;
+  for (const ContactTerm& t : task_.terms) {
+    const Eigen::Vector3d& p = obs.body_points[static_cast<int>(t.joint)];
+    double dist = (p - t.Nearest(p, obs.body_points)).norm();
+    rewards.push_back(t.type == plan::ContactType::kContact ? std::exp(-5.0 * dist)
+                                                            : 1.0 - std::exp(-5.0 * dist));
+  }
+  term_weights_ = plan::AdaptiveWeights(rewards, 1e-3);
+  for (double& w : term_weights_) w *= static_cast<double>(term_weights_.size());
+
+  // fall monitor: a strongly tilted torso while standing switches to recovery (stand up
+  // straight over the feet, quickly); back to the step once upright again
+  double zz = obs.data->xmat[9 * a.torso_body + 8];
+  bool standing = task_.posture == Posture::kStand || task_.posture == Posture::kLean;
+  if (standing && !recovering_ && zz < std::cos(35.0 * M_PI / 180.0)) {
+    recovering_ = true;
+    StepTask recover;
+    recover.posture = Posture::kStand;
+    recover.terms.clear();
+    std::vector<ContactTerm> keep = task_.terms;
+    goal_ = SolveReferencePose(*world_, agent_, recover, obs.data, scratch_);
+    start_ = GetAgentPose(a, obs.data);
+    ramp_t0_ = now;
+    ramp_s_ = 0.5;
+    ref_table_.assign(1, world_->BodyPoints(obs.data, agent_));
+  } else if (recovering_ && zz > std::cos(12.0 * M_PI / 180.0)) {
+    recovering_ = false;
+    StartStep(obs, task_);
+  }
+
+  // shift the nominal to start now
+  const int K = config_.knots;
+  const double span = config_.horizon_s;
+  Knots shifted(K);
+  for (int k = 0; k < K; ++k) {
+    double t = now + span * k / (K - 1);
+    if (t <= nominal_t0_ + span) {
+      Interp(nominal_, nominal_t0_, span, t, shifted[k].data());
+    } else {
+      shifted[k] = RefHinges(t);
+    }
+  }
+  Knots reference(K);
+  for (int k = 0; k < K; ++k) reference[k] = RefHinges(now + span * k / (K - 1));
+
+  // candidates
+  const int n = config_.samples;
+  std::vector<Knots> cand(n);
+  cand[0] = shifted;
+  cand[1] = reference;
+  const int n_small = static_cast<int>(std::round(config_.small_noise_fraction * (n - 2)));
+  double noise = config_.noise_rad * (recovering_ ? 1.5 : 1.0);
+  for (int c = 2; c < n; ++c) {
+    core::Rng rng(core::DeriveSeed(seed_, static_cast<uint64_t>(iteration_), static_cast<uint64_t>(c)));
+    double sigma = noise * (c - 2 < n_small ? 0.3 : 1.0);
+    cand[c] = shifted;
+    for (int k = 1; k < K; ++k) {
+      for (int j = 0; j < kDofs; ++j) {
+        cand[c][k][j] = std::clamp(shifted[k][j] + rng.Normal(sigma * noise_scale_[j]), lo_[j], hi_[j]);
+      }
+    }
+  }
+  std::vector<double> costs(n, 0.0);
+  const int threads = std::min(config_.threads, n);
+  auto work = [&](int th) {
+    for (int c = th; c < n; c += threads) costs[c] = Rollout(th, cand[c], now, obs.data);
+  };
+  if (threads == 1) {
+    work(0);
+  } else {
+    std::vector<std::thread> pool;
+    for (int th = 1; th < threads; ++th) pool.emplace_back(work, th);
+    work(0);
+    for (auto& t : pool) t.join();
+  }
+  int best = 0;
+  for (int c = 1; c < n; ++c) {
+    if (costs[c] < costs[best]) best = c;
+  }
+  nominal_ = cand[best];
+  nominal_t0_ = now;
+  last_cost_ = costs[best];
+  ++iteration_;
+  return absl::OkStatus();
+}
+
+void MpcController::Targets(double time_s, double* ctrl28) const {
+  Interp(nominal_, nominal_t0_, config_.horizon_s, time_s, ctrl28);
+}
+
+}  // namespace simhuman::control

@@ -1,0 +1,401 @@
+#include "simhuman/control/mpc/reference_pose.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+namespace simhuman::control {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+using world::kHumanoidDofs;
+
+int JointIndex(const char* name) {
+  const auto& names = world::HumanoidJointNames();
+  for (int i = 0; i < kHumanoidDofs; ++i) {
+    if (names[i] == name) return i;
+  }
+  return -1;
+}
+
+Eigen::Quaterniond YawQuat(double yaw) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
+}
+
+// a rotation whose local x (front) maps to `front_w` and local z (head) to `up_w`
+Eigen::Quaterniond FrameQuat(const Eigen::Vector3d& front_w, const Eigen::Vector3d& up_w) {
+  Eigen::Matrix3d R;
+  R.col(0) = front_w.normalized();
+  R.col(2) = up_w.normalized();
+  R.col(1) = R.col(2).cross(R.col(0));
+  return Eigen::Quaterniond(R).normalized();
+}
+
+double Yaw(const Eigen::Quaterniond& q) {
+  Eigen::Vector3d f = q * Eigen::Vector3d::UnitX();
+  return std::atan2(f.y(), f.x());
+}
+
+struct Problem {
+  const world::SimWorld* world = nullptr;
+  const world::AgentIndex* a = nullptr;
+  const StepTask* task = nullptr;
+  const ReferencePoseOptions* opt = nullptr;
+  mjData* d = nullptr;
+  std::array<double, kHumanoidDofs> base{};
+  Eigen::Quaterniond base_quat = Eigen::Quaterniond::Identity();
+  bool feet_on_floor = true;
+  bool anchor_feet = false;
+  bool balance = false;
+  std::array<Eigen::Vector3d, 2> feet_anchor{};
+  Eigen::Vector3d root_anchor = Eigen::Vector3d::Zero();  // pelvis anchor (xy) for get-close
+  bool anchor_root_xy = false;
+  double scale = 1.0;
+};
+
+// x = [root pos (3), root rotation increment (3), hinges (28)] around (p0, q0)
+struct Vars {
+  Eigen::Vector3d pos;
+  Eigen::Quaterniond quat;
+  std::array<double, kHumanoidDofs> h;
+};
+
+void Apply(const Problem& pr, const Vars& v, mjData* d) {
+  const auto& a = *pr.a;
+  for (int i = 0; i < 3; ++i) d->qpos[a.root_qpos + i] = v.pos[i];
+  d->qpos[a.root_qpos + 3] = v.quat.w();
+  d->qpos[a.root_qpos + 4] = v.quat.x();
+  d->qpos[a.root_qpos + 5] = v.quat.y();
+  d->qpos[a.root_qpos + 6] = v.quat.z();
+  for (int j = 0; j < kHumanoidDofs; ++j) d->qpos[a.hinge_qpos[j]] = v.h[j];
+  mj_kinematics(pr.world->model(), d);
+  mj_comPos(pr.world->model(), d);
+}
+
+Vars Step(const Vars& v, const Eigen::VectorXd& dx, const mjModel* m, const world::AgentIndex& a) {
+  Vars o = v;
+  o.pos += dx.head<3>();
+  Eigen::Vector3d w = dx.segment<3>(3);
+  double n = w.norm();
+  if (n > 1e-12) o.quat = (Eigen::Quaterniond(Eigen::AngleAxisd(n, w / n)) * v.quat).normalized();
+  for (int j = 0; j < kHumanoidDofs; ++j) {
+    int jid = m->dof_jntid[a.hinge_qvel[j]];
+    o.h[j] = std::clamp(v.h[j] + dx[6 + j], m->jnt_range[2 * jid], m->jnt_range[2 * jid + 1]);
+  }
+  return o;
+}
+
+std::vector<double> Residual(const Problem& pr, const Vars& v) {
+  Apply(pr, v, pr.d);
+  const mjModel* m = pr.world->model();
+  const mjData* d = pr.d;
+  const auto& a = *pr.a;
+  const auto& o = *pr.opt;
+  std::vector<double> r;
+  std::array<Eigen::Vector3d, core::kNumBodyJoints> pts;
+  for (int i = 0; i < core::kNumBodyJoints; ++i) {
+    const mjtNum* x = d->site_xpos + 3 * a.site[i];
+    pts[i] = Eigen::Vector3d(x[0], x[1], x[2]);
+  }
+  for (const ContactTerm& t : pr.task->terms) {
+    const Eigen::Vector3d& p = pts[static_cast<int>(t.joint)];
+    Eigen::Vector3d np = t.Nearest(p, pts);
+    if (t.type == plan::ContactType::kContact) {
+      Eigen::Vector3d dir = t.dir;
+      if (dir.squaredNorm() < 0.5) {
+        Eigen::Vector3d away = p - np;
+        dir = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
+      }
+      Eigen::Vector3d goal = np + dir * t.clearance_m;
+      for (int k = 0; k < 3; ++k) r.push_back(o.w_contact * (p[k] - goal[k]));
+    } else {
+      double dist = (p - np).norm();
+      r.push_back(o.w_not_contact * std::max(0.0, 0.18 * pr.scale - dist));
+    }
+  }
+  // posture prior
+  for (int j = 0; j < kHumanoidDofs; ++j) r.push_back(o.w_posture * (v.h[j] - pr.base[j]));
+  Eigen::Quaterniond qe = pr.base_quat.conjugate() * v.quat;
+  Eigen::AngleAxisd aa(qe);
+  Eigen::Vector3d rot = aa.angle() * aa.axis();
+  if (pr.task->posture == Posture::kSit || pr.task->posture == Posture::kStand) {
+    // yaw is free-ish for standing/sitting; tilt is not
+    for (int k = 0; k < 3; ++k) r.push_back(o.w_root_orientation * rot[k] * (k == 2 ? 0.3 : 1.0));
+  } else {
+    for (int k = 0; k < 3; ++k) r.push_back(o.w_root_orientation * rot[k]);
+  }
+  // feet
+  std::array<int, 2> feet = {static_cast<int>(core::BodyJoint::kLeftFoot),
+                             static_cast<int>(core::BodyJoint::kRightFoot)};
+  if (pr.feet_on_floor) {
+    for (int f = 0; f < 2; ++f) r.push_back(o.w_feet * (pts[feet[f]].z() - 0.0375 * pr.scale));
+  }
+  if (pr.anchor_feet) {
+    for (int f = 0; f < 2; ++f) {
+      r.push_back(o.w_feet * (pts[feet[f]].x() - pr.feet_anchor[f].x()));
+      r.push_back(o.w_feet * (pts[feet[f]].y() - pr.feet_anchor[f].y()));
+    }
+  }
+  if (pr.anchor_root_xy) {
+    r.push_back(o.w_feet * (v.pos.x() - pr.root_anchor.x()));
+    r.push_back(o.w_feet * (v.pos.y() - pr.root_anchor.y()));
+  }
+  if (pr.balance) {
+    const mjtNum* com = d->subtree_com + 3 * a.pelvis_body;
+    Eigen::Vector3d mid = 0.5 * (pts[feet[0]] + pts[feet[1]]);
+    // the foot centre is a bit ahead of the ankle; aim slightly behind it
+    r.push_back(o.w_balance * (com[0] - mid.x()));
+    r.push_back(o.w_balance * (com[1] - mid.y()));
+  }
+  // keep body points out of the focus object (beyond their clearance)
+  if (pr.task->focus) {
+    for (int i = 0; i < core::kNumBodyJoints; ++i) {
+      Eigen::Vector3d np = core::NearestPointOnShapes(pr.task->focus->shapes, pr.task->focus->pose,
+                                                      pts[i]);
+      double dist = (pts[i] - np).norm();
+      double need = 0.8 * pr.scale * BodyPointClearance(static_cast<core::BodyJoint>(i));
+      r.push_back(o.w_penetration * std::max(0.0, need - dist));
+    }
+  }
+  (void)m;
+  return r;
+}
+
+}  // namespace
+
+std::array<double, kHumanoidDofs> BasePostureHinges(Posture p) {
+  std::array<double, kHumanoidDofs> h{};
+  auto set = [&](const char* n, double deg) { h[JointIndex(n)] = deg * kDeg; };
+  switch (p) {
+    case Posture::kStand:
+      for (const char* n : {"right_knee", "left_knee"}) set(n, 5);
+      for (const char* n : {"right_hip_y", "left_hip_y"}) set(n, 3);
+      for (const char* n : {"right_elbow", "left_elbow"}) set(n, 10);
+      break;
+    case Posture::kLean:
+      for (const char* n : {"right_hip_y", "left_hip_y"}) set(n, 30);
+      for (const char* n : {"right_knee", "left_knee"}) set(n, 10);
+      break;
+    case Posture::kSit:
+      for (const char* n : {"right_hip_y", "left_hip_y"}) set(n, 85);
+      for (const char* n : {"right_knee", "left_knee"}) set(n, 90);
+      for (const char* n : {"right_elbow", "left_elbow"}) set(n, 45);
+      for (const char* n : {"right_shoulder_y", "left_shoulder_y"}) set(n, 15);
+      set("abdomen_y", 5);
+      break;
+    case Posture::kLieBack:
+      for (const char* n : {"right_knee", "left_knee"}) set(n, 5);
+      for (const char* n : {"right_shoulder_x", "left_shoulder_x"}) set(n, 15);
+      break;
+    case Posture::kLieSide:
+      for (const char* n : {"right_hip_y", "left_hip_y"}) set(n, 40);
+      for (const char* n : {"right_knee", "left_knee"}) set(n, 60);
+      for (const char* n : {"right_shoulder_y", "left_shoulder_y"}) set(n, 60);
+      for (const char* n : {"right_elbow", "left_elbow"}) set(n, 60);
+      break;
+  }
+  return h;
+}
+
+void SetAgentPose(const world::AgentIndex& a, const ReferencePose& pose, mjData* d) {
+  for (int i = 0; i < 7; ++i) d->qpos[a.root_qpos + i] = pose.root[i];
+  for (int j = 0; j < kHumanoidDofs; ++j) d->qpos[a.hinge_qpos[j]] = pose.hinges[j];
+}
+
+ReferencePose GetAgentPose(const world::AgentIndex& a, const mjData* d) {
+  ReferencePose p;
+  for (int i = 0; i < 7; ++i) p.root[i] = d->qpos[a.root_qpos + i];
+  for (int j = 0; j < kHumanoidDofs; ++j) p.hinges[j] = d->qpos[a.hinge_qpos[j]];
+  return p;
+}
+
+ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const StepTask& task,
+                                 const mjData* d_now, mjData* scratch,
+                                 const ReferencePoseOptions& options) {
+  const mjModel* m = world.model();
+  const world::AgentIndex& a = world.agent(agent);
+  mj_copyData(scratch, m, d_now);
+  Problem pr;
+  pr.world = &world;
+  pr.a = &a;
+  pr.task = &task;
+  pr.opt = &options;
+  pr.d = scratch;
+  pr.base = BasePostureHinges(task.posture);
+  pr.base_quat = Eigen::Quaterniond::Identity();
+  pr.scale = a.scale;
+  double s = a.scale;
+
+  Eigen::Vector3d cur_pos(d_now->qpos[a.root_qpos], d_now->qpos[a.root_qpos + 1],
+                          d_now->qpos[a.root_qpos + 2]);
+  double cur_yaw = world::PelvisYaw(d_now, a);
+  auto now_pts = world.BodyPoints(d_now, agent);
+
+  Vars v;
+  v.h = pr.base;
+  v.pos = cur_pos;
+  v.quat = YawQuat(cur_yaw);
+  const core::CatalogObject* focus = task.focus;
+  double obj_yaw = focus ? plan::ObjectYaw(focus->pose) : cur_yaw;
+
+  // top centre (world) of the first contact part of the pelvis / head
+  auto part_top = [&](core::BodyJoint j) -> std::optional<Eigen::Vector3d> {
+    for (const ContactTerm& t : task.terms) {
+      if (t.joint == j && t.part && t.type == plan::ContactType::kContact) {
+        auto [lo, hi] = core::ShapesBounds(t.part->shapes);
+        Eigen::Vector3d c((lo.x() + hi.x()) / 2, (lo.y() + hi.y()) / 2, hi.z());
+        return t.object->pose.Apply(c);
+      }
+    }
+    return std::nullopt;
+  };
+
+  switch (task.posture) {
+    case Posture::kStand:
+    case Posture::kLean: {
+      pr.balance = true;
+      if (task.get_close) {
+        // stand up / get close: stand on the way to the stand point, feet free
+        Eigen::Vector3d to = task.stand_point - cur_pos;
+        to.z() = 0;
+        double reach = std::min(to.norm(), 0.25 * s);
+        pr.root_anchor = cur_pos + (to.norm() > 1e-6 ? Eigen::Vector3d(to.normalized() * reach)
+                                                     : Eigen::Vector3d::Zero());
+        pr.anchor_root_xy = true;
+        v.pos = pr.root_anchor;
+        v.quat = YawQuat(task.stand_yaw_rad);
+      } else {
+        // reach etc.: feet stay where they are
+        pr.anchor_feet = true;
+        pr.feet_anchor = {now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
+                          now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+        Eigen::Vector3d mid = 0.5 * (pr.feet_anchor[0] + pr.feet_anchor[1]);
+        v.pos = Eigen::Vector3d(mid.x(), mid.y(), 0);
+        v.pos -= YawQuat(cur_yaw) * Eigen::Vector3d(0.04 * s, 0, 0);
+      }
+      v.pos.z() = world::kPelvisStandHeight * s - 0.01;
+      pr.base_quat = v.quat;
+      break;
+    }
+    case Posture::kSit: {
+      auto top = part_top(core::BodyJoint::kPelvis);
+      Eigen::Vector3d seat = top ? *top : cur_pos;
+      v.quat = YawQuat(obj_yaw);
+      // pelvis a little behind the seat centre; thighs horizontal
+      v.pos = seat + YawQuat(obj_yaw) * Eigen::Vector3d(-0.04 * s, 0, 0);
+      v.pos.z() = seat.z() + 0.12 * s;
+      pr.base_quat = v.quat;
+      pr.feet_on_floor = true;
+      break;
+    }
+    case Posture::kLieBack:
+    case Posture::kLieSide: {
+      auto pelvis_top = part_top(core::BodyJoint::kPelvis);
+      auto head_top = part_top(core::BodyJoint::kHead);
+      Eigen::Vector3d mat = pelvis_top ? *pelvis_top : cur_pos;
+      Eigen::Vector3d head = head_top ? *head_top : mat + YawQuat(obj_yaw) * Eigen::Vector3d(0, 1, 0);
+      Eigen::Vector3d h = head - mat;
+      h.z() = 0;
+      if (h.norm() < 1e-6) h = YawQuat(obj_yaw) * Eigen::Vector3d(0, 1, 0);
+      h.normalize();
+      Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+      if (task.posture == Posture::kLieBack) {
+        v.quat = FrameQuat(up, h);
+        v.pos = head - h * 0.62 * s;
+        v.pos.z() = mat.z() + 0.095 * s;
+      } else {
+        // on the side: front faces the side of the bed the agent came from
+        Eigen::Vector3d side = YawQuat(obj_yaw) * Eigen::Vector3d::UnitX();
+        side = (side - side.dot(h) * h).normalized();
+        v.quat = FrameQuat(side, h);
+        v.pos = head - h * 0.62 * s;
+        v.pos.z() = mat.z() + 0.16 * s;
+      }
+      pr.base_quat = v.quat;
+      pr.feet_on_floor = false;
+      break;
+    }
+  }
+
+  // Levenberg-Marquardt with forward-difference Jacobians
+  constexpr int kN = 6 + kHumanoidDofs;
+  double lambda = 1e-2;
+  std::vector<double> r0 = Residual(pr, v);
+  auto sq = [](const std::vector<double>& r) {
+    double s2 = 0;
+    for (double x : r) s2 += x * x;
+    return s2;
+  };
+  double c0 = sq(r0);
+  for (int it = 0; it < options.iterations; ++it) {
+    const int nr = static_cast<int>(r0.size());
+    Eigen::MatrixXd J(nr, kN);
+    constexpr double kEps = 1e-5;
+    for (int k = 0; k < kN; ++k) {
+      Eigen::VectorXd dx = Eigen::VectorXd::Zero(kN);
+      dx[k] = kEps;
+      Vars vk = Step(v, dx, m, a);
+      std::vector<double> rk = Residual(pr, vk);
+      double actual = (k >= 6) ? vk.h[k - 6] - v.h[k - 6] : kEps;
+      if (std::abs(actual) < 1e-12) {
+        dx[k] = -kEps;
+        vk = Step(v, dx, m, a);
+        rk = Residual(pr, vk);
+        actual = (k >= 6) ? vk.h[k - 6] - v.h[k - 6] : -kEps;
+      }
+      for (int i = 0; i < nr; ++i) {
+        J(i, k) = std::abs(actual) < 1e-12 ? 0.0 : (rk[i] - r0[i]) / actual;
+      }
+    }
+    Eigen::Map<Eigen::VectorXd> rv(r0.data(), nr);
+    Eigen::MatrixXd H = J.transpose() * J;
+    Eigen::VectorXd g = J.transpose() * rv;
+    bool improved = false;
+    for (int tries = 0; tries < 6 && !improved; ++tries) {
+      Eigen::MatrixXd A = H;
+      A.diagonal().array() += lambda * (1.0 + H.diagonal().array());
+      Eigen::VectorXd dx = -A.ldlt().solve(g);
+      // limit the step
+      double mx = dx.cwiseAbs().maxCoeff();
+      if (mx > 0.3) dx *= 0.3 / mx;
+      Vars vn = Step(v, dx, m, a);
+      std::vector<double> rn = Residual(pr, vn);
+      double cn = sq(rn);
+      if (cn < c0) {
+        v = vn;
+        r0 = rn;
+        c0 = cn;
+        lambda = std::max(1e-6, lambda * 0.3);
+        improved = true;
+      } else {
+        lambda *= 10;
+      }
+    }
+    if (!improved) break;
+  }
+
+  Apply(pr, v, scratch);
+  ReferencePose out;
+  for (int i = 0; i < 3; ++i) out.root[i] = v.pos[i];
+  out.root[3] = v.quat.w();
+  out.root[4] = v.quat.x();
+  out.root[5] = v.quat.y();
+  out.root[6] = v.quat.z();
+  out.hinges = v.h;
+  out.residual = std::sqrt(c0);
+  double err = 0;
+  int n = 0;
+  auto pts = world.BodyPoints(scratch, agent);
+  for (const ContactTerm& t : task.terms) {
+    if (t.type != plan::ContactType::kContact) continue;
+    Eigen::Vector3d p = pts[static_cast<int>(t.joint)];
+    err += std::abs((p - t.Nearest(p, pts)).norm() - t.clearance_m);
+    ++n;
+  }
+  out.contact_error_m = n ? err / n : 0.0;
+  (void)Yaw;
+  return out;
+}
+
+}  // namespace simhuman::control

@@ -1,0 +1,66 @@
+#pragma once
+/// Runs one episode: steps the simulation, calls each agent's controller at its control rate,
+/// tracks the plan with UniHSI's Task Parser rules (plan::StepTracker), watches health and
+/// falls, and records the trajectory.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "simhuman/control/controller.h"
+#include "simhuman/plan/contact_chain.h"
+#include "simhuman/plan/metrics.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::control {
+
+/// Per-frame joint positions of the whole model (all humans and movable objects).
+struct Trajectory {
+  double fps = 30;
+  int nq = 0;
+  std::vector<double> time_s;
+  std::vector<std::vector<double>> qpos;
+  std::vector<int> step_index;  ///< plan step being worked on at each frame
+};
+
+/// One progress event (a step completed, or the episode ended).
+struct ProgressEvent {
+  int step = 0;        ///< step index the event is about
+  int steps_total = 0;
+  double time_s = 0;
+  double distance_m = 0;  ///< mean distance of the step's contact pairs to their targets
+  bool completed = false;
+  bool ended = false;
+  std::string label;
+};
+
+struct RunOptions {
+  plan::PairParams pair;
+  plan::TrackerParams tracker;
+  double record_fps = 30;
+  bool record = true;
+  double fall_head_height_m = 0.45;  ///< head below this (x scale) while not lying: a fall
+  std::function<void(const ProgressEvent&)> progress;  ///< optional
+};
+
+struct EpisodeResult {
+  bool success = false;
+  int steps_completed = 0;
+  int steps_total = 0;
+  double contact_error_m = -1;  ///< Eq. 10; -1 when nothing was recorded
+  bool fell = false;
+  std::string end_reason;  ///< "completed", "timeout", "fell", "unstable: ...", "controller: ..."
+  double sim_time_s = 0;
+  double wall_time_s = 0;
+  std::vector<double> step_completion_s;
+};
+
+/// Runs `chain` (grounded against world.catalog()) with one controller per agent.
+EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain,
+                         const std::vector<Controller*>& controllers, const RunOptions& options,
+                         Trajectory* trajectory);
+
+/// Body points of every agent in plan terms.
+std::vector<plan::BodyPoints> AllBodyPoints(const world::SimWorld& world, const mjData* d);
+
+}  // namespace simhuman::control

@@ -1,0 +1,102 @@
+#include "simhuman/control/task.h"
+
+#include <cmath>
+
+namespace simhuman::control {
+
+const char* PostureName(Posture p) {
+  switch (p) {
+    case Posture::kStand: return "stand";
+    case Posture::kSit: return "sit";
+    case Posture::kLieBack: return "lie on back";
+    case Posture::kLieSide: return "lie on side";
+    case Posture::kLean: return "lean";
+  }
+  return "stand";
+}
+
+double BodyPointClearance(core::BodyJoint j) {
+  using core::BodyJoint;
+  switch (j) {
+    case BodyJoint::kPelvis: return 0.07;
+    case BodyJoint::kTorso: return 0.10;
+    case BodyJoint::kHead: return 0.10;
+    case BodyJoint::kLeftHand:
+    case BodyJoint::kRightHand: return 0.045;
+    case BodyJoint::kLeftFoot:
+    case BodyJoint::kRightFoot: return 0.03;
+    case BodyJoint::kLeftHip:
+    case BodyJoint::kRightHip: return 0.07;
+    default: return 0.045;
+  }
+}
+
+Eigen::Vector3d ContactTerm::Nearest(
+    const Eigen::Vector3d& p, const std::array<Eigen::Vector3d, core::kNumBodyJoints>& pts) const {
+  if (target_joint) return pts[static_cast<int>(*target_joint)];
+  return core::NearestPointOnShapes(part->shapes, object->pose, p);
+}
+
+namespace {
+bool IsSeatLike(const core::CatalogPart* part) {
+  return part && (part->name == "seat surface" || part->name == "mattress");
+}
+}  // namespace
+
+StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& scene, int agent,
+                       double scale, const plan::PairParams& params) {
+  StepTask task;
+  task.label = step.label;
+  bool pelvis_on_seat = false, head_down = false, side_lie = false, any_contact = false;
+  for (const plan::ContactPair& pair : step.pairs) {
+    if (pair.agent != agent) continue;
+    const core::CatalogObject* obj = scene.Find(pair.object);
+    if (pair.IsGetClose()) {
+      task.get_close = true;
+      task.focus = obj;
+      task.side = pair.direction;
+      task.stand_point = plan::StandPoint(*obj, pair.direction, params.stand_off_m);
+      task.stand_yaw_rad = plan::StandFacingYaw(*obj, pair.direction);
+      continue;
+    }
+    if (pair.type == plan::ContactType::kNotCare) continue;
+    ContactTerm t;
+    t.joint = *pair.joint;
+    t.type = pair.type;
+    t.object = obj;
+    t.target_joint = pair.part_joint;
+    if (!pair.part_joint) t.part = obj->FindPart(pair.part);
+    t.dir = plan::DirectionVector(pair.direction, obj->pose);
+    t.clearance_m = scale * BodyPointClearance(t.joint);
+    if (t.target_joint) t.clearance_m += scale * BodyPointClearance(*t.target_joint) * 0.5;
+    task.terms.push_back(t);
+    if (pair.type != plan::ContactType::kContact) {
+      if (t.part && t.part->name == "mattress" &&
+          (t.joint == core::BodyJoint::kLeftShoulder || t.joint == core::BodyJoint::kRightShoulder)) {
+        side_lie = true;
+      }
+      continue;
+    }
+    any_contact = true;
+    if (!task.focus && obj) task.focus = obj;
+    if (t.joint == core::BodyJoint::kPelvis && IsSeatLike(t.part)) {
+      pelvis_on_seat = true;
+      task.focus = obj;
+    }
+    if (t.joint == core::BodyJoint::kHead && t.part &&
+        (t.part->name == "pillow" || t.part->name == "mattress")) {
+      head_down = true;
+    }
+  }
+  if (pelvis_on_seat && head_down) {
+    task.posture = side_lie ? Posture::kLieSide : Posture::kLieBack;
+  } else if (pelvis_on_seat) {
+    task.posture = Posture::kSit;
+  } else {
+    task.posture = Posture::kStand;
+  }
+  (void)any_contact;
+  return task;
+}
+
+}  // namespace simhuman::control

@@ -1,0 +1,59 @@
+#pragma once
+/// A Chain-of-Contacts step turned into what a controller optimizes: contact terms with their
+/// target geometry, the base posture the step implies, and where to stand for get-close steps.
+/// Built from grounded plan steps; holds pointers into the SceneCatalog it was built from
+/// (which must outlive it).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "simhuman/core/body_joint.h"
+#include "simhuman/core/scene_catalog.h"
+#include "simhuman/plan/contact_chain.h"
+#include "simhuman/plan/metrics.h"
+
+namespace simhuman::control {
+
+/// The base postures the reference-pose solver starts from.
+enum class Posture { kStand, kSit, kLieBack, kLieSide, kLean };
+
+const char* PostureName(Posture p);
+
+/// One contact (or not-contact) requirement in controller terms.
+struct ContactTerm {
+  core::BodyJoint joint = core::BodyJoint::kPelvis;
+  plan::ContactType type = plan::ContactType::kContact;
+  const core::CatalogObject* object = nullptr;  ///< null when the target is a body joint
+  const core::CatalogPart* part = nullptr;
+  std::optional<core::BodyJoint> target_joint;  ///< "right foot on left knee"
+  Eigen::Vector3d dir = Eigen::Vector3d::Zero();  ///< unit vector, zero for "none"
+  double clearance_m = 0.05;  ///< joint-centre to surface distance when touching
+
+  /// Nearest point of the target to `p` (part surface or the target joint's position).
+  Eigen::Vector3d Nearest(const Eigen::Vector3d& p,
+                          const std::array<Eigen::Vector3d, core::kNumBodyJoints>& pts) const;
+};
+
+/// A step in controller terms.
+struct StepTask {
+  std::vector<ContactTerm> terms;
+  Posture posture = Posture::kStand;
+  bool get_close = false;  ///< the step is a get-close / stand-up step
+  const core::CatalogObject* focus = nullptr;  ///< main object of the step (may be null)
+  Eigen::Vector3d stand_point = Eigen::Vector3d::Zero();  ///< for get-close steps
+  double stand_yaw_rad = 0;
+  plan::Direction side = plan::Direction::kFront;
+  std::string label;
+};
+
+/// Centre-to-surface distance of each body point when it touches something (m, scale 1).
+double BodyPointClearance(core::BodyJoint joint);
+
+/// Builds the task of a grounded step for agent `agent`. `scale` is the humanoid's scale.
+StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& scene, int agent,
+                       double scale, const plan::PairParams& params);
+
+}  // namespace simhuman::control

@@ -1,0 +1,314 @@
+#include "simhuman/plan/metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "simhuman/core/check.h"
+
+namespace simhuman::plan {
+namespace {
+
+// slack when comparing differences of accumulated tick times against hold_s
+constexpr double kTimeSlackS = 1e-9;
+
+absl::Status CheckField(bool ok, const char* name, double value, const char* rule) {
+  if (ok && std::isfinite(value)) return absl::OkStatus();
+  return absl::InvalidArgumentError(std::string(name) + " = " + std::to_string(value) +
+                                    " is invalid: must be finite and " + rule);
+}
+
+// unit horizontal vector of `v`, or zero when v has no horizontal component
+Eigen::Vector3d Horizontal(const Eigen::Vector3d& v) {
+  Eigen::Vector3d h(v.x(), v.y(), 0.0);
+  double n = h.norm();
+  return n > 1e-12 ? Eigen::Vector3d(h / n) : Eigen::Vector3d::Zero();
+}
+
+double Clamp01(double x) { return std::clamp(x, 0.0, 1.0); }
+
+PairEval EvaluateGetClose(const ContactPair& pair, const core::CatalogObject& object,
+                          const BodyPoints& body, const PairParams& params) {
+  PairEval e;
+  const Eigen::Vector3d stand = StandPoint(object, pair.direction, params.stand_off_m);
+  const Eigen::Vector3d& pelvis = body.at(core::BodyJoint::kPelvis);
+  e.target_world = stand;
+  e.d_vec = Eigen::Vector3d(stand.x() - pelvis.x(), stand.y() - pelvis.y(), 0.0);
+  e.distance_m = e.d_vec.norm();
+  const Eigen::Vector3d want = -DirectionVector(pair.direction, object.pose);
+  const Eigen::Vector3d facing = Horizontal(body.facing_world);
+  e.direction_dot = std::clamp(facing.dot(want), -1.0, 1.0);  // 0 when facing is degenerate
+  e.satisfied = e.distance_m < params.get_close_radius_m &&
+                e.direction_dot >= std::cos(params.get_close_facing_tol_rad);
+  e.reward = Clamp01(params.w_dis * std::exp(-params.w_dk_per_m * e.distance_m) +
+                     params.w_dir * std::min(e.direction_dot, 0.0));
+  return e;
+}
+
+}  // namespace
+
+absl::Status PairParams::Validate() const {
+  SH_RETURN_IF_ERROR(
+      CheckField(contact_threshold_m >= 0, "contact_threshold_m", contact_threshold_m, ">= 0"));
+  SH_RETURN_IF_ERROR(CheckField(direction_dot_min >= -1 && direction_dot_min <= 1,
+                                "direction_dot_min", direction_dot_min, "in [-1, 1]"));
+  SH_RETURN_IF_ERROR(
+      CheckField(direction_epsilon_m >= 0, "direction_epsilon_m", direction_epsilon_m, ">= 0"));
+  SH_RETURN_IF_ERROR(CheckField(w_dis >= 0, "w_dis", w_dis, ">= 0"));
+  SH_RETURN_IF_ERROR(CheckField(w_dir >= 0, "w_dir", w_dir, ">= 0"));
+  SH_RETURN_IF_ERROR(CheckField(w_dk_per_m > 0, "w_dk_per_m", w_dk_per_m, "> 0"));
+  SH_RETURN_IF_ERROR(
+      CheckField(not_contact_error_m >= 0, "not_contact_error_m", not_contact_error_m, ">= 0"));
+  SH_RETURN_IF_ERROR(
+      CheckField(get_close_radius_m > 0, "get_close_radius_m", get_close_radius_m, "> 0"));
+  SH_RETURN_IF_ERROR(CheckField(get_close_facing_tol_rad >= 0 && get_close_facing_tol_rad <= M_PI,
+                                "get_close_facing_tol_rad", get_close_facing_tol_rad,
+                                "in [0, pi]"));
+  SH_RETURN_IF_ERROR(CheckField(stand_off_m >= 0, "stand_off_m", stand_off_m, ">= 0"));
+  SH_RETURN_IF_ERROR(
+      CheckField(adaptive_weight_eps > 0, "adaptive_weight_eps", adaptive_weight_eps, "> 0"));
+  return absl::OkStatus();
+}
+
+double ObjectYaw(const core::Pose& object_pose) {
+  const Eigen::Vector3d x = object_pose.quat * Eigen::Vector3d::UnitX();
+  if (x.head<2>().norm() < 1e-12) return 0.0;  // +x points straight up or down
+  return std::atan2(x.y(), x.x());
+}
+
+Eigen::Vector3d DirectionVector(Direction d, const core::Pose& object_pose) {
+  const double yaw = ObjectYaw(object_pose);
+  const Eigen::Vector3d front(std::cos(yaw), std::sin(yaw), 0.0);
+  const Eigen::Vector3d left(-std::sin(yaw), std::cos(yaw), 0.0);
+  switch (d) {
+    case Direction::kUp:
+      return Eigen::Vector3d::UnitZ();
+    case Direction::kDown:
+      return -Eigen::Vector3d::UnitZ();
+    case Direction::kFront:
+      return front;
+    case Direction::kBack:
+      return -front;
+    case Direction::kLeft:
+      return left;
+    case Direction::kRight:
+      return -left;
+    case Direction::kNone:
+      return Eigen::Vector3d::Zero();
+  }
+  return Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d StandPoint(const core::CatalogObject& object, Direction side, double stand_off_m) {
+  SH_CHECK(IsSideDirection(side), "StandPoint needs front, back, left or right");
+  SH_CHECK(!object.shapes.empty(), "StandPoint needs an object with shapes");
+  const auto [lo, hi] = object.LocalBounds();
+  const Eigen::Vector2d centre = 0.5 * (lo.head<2>() + hi.head<2>());
+  Eigen::Vector2d local = centre;
+  switch (side) {
+    case Direction::kFront:
+      local.x() = hi.x() + stand_off_m;
+      break;
+    case Direction::kBack:
+      local.x() = lo.x() - stand_off_m;
+      break;
+    case Direction::kLeft:
+      local.y() = hi.y() + stand_off_m;
+      break;
+    case Direction::kRight:
+      local.y() = lo.y() - stand_off_m;
+      break;
+    default:
+      break;
+  }
+  const double yaw = ObjectYaw(object.pose);
+  const double c = std::cos(yaw), s = std::sin(yaw);
+  return {object.pose.pos.x() + c * local.x() - s * local.y(),
+          object.pose.pos.y() + s * local.x() + c * local.y(), 0.0};
+}
+
+double StandFacingYaw(const core::CatalogObject& object, Direction side) {
+  SH_CHECK(IsSideDirection(side), "StandFacingYaw needs front, back, left or right");
+  const Eigen::Vector3d want = -DirectionVector(side, object.pose);
+  return std::atan2(want.y(), want.x());
+}
+
+PairEval EvaluatePair(const ContactPair& pair, const core::SceneCatalog& scene,
+                      const std::vector<BodyPoints>& agents, const PairParams& params) {
+  SH_CHECK(pair.agent >= 0 && pair.agent < static_cast<int>(agents.size()),
+           "EvaluatePair: agent index out of range of the body points");
+  const core::CatalogObject* object = scene.Find(pair.object);
+  SH_CHECK(object != nullptr, "EvaluatePair: object not in the scene (validate the plan first)");
+  const BodyPoints& body = agents[pair.agent];
+  if (pair.IsGetClose()) return EvaluateGetClose(pair, *object, body, params);
+  SH_CHECK(pair.joint.has_value(), "EvaluatePair: pair without a joint");
+
+  PairEval e;
+  const Eigen::Vector3d& v_j = body.at(*pair.joint);
+  if (pair.part_joint) {
+    e.target_world = body.at(*pair.part_joint);
+  } else {
+    // grounding leaves the canonical name; FindPart covers chains built in code
+    const core::CatalogPart* part = nullptr;
+    for (const core::CatalogPart& candidate : object->parts) {
+      if (candidate.name == pair.part) part = &candidate;
+    }
+    if (part == nullptr) part = object->FindPart(pair.part);
+    SH_CHECK(part != nullptr, "EvaluatePair: part not in the object (validate the plan first)");
+    e.target_world = core::NearestPointOnShapes(part->shapes, object->pose, v_j);
+  }
+  e.d_vec = e.target_world - v_j;
+  e.distance_m = e.d_vec.norm();
+
+  // direction agreement: where the joint lies relative to the target
+  const Eigen::Vector3d d_hat = DirectionVector(pair.direction, object->pose);
+  if (pair.direction == Direction::kNone || e.distance_m < params.direction_epsilon_m) {
+    e.direction_dot = 1.0;
+  } else {
+    e.direction_dot = std::clamp((-e.d_vec / e.distance_m).dot(d_hat), -1.0, 1.0);
+  }
+
+  const double decay = std::exp(-params.w_dk_per_m * e.distance_m);
+  switch (pair.type) {
+    case ContactType::kContact:
+      e.satisfied =
+          e.distance_m < params.contact_threshold_m && e.direction_dot > params.direction_dot_min;
+      e.reward = Clamp01(params.w_dis * decay + params.w_dir * std::min(e.direction_dot, 0.0));
+      e.has_error = true;
+      e.error_m = e.distance_m;
+      break;
+    case ContactType::kNotContact:
+      e.satisfied = e.distance_m > params.contact_threshold_m;
+      e.reward = Clamp01(1.0 - decay);
+      e.has_error = true;
+      e.error_m = std::max(params.not_contact_error_m - e.distance_m, 0.0);
+      break;
+    case ContactType::kNotCare:
+      e.satisfied = true;
+      e.reward = 1.0;
+      break;
+  }
+  return e;
+}
+
+std::vector<double> AdaptiveWeights(const std::vector<double>& rewards, double eps) {
+  double sum = 0.0;
+  for (double r : rewards) sum += r;
+  const double denom = static_cast<double>(rewards.size()) - sum + eps;
+  std::vector<double> w;
+  w.reserve(rewards.size());
+  for (double r : rewards) w.push_back((1.0 - r) / denom);
+  return w;
+}
+
+StepEval EvaluateStep(const ContactStep& step, const core::SceneCatalog& scene,
+                      const std::vector<BodyPoints>& agents, const PairParams& params) {
+  StepEval out;
+  out.complete = true;
+  std::vector<double> rewards;
+  for (const ContactPair& pair : step.pairs) {
+    out.pairs.push_back(EvaluatePair(pair, scene, agents, params));
+    rewards.push_back(out.pairs.back().reward);
+    out.complete = out.complete && out.pairs.back().satisfied;
+  }
+  out.weights = AdaptiveWeights(rewards, params.adaptive_weight_eps);
+  for (size_t k = 0; k < rewards.size(); ++k) out.reward += out.weights[k] * rewards[k];
+  return out;
+}
+
+absl::Status TrackerParams::Validate() const {
+  SH_RETURN_IF_ERROR(CheckField(hold_s >= 0, "hold_s", hold_s, ">= 0"));
+  SH_RETURN_IF_ERROR(
+      CheckField(budget_s_per_step > 0, "budget_s_per_step", budget_s_per_step, "> 0"));
+  return absl::OkStatus();
+}
+
+StepTracker::StepTracker(const ContactChain& chain, const TrackerParams& params) : params_(params) {
+  SH_CHECK(params.Validate().ok(), "StepTracker: invalid TrackerParams");
+  SH_CHECK(!chain.steps.empty(), "StepTracker: empty chain");
+  for (const ContactStep& step : chain.steps) {
+    SH_CHECK(!step.pairs.empty(), "StepTracker: empty step");
+    pairs_per_step_.push_back(static_cast<int>(step.pairs.size()));
+  }
+  records_.resize(chain.steps.size());
+  budget_s_ = params.budget_s_per_step * static_cast<double>(chain.steps.size());
+}
+
+void StepTracker::RecordErrors(int step, const StepEval& eval) {
+  StepRecord& r = records_[step];
+  r.errors_m.clear();
+  for (const PairEval& p : eval.pairs) {
+    if (p.has_error) r.errors_m.push_back(p.error_m);
+  }
+  r.errors_recorded = true;
+}
+
+void StepTracker::Update(double time_s, const StepEval& eval) {
+  SH_CHECK(std::isfinite(time_s), "StepTracker::Update: time is not finite");
+  SH_CHECK(!has_time_ || time_s >= last_time_s_, "StepTracker::Update: time went backwards");
+  has_time_ = true;
+  last_time_s_ = time_s;
+  if (finished_) return;
+  SH_CHECK(static_cast<int>(eval.pairs.size()) == pairs_per_step_[current_],
+           "StepTracker::Update: evaluation is not of the current step");
+
+  // out of time: the step being worked on keeps the errors of its last evaluation in budget
+  if (time_s > budget_s_) {
+    RecordErrors(current_, last_eval_ ? *last_eval_ : eval);
+    timed_out_ = true;
+    finished_ = true;
+    return;
+  }
+  last_eval_ = eval;
+
+  if (!eval.complete) {
+    complete_since_s_.reset();
+    return;
+  }
+  if (!complete_since_s_) complete_since_s_ = time_s;
+  if (time_s - *complete_since_s_ + kTimeSlackS < params_.hold_s) return;
+
+  StepRecord& r = records_[current_];
+  r.completed = true;
+  r.completion_time_s = time_s;
+  RecordErrors(current_, eval);
+  ++current_;
+  complete_since_s_.reset();
+  last_eval_.reset();
+  if (done()) finished_ = true;
+}
+
+void StepTracker::Finish() {
+  if (finished_) return;
+  if (last_eval_) RecordErrors(current_, *last_eval_);
+  finished_ = true;
+}
+
+std::vector<double> StepTracker::completion_times_s() const {
+  std::vector<double> out;
+  for (const StepRecord& r : records_) {
+    if (r.completed) out.push_back(r.completion_time_s);
+  }
+  return out;
+}
+
+std::optional<double> StepTracker::contact_error_m() const {
+  double sum = 0.0;
+  int n = 0;
+  for (const StepRecord& r : records_) {
+    for (double e : r.errors_m) {
+      sum += e;
+      ++n;
+    }
+  }
+  if (n == 0) return std::nullopt;
+  return sum / n;
+}
+
+int StepTracker::num_error_pairs() const {
+  int n = 0;
+  for (const StepRecord& r : records_) n += static_cast<int>(r.errors_m.size());
+  return n;
+}
+
+}  // namespace simhuman::plan

@@ -1,0 +1,154 @@
+#include "simhuman/plan/validate.h"
+
+#include <cctype>
+#include <utility>
+#include <vector>
+
+namespace simhuman::plan {
+namespace {
+
+std::string Quote(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+// lower case, '_' -> ' ', surrounding spaces removed; digits kept
+std::string Lower(std::string_view name) {
+  std::string s;
+  for (char c : name) {
+    s += (c == '_') ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  size_t b = s.find_first_not_of(' ');
+  if (b == std::string::npos) return {};
+  return s.substr(b, s.find_last_not_of(' ') - b + 1);
+}
+
+// the parts of `object` whose name or an alias equals `name` under `key`
+template <typename Key>
+std::vector<const core::CatalogPart*> MatchParts(const core::CatalogObject& object,
+                                                 std::string_view name, Key key) {
+  const std::string want = key(name);
+  std::vector<const core::CatalogPart*> out;
+  for (const core::CatalogPart& part : object.parts) {
+    bool hit = key(part.name) == want;
+    for (const std::string& alias : part.aliases) hit = hit || key(alias) == want;
+    if (hit) out.push_back(&part);
+  }
+  return out;
+}
+
+// exact (case-insensitive, digits kept) first, so a catalog can tell "arm sofa style44" from
+// "arm sofa style48" by aliases; then CatalogObject::FindPart's rule (trailing digits ignored).
+// More than one part at the deciding stage is ambiguous: never pick one.
+std::vector<const core::CatalogPart*> LookupPart(const core::CatalogObject& object,
+                                                 std::string_view name) {
+  std::vector<const core::CatalogPart*> hits = MatchParts(object, name, Lower);
+  if (!hits.empty()) return hits;
+  return MatchParts(object, name, core::NormalizeName);
+}
+
+absl::Status Error(const ContactChain& chain, std::string_view pointer,
+                   const std::string& message) {
+  std::string prefix = chain.source.empty() ? std::string() : chain.source + ": ";
+  std::string where = pointer.empty() ? std::string("(root)") : std::string(pointer);
+  return absl::InvalidArgumentError(prefix + where + ": " + message);
+}
+
+std::string StepPointer(const ContactChain& chain, int s) {
+  const ContactStep& step = chain.steps[s];
+  if (!step.where.empty()) return step.where;
+  return "/steps/" + std::to_string(s);
+}
+
+absl::Status GroundPair(ContactChain& chain, int s, int p, const core::SceneCatalog& scene) {
+  SH_RETURN_IF_ERROR(CheckPairShape(chain, s, p));
+  ContactPair& pair = chain.steps[s].pairs[p];
+  if (pair.agent >= scene.num_agents) {
+    return Error(chain, FieldPointer(chain, s, p, "agent"),
+                 "agent index " + std::to_string(pair.agent) + " out of range; the scene has " +
+                     std::to_string(scene.num_agents) + " agent(s), valid indices are 0.." +
+                     std::to_string(scene.num_agents - 1));
+  }
+  const core::CatalogObject* object = scene.Find(pair.object);
+  if (object == nullptr) {
+    std::vector<std::string> ids = scene.ObjectIds();
+    return Error(chain, FieldPointer(chain, s, p, "object"),
+                 "unknown object " + Quote(pair.object) +
+                     (ids.empty() ? std::string("; the scene has no objects")
+                                  : "; valid objects: " + core::JoinNames(ids)));
+  }
+  pair.part_joint.reset();
+  if (pair.IsGetClose()) return absl::OkStatus();
+
+  std::vector<const core::CatalogPart*> parts = LookupPart(*object, pair.part);
+  if (parts.size() > 1) {
+    std::vector<std::string> names;
+    for (const core::CatalogPart* part : parts) names.push_back(part->name);
+    return Error(chain, FieldPointer(chain, s, p, "part"),
+                 "ambiguous part " + Quote(pair.part) + " of " + object->id + " (" + object->type +
+                     "): it matches " + core::JoinNames(names) + "; name one of them");
+  }
+  if (parts.size() == 1) {
+    pair.part = parts[0]->name;
+    return absl::OkStatus();
+  }
+  // a body joint of the same agent, e.g. "left knee" in "right foot on left knee"
+  if (std::optional<core::BodyJoint> joint = core::ParseBodyJoint(core::NormalizeName(pair.part))) {
+    if (*joint == *pair.joint) {
+      return Error(chain, FieldPointer(chain, s, p, "part"),
+                   "joint " + Quote(core::BodyJointName(*joint)) + " cannot contact itself");
+    }
+    pair.part_joint = joint;
+    pair.part = std::string(core::BodyJointName(*joint));
+    return absl::OkStatus();
+  }
+  std::vector<std::string> names = object->PartNames();
+  return Error(
+      chain, FieldPointer(chain, s, p, "part"),
+      "unknown part " + Quote(pair.part) + " of " + object->id + " (" + object->type +
+          "); valid parts: " + (names.empty() ? std::string("(none)") : core::JoinNames(names)) +
+          "; a body joint of the same agent may also be named: " +
+          core::JoinNames(core::BodyJointNames()));
+}
+
+}  // namespace
+
+absl::Status ValidateAndGround(ContactChain& chain, const core::SceneCatalog& scene) {
+  if (scene.num_agents < 1) {
+    return Error(
+        chain, "",
+        "the scene has " + std::to_string(scene.num_agents) + " agents; at least 1 is needed");
+  }
+  // ground a copy so that `chain` is untouched on error
+  ContactChain grounded = chain;
+  if (grounded.steps.empty()) {
+    return Error(grounded, grounded.form == ChainForm::kSimhuman ? "/steps" : "",
+                 "plan has no steps");
+  }
+  for (int s = 0; s < static_cast<int>(grounded.steps.size()); ++s) {
+    ContactStep& step = grounded.steps[s];
+    if (step.pairs.empty()) {
+      std::string where = StepPointer(grounded, s);
+      if (grounded.form == ChainForm::kSimhuman) where += "/pairs";
+      return Error(grounded, where, "step has no pairs");
+    }
+    for (int p = 0; p < static_cast<int>(step.pairs.size()); ++p) {
+      SH_RETURN_IF_ERROR(GroundPair(grounded, s, p, scene));
+    }
+  }
+  chain = std::move(grounded);
+  return absl::OkStatus();
+}
+
+absl::StatusOr<ContactChain> ParseAndGround(std::string_view text, std::string_view source,
+                                            const core::SceneCatalog& scene) {
+  SH_ASSIGN_OR_RETURN(ContactChain chain, ParseContactChain(text, source));
+  SH_RETURN_IF_ERROR(ValidateAndGround(chain, scene));
+  return chain;
+}
+
+absl::StatusOr<ContactChain> LoadAndGroundFile(const std::string& path,
+                                               const core::SceneCatalog& scene) {
+  SH_ASSIGN_OR_RETURN(ContactChain chain, LoadContactChainFile(path));
+  SH_RETURN_IF_ERROR(ValidateAndGround(chain, scene));
+  return chain;
+}
+
+}  // namespace simhuman::plan

@@ -1,0 +1,46 @@
+#pragma once
+/// Our AMP-like humanoid, generated as MJCF: 15 bodies, 28 hinge DoF, PD position servos
+/// (P in the actuator, D as implicit joint damping), human proportions (~1.70 m, ~60 kg at
+/// scale 1). Facing +x, z up; the root is a free joint on the pelvis.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "simhuman/core/body_joint.h"
+
+namespace simhuman::world {
+
+/// Parameters of one humanoid.
+struct HumanoidSpec {
+  double scale = 1.0;  ///< length scale (1 = adult 1.70 m; 0.7 = a child ~1.19 m); mass ~ s^3
+  std::string prefix;  ///< prefix for every name, e.g. "h1/" for a second agent
+  std::string rgba = "0.85 0.65 0.5 1";
+};
+
+inline constexpr int kHumanoidDofs = 28;  ///< hinge joints (and actuators)
+inline constexpr int kHumanoidBodies = 15;
+
+/// Hinge joint names in actuator order (without prefix).
+const std::vector<std::string>& HumanoidJointNames();
+
+/// Body names in tree order (without prefix).
+const std::vector<std::string>& HumanoidBodyNames();
+
+/// Site name (without prefix) of a Chain-of-Contacts body point, e.g. "pt_left_hand".
+std::string BodyPointSiteName(core::BodyJoint joint);
+
+/// Standing height of the pelvis origin above the floor at scale 1 (feet flat, legs straight).
+inline constexpr double kPelvisStandHeight = 0.96;
+
+/// The `<body>` subtree of one humanoid (goes inside `<worldbody>`), placed standing at
+/// (x, y) with heading yaw_rad.
+std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double yaw_rad);
+
+/// The `<actuator>` children of one humanoid (position servos, one per hinge).
+std::string HumanoidActuatorXml(const HumanoidSpec& spec);
+
+/// Total mass (kg) the generator assigns at `scale`.
+double HumanoidMassKg(double scale);
+
+}  // namespace simhuman::world

@@ -1,0 +1,132 @@
+#include "simhuman/world/model_builder.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "simhuman/world/humanoid.h"
+#include "simhuman/world/objects.h"
+
+namespace simhuman::world {
+namespace {
+
+std::string F(double v) {
+  std::ostringstream s;
+  s.precision(8);
+  s << v;
+  return s.str();
+}
+std::string V3(const Eigen::Vector3d& v) { return F(v.x()) + " " + F(v.y()) + " " + F(v.z()); }
+std::string Q(const Eigen::Quaterniond& q) {
+  return F(q.w()) + " " + F(q.x()) + " " + F(q.y()) + " " + F(q.z());
+}
+
+const char* GeomType(core::ShapeKind k) {
+  switch (k) {
+    case core::ShapeKind::kBox: return "box";
+    case core::ShapeKind::kSphere: return "sphere";
+    case core::ShapeKind::kCapsule: return "capsule";
+    case core::ShapeKind::kCylinder: return "cylinder";
+  }
+  return "box";
+}
+
+std::string GeomSize(const core::Shape& s) {
+  switch (s.kind) {
+    case core::ShapeKind::kBox: return V3(s.size);
+    case core::ShapeKind::kSphere: return F(s.size.x());
+    default: return F(s.size.x()) + " " + F(s.size.y());
+  }
+}
+
+std::string Rgba(const core::CatalogObject& o, bool part) {
+  auto c = ColorRgba(o.color.empty() ? DefaultColor(o.type) : o.color);
+  std::array<float, 4> rgba = c ? *c : std::array<float, 4>{0.6f, 0.6f, 0.6f, 1.f};
+  // unnamed structure (legs, frames) drawn slightly darker than the named parts
+  float k = part ? 1.0f : 0.7f;
+  return F(rgba[0] * k) + " " + F(rgba[1] * k) + " " + F(rgba[2] * k) + " " + F(rgba[3]);
+}
+
+bool SameShape(const core::Shape& a, const core::Shape& b) {
+  return a.kind == b.kind && (a.size - b.size).norm() < 1e-12 &&
+         (a.pose.pos - b.pose.pos).norm() < 1e-12 && a.pose.quat.isApprox(b.pose.quat, 1e-12);
+}
+
+}  // namespace
+
+std::string AgentPrefix(int agent) { return agent == 0 ? "" : "h" + std::to_string(agent) + "/"; }
+
+std::string ObjectBodyName(const std::string& id) { return "obj/" + id; }
+
+core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
+                                          const std::vector<AgentPlacement>& agents,
+                                          const ModelOptions& options) {
+  if (!(options.timestep_s > 0) || !std::isfinite(options.timestep_s)) {
+    return absl::InvalidArgumentError("model option timestep_s must be a positive number");
+  }
+  std::ostringstream o;
+  o << "<mujoco model=\"simhuman\">\n"
+    << "<compiler angle=\"degree\" autolimits=\"true\"/>\n"
+    << "<option timestep=\"" << F(options.timestep_s) << "\" iterations=\""
+    << options.solver_iterations << "\" integrator=\"Euler\"/>\n"
+    << "<size nconmax=\"1500\" njmax=\"4000\" nstack=\"3000000\"/>\n"
+    << "<visual><global offwidth=\"" << options.offscreen_width << "\" offheight=\""
+    << options.offscreen_height << "\"/><quality shadowsize=\"2048\"/>"
+    << "<headlight ambient=\"0.35 0.35 0.35\" diffuse=\"0.5 0.5 0.5\"/></visual>\n"
+    << "<asset><texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\"0.82 0.82 0.8\" "
+       "rgb2=\"0.7 0.7 0.68\" width=\"512\" height=\"512\"/>"
+    << "<material name=\"floor\" texture=\"grid\" texrepeat=\"8 8\" reflectance=\"0\"/></asset>\n"
+    << "<default><geom condim=\"3\" friction=\"0.9 0.02 0.01\" solref=\"0.015 1\"/></default>\n"
+    << "<worldbody>\n"
+    << "<light name=\"sun\" directional=\"true\" pos=\"0 0 6\" dir=\"-0.3 -0.2 -1\" "
+       "diffuse=\"0.6 0.6 0.6\" castshadow=\"false\"/>\n"
+    << "<geom name=\"floor\" type=\"plane\" size=\"30 30 0.1\" material=\"floor\"/>\n";
+  for (size_t a = 0; a < agents.size(); ++a) {
+    const AgentPlacement& p = agents[a];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw_rad) ||
+        !(p.scale > 0.3 && p.scale < 1.5)) {
+      return absl::InvalidArgumentError("human " + std::to_string(a) +
+                                        ": position/yaw must be finite and scale in (0.3, 1.5)");
+    }
+    HumanoidSpec spec;
+    spec.scale = p.scale;
+    spec.prefix = AgentPrefix(static_cast<int>(a));
+    if (a == 1) spec.rgba = "0.55 0.7 0.85 1";
+    if (a == 2) spec.rgba = "0.75 0.8 0.55 1";
+    o << HumanoidBodyXml(spec, p.x, p.y, p.yaw_rad);
+  }
+  for (const core::CatalogObject& obj : scene.objects) {
+    o << "<body name=\"" << ObjectBodyName(obj.id) << "\" pos=\"" << V3(obj.pose.pos)
+      << "\" quat=\"" << Q(obj.pose.quat) << "\">\n";
+    if (obj.movable) o << "<freejoint name=\"obj/" << obj.id << "/root\"/>\n";
+    int n = 0;
+    for (const core::Shape& s : obj.shapes) {
+      if (!s.size.allFinite() || (s.size.array() < 0).any()) {
+        return absl::InvalidArgumentError("object '" + obj.id + "': shape " + std::to_string(n) +
+                                          " has an invalid size");
+      }
+      bool in_part = false;
+      for (const auto& part : obj.parts) {
+        for (const auto& ps : part.shapes) in_part |= SameShape(ps, s);
+      }
+      o << "<geom name=\"obj/" << obj.id << "/" << n++ << "\" type=\"" << GeomType(s.kind)
+        << "\" size=\"" << GeomSize(s) << "\" pos=\"" << V3(s.pose.pos) << "\" quat=\""
+        << Q(s.pose.quat) << "\" rgba=\"" << Rgba(obj, in_part) << "\"";
+      if (obj.movable) {
+        o << " mass=\"" << F(obj.mass_kg / std::max<size_t>(1, obj.shapes.size())) << "\"";
+      }
+      o << "/>\n";
+    }
+    o << "</body>\n";
+  }
+  o << "</worldbody>\n<actuator>\n";
+  for (size_t a = 0; a < agents.size(); ++a) {
+    HumanoidSpec spec;
+    spec.scale = agents[a].scale;
+    spec.prefix = AgentPrefix(static_cast<int>(a));
+    o << HumanoidActuatorXml(spec);
+  }
+  o << "</actuator>\n</mujoco>\n";
+  return o.str();
+}
+
+}  // namespace simhuman::world

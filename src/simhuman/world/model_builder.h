@@ -1,0 +1,38 @@
+#pragma once
+/// Assembles one MJCF model from a scene catalog (objects as primitive geoms, static or on a
+/// free joint) and the humanoids placed in it.
+
+#include <string>
+#include <vector>
+
+#include "simhuman/core/scene_catalog.h"
+#include "simhuman/core/status.h"
+
+namespace simhuman::world {
+
+/// Where one humanoid starts: standing at (x, y) facing yaw_rad, at length scale `scale`.
+struct AgentPlacement {
+  double x = 0, y = 0, yaw_rad = 0;
+  double scale = 1.0;
+};
+
+/// Physics options of the assembled model.
+struct ModelOptions {
+  double timestep_s = 0.005;
+  int solver_iterations = 20;
+  int offscreen_width = 640;  ///< framebuffer for headless rendering
+  int offscreen_height = 480;
+};
+
+/// Name prefix of agent `i` ("" for agent 0, "h1/" for agent 1, ...).
+std::string AgentPrefix(int agent);
+
+/// MJCF body name of catalog object `id` ("obj/<id>").
+std::string ObjectBodyName(const std::string& id);
+
+/// Builds the MJCF text. Errors name the culprit (e.g. a non-finite size).
+core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
+                                          const std::vector<AgentPlacement>& agents,
+                                          const ModelOptions& options);
+
+}  // namespace simhuman::world
