@@ -3,8 +3,8 @@
 /// by plan/ (grounding, metrics) and control/ (contact targets). No MuJoCo here.
 ///
 /// Object frame convention: +z up, +x is the object's "front" (the way a seated person faces,
-/// the side one approaches a bed or table from); +y is the object's left as seen by a person
-/// facing the object's front... i.e. the seated person's left. Yaw rotates about +z.
+/// the side one approaches a bed or table from), +y is the left of a person seated in it.
+/// Yaw rotates about +z.
 
 #include <optional>
 #include <string>
@@ -29,6 +29,7 @@ struct CatalogObject {
   std::string color;  // colour name, e.g. "red" (may be empty)
   Pose pose;          // world_from_object; updated from the simulation for movable objects
   bool movable = false;
+  bool collides = true;  ///< false for markers (visual targets that bodies pass through)
   double mass_kg = 0.0;            // movable objects only
   std::vector<CatalogPart> parts;  // named parts
   std::vector<Shape> shapes;       // every solid of the object (parts and unnamed, e.g. legs)

@@ -111,6 +111,7 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
       o << "<geom name=\"obj/" << obj.id << "/" << n++ << "\" type=\"" << GeomType(s.kind)
         << "\" size=\"" << GeomSize(s) << "\" pos=\"" << V3(s.pose.pos) << "\" quat=\""
         << Q(s.pose.quat) << "\" rgba=\"" << Rgba(obj, in_part) << "\"";
+      if (!obj.collides) o << " contype=\"0\" conaffinity=\"0\"";
       if (obj.movable) {
         o << " mass=\"" << F(obj.mass_kg / std::max<size_t>(1, obj.shapes.size())) << "\"";
       }

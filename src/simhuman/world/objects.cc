@@ -334,6 +334,16 @@ const std::vector<TypeInfo>& Types() {
                    {"screen_height", 0.22, 0.19, 0.25, 0.12, 0.35, "screen size from the hinge"}},
                   BuildLaptop,
                   {}});
+    t->push_back({"marker",
+                  "red",
+                  {{"radius", 0.015, 0.01, 0.02, 0.005, 0.2, "radius of the marker sphere"}},
+                  [](const Sizes& sz, Assembly& a) {
+                    core::Shape ball;
+                    ball.kind = core::ShapeKind::kSphere;
+                    ball.size = Vector3d(sz.at("radius"), 0, 0);
+                    a.Part("point", {"target", "marker"}, {ball});
+                  },
+                  {}});
     t->push_back({"box",
                   "orange",
                   {{"depth", 0.40, 0.30, 0.60, 0.03, 1.5, "size along x"},
@@ -536,6 +546,7 @@ core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
   for (core::CatalogPart& p : obj.parts) {
     for (core::Shape& s : p.shapes) scale_shape(s);
   }
+  obj.collides = type->name != "marker";
   if (spec.mass_kg) {
     obj.movable = true;
     obj.mass_kg = *spec.mass_kg;

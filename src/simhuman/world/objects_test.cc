@@ -54,8 +54,9 @@ TEST(ObjectsTest, EveryTypeBuildsWithItsParts) {
       {"table", {"board"}},
       {"laptop", {"keyboard", "screen"}},
       {"box", {"top", "left side", "right side", "front side", "back side", "body"}}};
-  ASSERT_EQ(ObjectTypes().size(), expected.size());
+  ASSERT_EQ(ObjectTypes().size(), expected.size() + 1);  // + marker, tested below
   for (const std::string& type : ObjectTypes()) {
+    if (type == "marker") continue;
     SCOPED_TRACE(type);
     core::CatalogObject o = Build(Spec(type));
     EXPECT_EQ(o.type, type);
@@ -84,6 +85,18 @@ TEST(ObjectsTest, EveryTypeBuildsWithItsParts) {
     EXPECT_FALSE(o.color.empty());
     EXPECT_EQ(o.movable, type == "box");
   }
+}
+
+TEST(ObjectsTest, MarkerIsASmallNonCollidingPoint) {
+  ObjectSpec spec = Spec("marker");
+  spec.pos = Eigen::Vector3d(0.3, -0.2, 1.1);
+  core::CatalogObject m = Build(spec);
+  ASSERT_NE(m.FindPart("point"), nullptr);
+  EXPECT_FALSE(m.collides);
+  EXPECT_FALSE(m.movable);
+  Eigen::Vector3d np = core::NearestPointOnShapes(m.FindPart("point")->shapes, m.pose,
+                                                  Eigen::Vector3d(0.3, -0.2, 2.0));
+  EXPECT_NEAR(np.z(), 1.1 + 0.015, 1e-9);
 }
 
 TEST(ObjectsTest, PartNamesAndAliasesResolve) {
