@@ -1,0 +1,205 @@
+#include "simhuman/render/offscreen.h"
+
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <utility>
+
+#include "absl/strings/str_cat.h"
+#include "simhuman/render/egl_context.h"
+
+#ifndef GL_MAX_SAMPLES
+#define GL_MAX_SAMPLES 0x8D57
+#endif
+#ifndef GL_MAX_RENDERBUFFER_SIZE
+#define GL_MAX_RENDERBUFFER_SIZE 0x84E8
+#endif
+
+namespace simhuman::render {
+namespace {
+
+std::string GlString(GLenum name) {
+  const auto* s = reinterpret_cast<const char*>(glGetString(name));
+  return s != nullptr ? s : "";
+}
+
+// MuJoCo aborts the process (mju_error) when the GL context lacks what it needs, so check
+// those requirements first and turn them into errors
+absl::Status CheckGlRequirements() {
+  const std::string version = GlString(GL_VERSION);
+  int major = 0, minor = 0;
+  if (std::sscanf(version.c_str(), "%d.%d", &major, &minor) != 2) {
+    return absl::UnavailableError(
+        absl::StrCat("cannot parse the OpenGL version string '", version, "'"));
+  }
+  if (major < 1 || (major == 1 && minor < 5)) {
+    return absl::UnavailableError(
+        absl::StrCat("MuJoCo needs OpenGL 1.5 or higher, the context has ", version));
+  }
+  const std::string extensions = " " + GlString(GL_EXTENSIONS) + " ";
+  if (extensions.find(" GL_ARB_framebuffer_object ") == std::string::npos) {
+    return absl::UnavailableError(
+        absl::StrCat("MuJoCo needs GL_ARB_framebuffer_object, which the OpenGL context (", version,
+                     ", renderer '", GlString(GL_RENDERER), "') lacks"));
+  }
+  return absl::OkStatus();
+}
+
+int AutoFontScale(int height) {
+  if (height < 300) return mjFONTSCALE_50;
+  if (height < 800) return mjFONTSCALE_100;
+  if (height < 1200) return mjFONTSCALE_150;
+  return mjFONTSCALE_200;
+}
+
+}  // namespace
+
+absl::Status RendererOptions::Validate() const {
+  if (msaa_samples < -1 || msaa_samples > 64) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("RendererOptions.msaa_samples is ", msaa_samples,
+                     "; valid are -1 (the model's offsamples) or 0..64"));
+  }
+  if (font_scale != 0 && font_scale != 50 && font_scale != 100 && font_scale != 150 &&
+      font_scale != 200 && font_scale != 250 && font_scale != 300) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("RendererOptions.font_scale is ", font_scale,
+                     "; valid are 0 (auto), 50, 100, 150, 200, 250, 300"));
+  }
+  if (max_geoms < 1) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("RendererOptions.max_geoms is ", max_geoms, "; it must be >= 1"));
+  }
+  return absl::OkStatus();
+}
+
+absl::StatusOr<std::unique_ptr<OffscreenRenderer>> OffscreenRenderer::Create(
+    const mjModel* m, int width, int height, const RendererOptions& options) {
+  if (m == nullptr) return absl::InvalidArgumentError("OffscreenRenderer: model is null");
+  if (width < 1 || height < 1) {
+    return absl::InvalidArgumentError(
+        absl::StrCat("OffscreenRenderer: image size ", width, "x", height, " must be >= 1x1"));
+  }
+  if (absl::Status s = options.Validate(); !s.ok()) return s;
+
+  std::unique_ptr<OffscreenRenderer> r(new OffscreenRenderer());
+  r->width_ = width;
+  r->height_ = height;
+  r->options_ = options;
+  r->owner_thread_ = std::this_thread::get_id();
+  auto egl = EglContext::Create();
+  if (!egl.ok()) return egl.status();
+  r->egl_ = std::move(egl).value();
+
+  if (absl::Status s = CheckGlRequirements(); !s.ok()) return s;
+  GLint max_size = 0, max_samples = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  if (width > max_size || height > max_size) {
+    return absl::InvalidArgumentError(absl::StrCat("OffscreenRenderer: image size ", width, "x",
+                                                   height, " exceeds GL_MAX_RENDERBUFFER_SIZE ",
+                                                   max_size, " of ", r->gl_renderer()));
+  }
+
+  // own a copy whose offscreen buffer matches the image
+  r->model_ = mj_copyModel(nullptr, m);
+  if (r->model_ == nullptr) {
+    return absl::ResourceExhaustedError("OffscreenRenderer: mj_copyModel failed");
+  }
+  r->model_->vis.global.offwidth = width;
+  r->model_->vis.global.offheight = height;
+  int samples =
+      options.msaa_samples >= 0 ? options.msaa_samples : r->model_->vis.quality.offsamples;
+  r->model_->vis.quality.offsamples = std::clamp(samples, 0, std::max<int>(max_samples, 0));
+
+  mjv_defaultOption(&r->vis_options_);
+  mjv_defaultScene(&r->scene_);
+  mjv_makeScene(r->model_, &r->scene_, options.max_geoms);
+  r->scene_made_ = true;
+  mjr_defaultContext(&r->context_);
+  const int font_scale = options.font_scale > 0 ? options.font_scale : AutoFontScale(height);
+  mjr_makeContext(r->model_, &r->context_, font_scale);
+  r->context_made_ = true;
+  mjr_setBuffer(mjFB_OFFSCREEN, &r->context_);
+  if (r->context_.currentBuffer != mjFB_OFFSCREEN) {
+    return absl::InternalError("OffscreenRenderer: MuJoCo could not select its offscreen buffer");
+  }
+  if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+    return absl::InternalError(absl::StrCat("OffscreenRenderer: OpenGL error 0x", absl::Hex(err),
+                                            " while creating MuJoCo's render context on ",
+                                            r->gl_renderer()));
+  }
+  r->bottom_up_.resize(static_cast<size_t>(width) * height * 3);
+  return r;
+}
+
+OffscreenRenderer::~OffscreenRenderer() {
+  // GL objects can only be freed with our context current; if that fails (wrong thread) they
+  // go with the context
+  if (context_made_ && egl_ != nullptr && egl_->MakeCurrent().ok()) {
+    mjr_freeContext(&context_);
+  }
+  if (scene_made_) mjv_freeScene(&scene_);
+  if (model_ != nullptr) mj_deleteModel(model_);
+  egl_.reset();
+}
+
+const std::string& OffscreenRenderer::egl_platform() const { return egl_->platform(); }
+
+const std::string& OffscreenRenderer::gl_renderer() const { return egl_->gl_renderer(); }
+
+absl::Status OffscreenRenderer::Render(const mjData* d, const CameraSpec& cam,
+                                       std::vector<uint8_t>* rgb, std::string_view caption) {
+  if (d == nullptr || rgb == nullptr) {
+    return absl::InvalidArgumentError("OffscreenRenderer::Render: data or output is null");
+  }
+  if (std::this_thread::get_id() != owner_thread_) {
+    return absl::FailedPreconditionError(
+        "OffscreenRenderer::Render called from a thread other than the one that created the "
+        "renderer; OpenGL contexts are bound to their thread");
+  }
+  if (absl::Status s = egl_->MakeCurrent(); !s.ok()) return s;
+
+  // the scene update only reads d (it writes d->warning when the scene is full)
+  mjvCamera mjcam;
+  ToMjvCamera(cam, &mjcam);
+  mjv_updateScene(model_, const_cast<mjData*>(d), &vis_options_, nullptr, &mjcam, mjCAT_ALL,
+                  &scene_);
+  if (scene_.ngeom >= scene_.maxgeom) {
+    return absl::ResourceExhaustedError(absl::StrCat(
+        "OffscreenRenderer: the scene needs more than RendererOptions.max_geoms = ", scene_.maxgeom,
+        " geoms; raise it"));
+  }
+  scene_.flags[mjRND_SHADOW] = options_.shadows ? 1 : 0;
+  scene_.flags[mjRND_REFLECTION] = options_.reflections ? 1 : 0;
+  scene_.flags[mjRND_SKYBOX] = options_.skybox ? 1 : 0;
+
+  const mjrRect viewport = {0, 0, width_, height_};
+  mjr_setBuffer(mjFB_OFFSCREEN, &context_);
+  mjr_render(viewport, &scene_, &context_);
+  if (!caption.empty()) {
+    const std::string text(caption);
+    mjr_overlay(mjFONT_SHADOW, mjGRID_TOPLEFT, viewport, text.c_str(), nullptr, &context_);
+  }
+  // rows of odd widths are not 4-byte aligned
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  mjr_readPixels(bottom_up_.data(), nullptr, viewport, &context_);
+  if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+    return absl::InternalError(
+        absl::StrCat("OffscreenRenderer::Render: OpenGL error 0x", absl::Hex(err)));
+  }
+
+  // OpenGL reads bottom row first
+  const size_t row_bytes = static_cast<size_t>(width_) * 3;
+  rgb->resize(row_bytes * height_);
+  for (int y = 0; y < height_; ++y) {
+    std::memcpy(rgb->data() + row_bytes * y, bottom_up_.data() + row_bytes * (height_ - 1 - y),
+                row_bytes);
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace simhuman::render
