@@ -1,6 +1,7 @@
 #include "simhuman/control/runner.h"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 
 namespace simhuman::control {
@@ -37,6 +38,7 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
   }
   std::vector<double> ctrl(world::kHumanoidDofs);
   const double t_start = d->time;
+  double settle_until = -1;  // >= 0 once all steps are done
   auto finish = [&](const std::string& reason) {
     tracker.Finish();
     res.end_reason = reason;
@@ -44,8 +46,8 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
 
   while (true) {
     double t = d->time - t_start;
-    int step = tracker.current_step();
-    if (step != task_step && step < res.steps_total) {
+    int step = std::min(tracker.current_step(), res.steps_total - 1);
+    if (step != task_step) {
       for (int a = 0; a < n_agents; ++a) {
         tasks[a] = BuildStepTask(chain.steps[step], catalog, a, world.agent(a).scale, options.pair);
       }
@@ -81,8 +83,9 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
       world.SyncCatalog(d, &catalog);
       auto pts = AllBodyPoints(world, d);
       plan::StepEval ev = plan::EvaluateStep(chain.steps[step], catalog, pts, options.pair);
-      tracker.Update(t, ev);
-      if (tracker.current_step() != step || tracker.finished()) {
+      bool was_done = tracker.done();
+      if (!was_done) tracker.Update(t, ev);
+      if (!was_done && (tracker.current_step() != step || tracker.finished())) {
         ProgressEvent e;
         e.step = step;
         e.steps_total = res.steps_total;
@@ -98,11 +101,18 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
         e.label = chain.steps[step].label;
         if (options.progress) options.progress(e);
       }
-      if (tracker.done()) {
+      if (tracker.done() && settle_until < 0) {
+        settle_until = t + options.settle_s;
+        if (options.settle_s <= 0) {
+          finish("completed");
+          break;
+        }
+      }
+      if (settle_until >= 0 && t >= settle_until) {
         finish("completed");
         break;
       }
-      if (tracker.finished()) {
+      if (tracker.finished() && !tracker.done()) {
         finish("timeout");
         break;
       }
@@ -113,7 +123,7 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
         double limit = options.fall_head_height_m * world.agent(a).scale;
         if (head_z < (lying ? 0.25 : limit)) {
           res.fell = true;
-          finish("fell");
+          finish(tracker.done() ? "completed" : "fell");
         }
       }
       if (!res.end_reason.empty()) break;

@@ -36,10 +36,20 @@ struct ProgressEvent {
 
 struct RunOptions {
   plan::PairParams pair;
-  plan::TrackerParams tracker;
+  /// Our default asks a step to hold for 0.5 s before it counts (UniHSI counts the first
+  /// instant), so passing through a contact on the way down is not a success.
+  plan::TrackerParams tracker = [] {
+    plan::TrackerParams p;
+    p.hold_s = 0.5;
+    return p;
+  }();
   double record_fps = 30;
   bool record = true;
   double fall_head_height_m = 0.45;  ///< head below this (x scale) while not lying: a fall
+  /// After the last step completes, keep simulating (controllers keep the last step) for this
+  /// long, so a video shows the final pose held. Falls in this span are reported (`fell`) but
+  /// do not change `success`, which is decided by the plan alone.
+  double settle_s = 0.0;
   std::function<void(const ProgressEvent&)> progress;  ///< optional
 };
 

@@ -18,7 +18,7 @@ const char* PostureName(Posture p) {
 double BodyPointClearance(core::BodyJoint j) {
   using core::BodyJoint;
   switch (j) {
-    case BodyJoint::kPelvis: return 0.07;
+    case BodyJoint::kPelvis: return 0.03;
     case BodyJoint::kTorso: return 0.10;
     case BodyJoint::kHead: return 0.10;
     case BodyJoint::kLeftHand:
@@ -90,6 +90,12 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
   }
   if (pelvis_on_seat && head_down) {
     task.posture = side_lie ? Posture::kLieSide : Posture::kLieBack;
+    // lying, the pelvis and head rest on their backs: touching distance is the body radius,
+    // less what a soft pillow gives
+    for (ContactTerm& t : task.terms) {
+      if (t.joint == core::BodyJoint::kPelvis) t.clearance_m = 0.09 * scale;
+      if (t.joint == core::BodyJoint::kHead) t.clearance_m = 0.075 * scale;
+    }
   } else if (pelvis_on_seat) {
     task.posture = Posture::kSit;
   } else {

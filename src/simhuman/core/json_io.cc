@@ -50,6 +50,9 @@ StatusOr<nlohmann::json> ParseJson(std::string_view text, std::string_view sourc
     if (pos != std::string::npos) what = what.substr(pos);
     return absl::InvalidArgumentError(std::string(source) + ":" + std::to_string(line) + ":" +
                                       std::to_string(col) + ": invalid JSON: " + what);
+  } catch (const nlohmann::json::exception& e) {
+    // e.g. out_of_range for numbers such as 1e999
+    return absl::InvalidArgumentError(std::string(source) + ": invalid JSON: " + e.what());
   }
 }
 

@@ -163,7 +163,7 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
     << "\" quat=\"" << V(std::cos(yaw_rad / 2), 0, 0) << " " << F(std::sin(yaw_rad / 2)) << "\">\n";
   o << "<freejoint name=\"" << p << "root\"/>\n";
   w.Capsule(o, "pelvis_geom", 0, -0.065, -0.03, 0, 0.065, -0.03, 0.09, kPelvisMass);
-  w.Site(o, BodyJoint::kPelvis, 0, 0, -0.05);
+  w.Site(o, BodyJoint::kPelvis, 0, 0, -0.09);
 
   // torso: lumbar joint 0.10 above the pelvis origin; shoulders at +0.33
   o << "<body name=\"" << p << "torso\" pos=\"" << w.Pos(0, 0, 0.10) << "\">\n";

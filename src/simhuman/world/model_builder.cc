@@ -104,14 +104,21 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
         return absl::InvalidArgumentError("object '" + obj.id + "': shape " + std::to_string(n) +
                                           " has an invalid size");
       }
-      bool in_part = false;
+      bool in_part = false, soft = false;
       for (const auto& part : obj.parts) {
-        for (const auto& ps : part.shapes) in_part |= SameShape(ps, s);
+        for (const auto& ps : part.shapes) {
+          bool same = SameShape(ps, s);
+          in_part |= same;
+          soft |= same && part.name == "pillow";
+        }
       }
       o << "<geom name=\"obj/" << obj.id << "/" << n++ << "\" type=\"" << GeomType(s.kind)
         << "\" size=\"" << GeomSize(s) << "\" pos=\"" << V3(s.pose.pos) << "\" quat=\""
-        << Q(s.pose.quat) << "\" rgba=\"" << Rgba(obj, in_part) << "\"";
+        << Q(s.pose.quat) << "\" rgba=\"" << (soft ? "0.95 0.95 0.92 1" : Rgba(obj, in_part))
+        << "\"";
       if (!obj.collides) o << " contype=\"0\" conaffinity=\"0\"";
+      // pillows give: a head sinks a few centimetres
+      if (soft) o << " solref=\"0.04 1\" solimp=\"0.2 0.9 0.05\"";
       if (obj.movable) {
         o << " mass=\"" << F(obj.mass_kg / std::max<size_t>(1, obj.shapes.size())) << "\"";
       }

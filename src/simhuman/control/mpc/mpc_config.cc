@@ -37,6 +37,7 @@ const std::vector<Field>& Fields() {
       {"w_effort", &MpcConfig::w_effort, nullptr, 0, 1e6},
       {"w_ctrl", &MpcConfig::w_ctrl, nullptr, 0, 1e6},
       {"w_velocity", &MpcConfig::w_velocity, nullptr, 0, 1e6},
+      {"w_com_velocity", &MpcConfig::w_com_velocity, nullptr, 0, 1e6},
       {"w_fall", &MpcConfig::w_fall, nullptr, 0, 1e6},
       {"fall_head_height_m", &MpcConfig::fall_head_height_m, nullptr, 0, 2},
   };

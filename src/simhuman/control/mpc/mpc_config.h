@@ -32,6 +32,7 @@ struct MpcConfig {
   double w_effort = 0.05;   ///< normalised actuator force squared
   double w_ctrl = 0.3;      ///< servo targets away from the reference
   double w_velocity = 0.002;
+  double w_com_velocity = 2.0;  ///< centre-of-mass speed squared (calm, human-paced motion)
   double w_fall = 30.0;     ///< head below its safe height
   double fall_head_height_m = 0.5;  ///< head below this (scaled) ends the episode as a fall
 

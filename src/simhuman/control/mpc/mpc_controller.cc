@@ -189,6 +189,7 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
     }
     RefPoints(t, &ref);
     double c = 0;
+    const double progress = Smoothstep((t - ramp_t0_) / ramp_s_);
     // reference tracking
     double track = 0;
     for (int b = 0; b < core::kNumBodyJoints; ++b) {
@@ -200,7 +201,9 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
       const ContactTerm& term = task_.terms[k];
       const Eigen::Vector3d& p = pts[static_cast<int>(term.joint)];
       Eigen::Vector3d np = term.Nearest(p, pts);
-      double w = config_.w_contact * (0.3 + term_weights_[k]);
+      // contacts pull gently early in the reference ramp and fully at its end, so the body
+      // follows the reference instead of diving at the target
+      double w = config_.w_contact * (0.3 + term_weights_[k]) * (0.25 + 0.75 * progress);
       if (term.type == plan::ContactType::kContact) {
         Eigen::Vector3d dir = term.dir;
         if (dir.squaredNorm() < 0.5) {
@@ -217,12 +220,21 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
     Eigen::Vector3d com(comp[0], comp[1], comp[2]);
     const Eigen::Vector3d& pelvis = pts[static_cast<int>(core::BodyJoint::kPelvis)];
     bool balance = standing || (sitting && pelvis.z() > seat_top_z_ + 0.2 * scale);
-    if (balance && h > 0) {
+    if (h > 0) {
       Eigen::Vector3d v = (com - com_prev) / config_.plan_dt_s;
       Eigen::Vector3d cp = com + v * std::sqrt(std::max(com.z(), 0.1) / 9.81);
       Eigen::Vector3d mid = 0.5 * (pts[static_cast<int>(core::BodyJoint::kLeftFoot)] +
                                    pts[static_cast<int>(core::BodyJoint::kRightFoot)]);
-      c += config_.w_balance * SmoothL1((cp.head<2>() - mid.head<2>()).norm(), 0.05);
+      if (balance) {
+        c += config_.w_balance * SmoothL1((cp.head<2>() - mid.head<2>()).norm(), 0.05);
+      } else if (sitting) {
+        // seated: the capture point stays between the seat contact and the feet
+        Eigen::Vector2d a2 = pelvis.head<2>(), b2 = mid.head<2>(), p2 = cp.head<2>();
+        Eigen::Vector2d ab = b2 - a2;
+        double along = std::clamp((p2 - a2).dot(ab) / std::max(ab.squaredNorm(), 1e-9), 0.0, 1.0);
+        c += config_.w_balance * SmoothL1((p2 - (a2 + along * ab)).norm(), 0.05);
+      }
+      c += config_.w_com_velocity * v.squaredNorm();
     }
     com_prev = com;
     // upright torso

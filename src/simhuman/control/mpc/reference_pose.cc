@@ -284,6 +284,19 @@ ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const 
       v.quat = YawQuat(obj_yaw);
       // pelvis a little behind the seat centre; thighs horizontal
       v.pos = seat + YawQuat(obj_yaw) * Eigen::Vector3d(-0.04 * s, 0, 0);
+      // on a bed, sit on the front edge where lying back later puts the head on the pillow
+      const core::CatalogPart* pillow = focus ? focus->FindPart("pillow") : nullptr;
+      const core::CatalogPart* mattress = focus ? focus->FindPart("mattress") : nullptr;
+      if (pillow && mattress) {
+        auto [mlo, mhi] = core::ShapesBounds(mattress->shapes);
+        auto [plo, phi] = core::ShapesBounds(pillow->shapes);
+        double pillow_y = 0.5 * (plo.y() + phi.y());
+        double dir = pillow_y > 0.5 * (mlo.y() + mhi.y()) ? 1.0 : -1.0;
+        double y = std::clamp(pillow_y - dir * 0.62 * s, mlo.y() + 0.2, mhi.y() - 0.2);
+        Eigen::Vector3d local(mhi.x() - 0.2 * s, y, mhi.z());
+        seat = focus->pose.Apply(local);
+        v.pos = seat;
+      }
       v.pos.z() = seat.z() + 0.12 * s;
       pr.base_quat = v.quat;
       pr.feet_on_floor = true;

@@ -1,0 +1,160 @@
+#include "simhuman/app/cli.h"
+
+#include <mujoco/mujoco.h>
+
+#include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdlib>
+#include <iostream>
+
+#include "simhuman/app/common.h"
+#include "simhuman/app/eval_command.h"
+#include "simhuman/app/run_command.h"
+#include "simhuman/eval/suites.h"
+#include "simhuman/world/health.h"
+#include "simhuman/world/scene.h"
+
+#ifndef SIMHUMAN_GIT_REV
+#define SIMHUMAN_GIT_REV "unknown"
+#endif
+
+namespace simhuman::app {
+namespace {
+
+constexpr char kVersion[] = "0.1.0";
+
+// `simhuman scenes`: the built-in scenes with their objects and humans
+int ScenesCommand(std::ostream& out, std::ostream& err) {
+  for (const std::string& name : world::BuiltinSceneNames()) {
+    core::StatusOr<world::SceneSpec> spec = world::BuiltinScene(name);
+    if (!spec.ok()) return ReportError(err, "scenes", absl::InternalError(spec.status().message()));
+    out << name << ": " << spec->humans.size() << (spec->humans.size() == 1 ? " human" : " humans")
+        << "; objects: ";
+    if (spec->objects.empty()) out << "(none)";
+    for (size_t i = 0; i < spec->objects.size(); ++i) {
+      out << (i ? ", " : "") << spec->objects[i].id << " (" << spec->objects[i].type << ")";
+    }
+    out << std::endl;
+  }
+  return kExitOk;
+}
+
+// seeds are unsigned 64-bit integers; CLI11 would wrap "-3" around
+CLI::Validator SeedValidator() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        errno = 0;
+        bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+        if (digits) std::strtoull(value.c_str(), nullptr, 10);
+        if (!digits || errno == ERANGE) {
+          return "seed '" + value + "' is invalid; valid: an integer in [0, 2^64)";
+        }
+        return "";
+      },
+      "UINT");
+}
+
+// the subcommand's name for messages ("" for the top level)
+std::string ParsedCommand(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands()) return sub->get_name();
+  return "";
+}
+
+}  // namespace
+
+std::string VersionText() {
+  return std::string("simhuman ") + kVersion + " (git " + SIMHUMAN_GIT_REV + ", MuJoCo " +
+         mj_versionString() + ")";
+}
+
+int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"simhuman: simulated humans that carry out Chain-of-Contacts plans", "simhuman"};
+  app.set_version_flag("--version", VersionText(), "Print the version and exit");
+  app.require_subcommand(0, 1);
+
+  RunFlags run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Run one plan in one scene and write the results");
+  run_cmd
+      ->add_option("--scene", run.scene,
+                   "Built-in scene name (see 'simhuman scenes') or scene JSON file")
+      ->required();
+  run_cmd->add_option("--plan", run.plan, "Chain-of-Contacts plan JSON file (required)");
+  run_cmd->add_option("--seed", run.seed, "Random seed of the controllers")
+      ->check(SeedValidator())
+      ->capture_default_str();
+  CLI::Option* run_preset =
+      run_cmd->add_option("--preset", run.preset, "MPC preset: fast or quality")
+          ->capture_default_str();
+  run_cmd->add_option("--config", run.config, "MPC settings JSON file (keys of MpcConfig)");
+  run_cmd->add_option("--out", run.out, "Output folder")->capture_default_str();
+  run_cmd->add_flag("--video", run.video, "Also render DIR/video.mp4 and DIR/contact_sheet.png");
+  run_cmd->add_option("--settle", run.settle_s, "Seconds to keep simulating after the last step")
+      ->capture_default_str();
+
+  EvalFlags ev;
+  std::string suites = core::JoinNames(eval::SuiteNames());
+  CLI::App* eval_cmd = app.add_subcommand("eval", "Run a benchmark suite of random episodes");
+  eval_cmd->add_option("--suite", ev.suite, "Suite: " + suites)->required();
+  eval_cmd->add_option("--episodes", ev.episodes, "Number of episodes")->capture_default_str();
+  eval_cmd->add_option("--seed", ev.seed, "Seed of the suite (episode i uses DeriveSeed(seed, i))")
+      ->check(SeedValidator())
+      ->capture_default_str();
+  eval_cmd->add_option("--out", ev.out, "Output folder (default out/eval_<suite>)");
+  CLI::Option* eval_preset =
+      eval_cmd->add_option("--preset", ev.preset, "MPC preset: fast or quality")
+          ->capture_default_str();
+  eval_cmd->add_option("--config", ev.config, "MPC settings JSON file (keys of MpcConfig)");
+  eval_cmd
+      ->add_option("--video-every", ev.video_every,
+                   "Render every K-th episode's contact sheet to DIR/ep<i>.png (0: none)")
+      ->capture_default_str();
+
+  app.add_subcommand("scenes", "List the built-in scenes and their objects");
+
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  try {
+    app.parse(static_cast<int>(argv.size()), argv.data());
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();  // the selected subcommand's, when there is one
+    return kExitOk;
+  } catch (const CLI::CallForAllHelp&) {
+    out << app.help("", CLI::AppFormatMode::All);
+    return kExitOk;
+  } catch (const CLI::CallForVersion& e) {
+    out << e.what() << std::endl;
+    return kExitOk;
+  } catch (const CLI::ParseError& e) {
+    std::string cmd = ParsedCommand(app);
+    std::string msg = e.what();
+    for (char& c : msg) {
+      if (c == '\n') c = ' ';
+    }
+    err << "simhuman" << (cmd.empty() ? "" : " " + cmd) << ": error: " << msg << "; run 'simhuman"
+        << (cmd.empty() ? "" : " " + cmd) << " --help' for the valid options" << std::endl;
+    return kExitBadInput;
+  }
+
+  if (run_cmd->parsed()) {
+    run.preset_given = run_preset->count() > 0;
+    return RunCommand(run, out, err);
+  }
+  if (eval_cmd->parsed()) {
+    ev.preset_given = eval_preset->count() > 0;
+    return EvalCommand(ev, out, err);
+  }
+  if (app.got_subcommand("scenes")) return ScenesCommand(out, err);
+  err << "simhuman: error: a command is required; valid commands are: run, eval, scenes (or "
+         "--version, --help)"
+      << std::endl;
+  return kExitBadInput;
+}
+
+int Main(int argc, char** argv) {
+  world::InstallMujocoHandlers();
+  std::vector<std::string> args(argv, argv + argc);
+  if (args.empty()) args.push_back("simhuman");
+  return RunCli(args, std::cout, std::cerr);
+}
+
+}  // namespace simhuman::app

@@ -1,0 +1,229 @@
+#include "simhuman/app/cli.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "simhuman/app/common.h"
+
+namespace simhuman::app {
+namespace {
+
+const std::string kData = std::string(SIMHUMAN_SOURCE_DIR) + "/tests/data/app/";
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+CliRun Cli(std::vector<std::string> args) {
+  args.insert(args.begin(), "simhuman");
+  std::ostringstream out, err;
+  CliRun r;
+  r.code = RunCli(args, out, err);
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
+// a fresh, not yet existing output folder
+std::string OutDir(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("simhuman_cli_test_" + name);
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+// bad input: exit 2, one line on stderr that contains every `needles`, nothing written
+void ExpectBadInput(const CliRun& r, const std::vector<std::string>& needles) {
+  EXPECT_EQ(r.code, kExitBadInput) << r.err;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "expected one line: " << r.err;
+  for (const std::string& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << r.err;
+}
+
+CliRun RunSitDemo(std::vector<std::string> extra, const std::string& out) {
+  std::vector<std::string> args = {"run", "--scene", "sit_demo", "--out", out};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return Cli(args);
+}
+
+TEST(CliTest, VersionPrintsRevisionAndMujoco) {
+  CliRun r = Cli({"--version"});
+  EXPECT_EQ(r.code, kExitOk);
+  EXPECT_NE(r.out.find("simhuman 0.1.0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("MuJoCo 2."), std::string::npos) << r.out;
+  EXPECT_EQ(VersionText() + "\n", r.out);
+}
+
+TEST(CliTest, HelpExitsZero) {
+  CliRun r = Cli({"--help"});
+  EXPECT_EQ(r.code, kExitOk);
+  EXPECT_NE(r.out.find("run"), std::string::npos);
+  CliRun sub = Cli({"run", "--help"});
+  EXPECT_EQ(sub.code, kExitOk);
+  EXPECT_NE(sub.out.find("--scene"), std::string::npos) << sub.out;
+}
+
+TEST(CliTest, NoCommandIsUsageError) { ExpectBadInput(Cli({}), {"run, eval, scenes"}); }
+
+TEST(CliTest, UnknownCommandAndFlagAreUsageErrors) {
+  ExpectBadInput(Cli({"dance"}), {"dance", "--help"});
+  ExpectBadInput(Cli({"run", "--scene", "sit_demo", "--bogus"}),
+                 {"--bogus", "simhuman run --help"});
+  ExpectBadInput(Cli({"eval", "--suite", "sit", "--episodes", "many"}), {"--episodes"});
+}
+
+TEST(CliTest, ScenesListsBuiltinsWithObjects) {
+  CliRun r = Cli({"scenes"});
+  EXPECT_EQ(r.code, kExitOk);
+  EXPECT_NE(r.out.find("sit_demo: 1 human; objects: chair000 (chair)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("living_room:"), std::string::npos);
+  EXPECT_NE(r.out.find("bed003 (bed)"), std::string::npos);
+}
+
+TEST(CliTest, RunRequiresSceneAndPlan) {
+  ExpectBadInput(Cli({"run", "--plan", kData + "sit_only.json"}), {"--scene"});
+  std::string out = OutDir("no_plan");
+  ExpectBadInput(RunSitDemo({}, out), {"--plan FILE is required"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliTest, RunUnknownSceneListsBuiltins) {
+  std::string out = OutDir("unknown_scene");
+  CliRun r = Cli({"run", "--scene", "castle", "--plan", kData + "sit_only.json", "--out", out});
+  ExpectBadInput(r, {"'castle'", "sit_demo", "living_room"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliTest, RunMissingAndMalformedSceneFiles) {
+  std::string out = OutDir("bad_scene");
+  std::string missing = kData + "no_such_scene.json";
+  ExpectBadInput(Cli({"run", "--scene", missing, "--plan", kData + "sit_only.json", "--out", out}),
+                 {missing, "no such file"});
+  std::string syntax = kData + "malformed_scene_syntax.json";
+  ExpectBadInput(Cli({"run", "--scene", syntax, "--plan", kData + "sit_only.json", "--out", out}),
+                 {syntax + ":5:", "invalid JSON"});
+  std::string type = kData + "malformed_scene_unknown_type.json";
+  ExpectBadInput(Cli({"run", "--scene", type, "--plan", kData + "sit_only.json", "--out", out}),
+                 {"/objects/0/type", "'throne'", "chair, armchair"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliTest, RunMissingAndMalformedPlanFiles) {
+  std::string out = OutDir("bad_plan");
+  ExpectBadInput(RunSitDemo({"--plan", kData + "no_such_plan.json"}, out),
+                 {"--plan", "no_such_plan.json"});
+  ExpectBadInput(RunSitDemo({"--plan", kData + "malformed_plan_syntax.json"}, out),
+                 {"malformed_plan_syntax.json:4:", "invalid JSON"});
+  ExpectBadInput(RunSitDemo({"--plan", kData + "malformed_plan_unknown_object.json"}, out),
+                 {"/steps/0/pairs/0/object", "'chair001'", "chair000"});
+  ExpectBadInput(RunSitDemo({"--plan", kData + "malformed_plan_unknown_part.json"}, out),
+                 {"/steps/0/pairs/0/part", "'headrest'", "seat surface"});
+  ExpectBadInput(RunSitDemo({"--plan", kData + "malformed_plan_unknown_joint.json"}, out),
+                 {"/steps/0/pairs/0/joint", "'tail'", "pelvis"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliTest, RunBadConfigs) {
+  std::string out = OutDir("bad_config");
+  std::string plan = kData + "sit_only.json";
+  ExpectBadInput(RunSitDemo({"--plan", plan, "--config", kData + "malformed_config_nan.json"}, out),
+                 {"malformed_config_nan.json:3:", "NaN"});
+  ExpectBadInput(
+      RunSitDemo({"--plan", plan, "--config", kData + "malformed_config_unknown_key.json"}, out),
+      {"malformed_config_unknown_key.json", "'sampels'", "samples"});
+  ExpectBadInput(
+      RunSitDemo({"--plan", plan, "--config", kData + "malformed_config_out_of_range.json"}, out),
+      {"malformed_config_out_of_range.json", "'samples'", "[2, 1024]"});
+  ExpectBadInput(RunSitDemo({"--plan", plan, "--config", kData + "no_such_config.json"}, out),
+                 {"no_such_config.json"});
+  ExpectBadInput(RunSitDemo({"--plan", plan, "--preset", "turbo"}, out),
+                 {"--preset", "'turbo'", "fast, quality"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliTest, RunBadNumbers) {
+  std::string out = OutDir("bad_numbers");
+  std::string plan = kData + "sit_only.json";
+  ExpectBadInput(RunSitDemo({"--plan", plan, "--settle", "nan"}, out), {"--settle"});
+  ExpectBadInput(RunSitDemo({"--plan", plan, "--settle", "-1"}, out), {"--settle"});
+  ExpectBadInput(RunSitDemo({"--plan", plan, "--seed", "-3"}, out), {"--seed", "'-3'"});
+  ExpectBadInput(RunSitDemo({"--plan", plan, "--seed", "99999999999999999999999"}, out),
+                 {"--seed"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliTest, RunObjectTooFarToReach) {
+  std::string out = OutDir("too_far");
+  CliRun r = Cli({"run", "--scene", kData + "far_bed_scene.json", "--plan",
+                  kData + "malformed_plan_too_far.json", "--out", out});
+  ExpectBadInput(r, {"object 'bed000'", "from human 0", "no get-close step precedes step 1",
+                     "walking is not implemented yet"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliTest, EvalBadFlags) {
+  std::string out = OutDir("eval_bad");
+  ExpectBadInput(Cli({"eval", "--suite", "dance", "--out", out}),
+                 {"'dance'", "sit, lie, reach, sceneplan-simple"});
+  ExpectBadInput(Cli({"eval", "--suite", "sit", "--episodes", "0", "--out", out}), {"--episodes"});
+  ExpectBadInput(Cli({"eval", "--suite", "sit", "--video-every", "-1", "--out", out}),
+                 {"--video-every"});
+  ExpectBadInput(Cli({"eval", "--suite", "sit", "--preset", "turbo", "--out", out}), {"'turbo'"});
+  ExpectBadInput(Cli({"eval", "--episodes", "3"}), {"--suite"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CommonTest, PresetAndConfigResolution) {
+  auto fast = ResolveConfig("fast", false, "");
+  ASSERT_TRUE(fast.ok());
+  EXPECT_EQ(fast->preset, "fast");
+  auto quality = ResolveConfig("quality", true, "");
+  ASSERT_TRUE(quality.ok());
+  EXPECT_EQ(quality->preset, "quality");
+  // a config file without "preset" takes the flag's preset for the keys it leaves out
+  std::string path = (std::filesystem::temp_directory_path() / "simhuman_cfg_test.json").string();
+  {
+    std::ofstream f(path);
+    f << R"({"samples": 8})";
+  }
+  auto from_file = ResolveConfig("quality", true, path);
+  ASSERT_TRUE(from_file.ok()) << from_file.status();
+  EXPECT_EQ(from_file->samples, 8);
+  EXPECT_EQ(from_file->preset, "quality");
+  EXPECT_EQ(from_file->knots, quality->knots);
+  {
+    std::ofstream f(path);
+    f << R"({"preset": "fast", "samples": 8})";
+  }
+  auto conflict = ResolveConfig("quality", true, path);
+  ASSERT_FALSE(conflict.ok());
+  EXPECT_NE(conflict.status().message().find("conflicts with --preset quality"), std::string::npos);
+  EXPECT_TRUE(ResolveConfig("quality", false, path).ok());
+  {
+    std::ofstream f(path);
+    f << R"({"noise_rad": 1e999})";
+  }
+  auto overflow = ResolveConfig("fast", false, path);
+  ASSERT_FALSE(overflow.ok());
+  EXPECT_EQ(ExitCodeFor(overflow.status()), kExitBadInput);
+  std::filesystem::remove(path);
+}
+
+TEST(CommonTest, ExitCodes) {
+  EXPECT_EQ(ExitCodeFor(absl::OkStatus()), kExitOk);
+  EXPECT_EQ(ExitCodeFor(absl::InvalidArgumentError("x")), kExitBadInput);
+  EXPECT_EQ(ExitCodeFor(absl::NotFoundError("x")), kExitBadInput);
+  EXPECT_EQ(ExitCodeFor(absl::UnavailableError("no EGL")), kExitInternal);
+  EXPECT_EQ(ExitCodeFor(absl::InternalError("x")), kExitInternal);
+  std::ostringstream err;
+  EXPECT_EQ(ReportError(err, "run", absl::InvalidArgumentError("a\nb")), kExitBadInput);
+  EXPECT_EQ(err.str(), "simhuman run: error: a b\n");
+}
+
+}  // namespace
+}  // namespace simhuman::app

@@ -1,0 +1,135 @@
+#include "simhuman/app/eval_command.h"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+#include "simhuman/app/common.h"
+#include "simhuman/eval/eval_runner.h"
+
+namespace simhuman::app {
+namespace {
+
+const char kCommand[] = "eval";
+
+std::string Row(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+std::string Row(const char* fmt, ...) {
+  char buf[512];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buf, sizeof(buf), fmt, args);
+  va_end(args);
+  return buf;
+}
+
+std::string Cm(double m) {
+  if (!(m >= 0) || !std::isfinite(m)) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.1f", 100 * m);
+  return buf;
+}
+
+std::string Extra(const eval::ExtraResult& e) {
+  if (e.metric.empty()) return "-";
+  char buf[48];
+  if (e.metric == "hand_distance_m") {
+    std::snprintf(buf, sizeof(buf), "hand %s cm %s", Cm(e.value).c_str(), e.pass ? "ok" : "FAIL");
+  } else if (std::isfinite(e.value)) {
+    std::snprintf(buf, sizeof(buf), "axis %.0f deg %s", e.value, e.pass ? "ok" : "FAIL");
+  } else {
+    std::snprintf(buf, sizeof(buf), "%s FAIL", e.metric.c_str());
+  }
+  return buf;
+}
+
+void PrintHeader(std::ostream& out) {
+  out << Row("%4s %-24s %-4s %-6s %7s %-4s %-20s %6s %6s %-20s", "ep", "variant", "ok", "steps",
+             "err_cm", "fell", "end", "sim_s", "w/sim", "extra")
+      << std::endl;
+}
+
+void PrintEpisode(std::ostream& out, const eval::EpisodeRecord& r) {
+  const control::EpisodeResult& res = r.result;
+  std::string steps = std::to_string(res.steps_completed) + "/" + std::to_string(res.steps_total);
+  std::string end =
+      res.end_reason.size() > 20 ? res.end_reason.substr(0, 19) + "~" : res.end_reason;
+  double wps = res.sim_time_s > 0 ? res.wall_time_s / res.sim_time_s : 0.0;
+  out << Row("%4d %-24s %-4s %-6s %7s %-4s %-20s %6.2f %6.2f %-20s", r.index,
+             r.variant.substr(0, 24).c_str(), r.success ? "yes" : "no", steps.c_str(),
+             Cm(res.contact_error_m).c_str(), res.fell ? "yes" : "no", end.c_str(), res.sim_time_s,
+             wps, Extra(r.extra).c_str())
+      << std::endl;
+  if (!r.render_error.empty()) {
+    out << "     (contact sheet not written: " << r.render_error << ")" << std::endl;
+  }
+}
+
+void PrintSummary(std::ostream& out, const eval::Summary& s) {
+  out << "\nsummary\n";
+  out << Row("%-18s %8s %8s %10s %10s %8s %8s %8s", "suite", "episodes", "success", "err_cm",
+             "succ_steps", "falls", "extra", "w/sim")
+      << "\n";
+  std::string eps = std::to_string(s.episodes) + "/" + std::to_string(s.episodes_requested);
+  out << Row("%-18s %8s %7.1f%% %10s %6.2f/%-3.2g %7.1f%% %7.1f%% %8.2f", s.suite.c_str(),
+             eps.c_str(), 100 * s.success_rate,
+             s.contact_error_m ? Cm(*s.contact_error_m).c_str() : "-", s.success_steps,
+             s.steps_total, 100 * s.fall_rate, 100 * s.extra_pass_rate, s.wall_per_sim)
+      << std::endl;
+}
+
+}  // namespace
+
+int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
+  std::optional<eval::Suite> suite = eval::ParseSuite(flags.suite);
+  if (!suite) {
+    return ReportError(
+        err, kCommand,
+        absl::InvalidArgumentError("--suite: unknown suite '" + flags.suite +
+                                   "'; valid suites are: " + core::JoinNames(eval::SuiteNames())));
+  }
+  if (flags.episodes < 1) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError("--episodes " + std::to_string(flags.episodes) +
+                                                  " is invalid; valid: an integer >= 1"));
+  }
+  if (flags.video_every < 0) {
+    return ReportError(
+        err, kCommand,
+        absl::InvalidArgumentError("--video-every " + std::to_string(flags.video_every) +
+                                   " is invalid; valid: 0 (none) or K >= 1 (every K-th episode)"));
+  }
+  core::StatusOr<control::MpcConfig> config =
+      ResolveConfig(flags.preset, flags.preset_given, flags.config);
+  if (!config.ok()) {
+    absl::Status st = config.status();
+    if (flags.config.empty()) st = core::Annotate(st, "--preset");
+    return ReportError(err, kCommand, st);
+  }
+  eval::EvalOptions options;
+  options.suite = *suite;
+  options.episodes = flags.episodes;
+  options.seed = flags.seed;
+  options.out_dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
+  options.config = *config;
+  options.video_every = flags.video_every;
+  absl::Status dir = MakeOutputDir(options.out_dir);
+  if (!dir.ok()) return ReportError(err, kCommand, dir);
+
+  out << "simhuman eval: suite " << flags.suite << ", " << flags.episodes << " episodes, seed "
+      << flags.seed << ", preset " << config->preset << " -> " << options.out_dir << std::endl;
+  PrintHeader(out);
+  core::StatusOr<eval::Summary> summary = eval::RunEval(
+      options, [&](const eval::EpisodeRecord& r, const eval::Summary&) { PrintEpisode(out, r); });
+  if (!summary.ok()) {
+    int code = ReportError(err, kCommand, summary.status());
+    return code == kExitOk ? kExitInternal : code;
+  }
+  PrintSummary(out, *summary);
+  out << "wrote " << (std::filesystem::path(options.out_dir) / "summary.json").string() << " and "
+      << (std::filesystem::path(options.out_dir) / "episodes.jsonl").string() << std::endl;
+  return kExitOk;
+}
+
+}  // namespace simhuman::app

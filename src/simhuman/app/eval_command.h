@@ -1,0 +1,28 @@
+#pragma once
+/// `simhuman eval`: a benchmark suite of seeded, independent episodes with a results table.
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+
+namespace simhuman::app {
+
+/// The flags of `simhuman eval`.
+struct EvalFlags {
+  std::string suite;  ///< one of eval::SuiteNames()
+  int episodes = 10;
+  uint64_t seed = 1;
+  std::string out;  ///< output folder; empty: out/eval_<suite>
+  std::string preset = "fast";
+  bool preset_given = false;
+  std::string config;   ///< MpcConfig JSON file; empty: the preset
+  int video_every = 0;  ///< contact sheet of every K-th episode; 0: none
+};
+
+/// Runs the suite: a table row per finished episode and a summary table on `out`, files as
+/// eval::RunEval() writes them. kExitOk when every episode ran, kExitBadInput for bad flags
+/// or files, kExitInternal when an episode could not be set up or a file not written (what
+/// finished stays written).
+int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err);
+
+}  // namespace simhuman::app

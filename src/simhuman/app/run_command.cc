@@ -1,0 +1,155 @@
+#include "simhuman/app/run_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "simhuman/app/common.h"
+#include "simhuman/eval/episode.h"
+#include "simhuman/eval/reachability.h"
+#include "simhuman/eval/replay.h"
+#include "simhuman/plan/validate.h"
+#include "simhuman/world/scene.h"
+
+namespace simhuman::app {
+namespace {
+
+const char kCommand[] = "run";
+
+std::string Fixed(double v, int digits) {
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), "%.*f", digits, v);
+  return buf;
+}
+
+std::string Plural(size_t n, const std::string& word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+std::string Join(const std::filesystem::path& dir, const char* name) {
+  return (dir / name).string();
+}
+
+// one progress line per completed (or abandoned) step
+void PrintProgress(std::ostream& out, const plan::ContactChain& chain,
+                   const control::ProgressEvent& e) {
+  if (e.ended) return;
+  const int n = static_cast<int>(chain.steps.size());
+  const int i = std::clamp(e.step, 0, n - 1);
+  out << "step " << i + 1 << "/" << n << " '" << eval::StepText(chain.steps[i]) << "' "
+      << (e.completed ? "done" : "not done, time budget used up") << " at t=" << Fixed(e.time_s, 2)
+      << " s (distance " << Fixed(e.distance_m, 3) << " m)" << std::endl;
+}
+
+}  // namespace
+
+int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
+  // flags that need no files
+  if (flags.plan.empty()) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--plan FILE is required (a Chain-of-Contacts plan, e.g. "
+                           "assets/plans/sit_then_stand.json; plans from text commands come "
+                           "later)"));
+  }
+  if (!std::isfinite(flags.settle_s) || flags.settle_s < 0) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError("--settle " + std::to_string(flags.settle_s) +
+                                                  " is invalid; valid: a finite number of "
+                                                  "seconds >= 0"));
+  }
+  core::StatusOr<control::MpcConfig> config =
+      ResolveConfig(flags.preset, flags.preset_given, flags.config);
+  if (!config.ok()) {
+    absl::Status st = config.status();
+    if (flags.config.empty()) st = core::Annotate(st, "--preset");
+    return ReportError(err, kCommand, st);
+  }
+
+  // scene, plan and whether it can be done from where the humans start
+  core::StatusOr<world::SceneSpec> scene = world::LoadScene(flags.scene);
+  if (!scene.ok()) return ReportError(err, kCommand, scene.status());
+  core::StatusOr<core::SceneCatalog> catalog = world::BuildCatalog(*scene);
+  if (!catalog.ok()) return ReportError(err, kCommand, catalog.status());
+  core::StatusOr<plan::ContactChain> chain = plan::LoadAndGroundFile(flags.plan, *catalog);
+  if (!chain.ok()) {
+    absl::Status st = chain.status();
+    // a missing file's message does not say which flag named it
+    if (absl::IsNotFound(st)) st = core::Annotate(st, "--plan");
+    return ReportError(err, kCommand, st);
+  }
+  absl::Status reach = eval::CheckWithinReach(*chain, *catalog, scene->humans);
+  if (!reach.ok()) return ReportError(err, kCommand, reach);
+  core::StatusOr<std::vector<world::AgentPlacement>> placements = eval::AgentPlacements(*scene);
+  if (!placements.ok()) return ReportError(err, kCommand, placements.status());
+
+  absl::Status dir = MakeOutputDir(flags.out);
+  if (!dir.ok()) return ReportError(err, kCommand, dir);
+  const std::filesystem::path out_dir(flags.out);
+
+  core::StatusOr<std::unique_ptr<world::SimWorld>> sim = eval::BuildWorld(*scene, *catalog);
+  if (!sim.ok()) return ReportError(err, kCommand, sim.status());
+  core::StatusOr<std::vector<std::unique_ptr<control::MpcController>>> controllers =
+      eval::MakeControllers(**sim, *config, flags.seed);
+  if (!controllers.ok()) return ReportError(err, kCommand, controllers.status());
+
+  out << "simhuman run: scene " << scene->name << " (" << Plural(scene->objects.size(), "object")
+      << ", " << Plural(scene->humans.size(), "human") << "), plan " << flags.plan << " ("
+      << Plural(chain->steps.size(), "step") << "), preset " << config->preset << ", seed "
+      << flags.seed << std::endl;
+
+  control::RunOptions options;
+  options.settle_s = flags.settle_s;
+  options.record = true;
+  options.progress = [&](const control::ProgressEvent& e) { PrintProgress(out, *chain, e); };
+  control::Trajectory trajectory;
+  control::EpisodeResult result =
+      eval::RunWithControllers(**sim, *chain, *controllers, options, &trajectory);
+
+  // results first, so a rendering failure cannot lose them
+  nlohmann::ordered_json j = eval::EpisodeResultJson(result);
+  j["seed"] = flags.seed;
+  j["preset"] = config->preset;
+  j["scene"] = scene->name;
+  j["scene_arg"] = flags.scene;
+  j["plan"] = flags.plan;
+  j["config"] = config->ToJson();
+  j["settle_s"] = flags.settle_s;
+  const nlohmann::ordered_json provenance = eval::ProvenanceJson();
+  for (const auto& [key, value] : provenance.items()) j[key] = value;
+  absl::Status st = eval::WriteJsonFile(Join(out_dir, "scene.json"), world::SceneToJson(*scene));
+  if (st.ok())
+    st = eval::WriteJsonFile(Join(out_dir, "plan.json"), plan::ContactChainToJson(*chain));
+  if (st.ok())
+    st = eval::WriteTrajectoryCsv(Join(out_dir, "trajectory.csv"), (*sim)->model(), trajectory);
+  if (st.ok()) st = eval::WriteJsonFile(Join(out_dir, "result.json"), j);
+  if (!st.ok()) return ReportError(err, kCommand, absl::InternalError(st.message()));
+
+  out << "success: " << (result.success ? "yes" : "no") << ", steps " << result.steps_completed
+      << "/" << result.steps_total << ", contact error "
+      << (result.contact_error_m >= 0 ? Fixed(result.contact_error_m, 3) + " m" : "n/a")
+      << ", fell: " << (result.fell ? "yes" : "no") << ", end: " << result.end_reason << ", sim "
+      << Fixed(result.sim_time_s, 2) << " s, wall " << Fixed(result.wall_time_s, 2) << " s ("
+      << (result.sim_time_s > 0 ? Fixed(result.wall_time_s / result.sim_time_s, 2) : "n/a")
+      << " wall/sim); results in " << Join(out_dir, "result.json") << std::endl;
+  if (result.end_reason.rfind("unstable", 0) == 0 ||
+      result.end_reason.rfind("controller", 0) == 0) {
+    err << "simhuman run: warning: the episode ended early: " << result.end_reason << std::endl;
+  }
+
+  if (flags.video) {
+    eval::ReplayOptions replay;
+    replay.video_path = Join(out_dir, "video.mp4");
+    replay.sheet_path = Join(out_dir, "contact_sheet.png");
+    absl::Status rs = eval::RenderReplay(**sim, *chain, trajectory, replay);
+    if (!rs.ok()) {
+      err << "simhuman run: error: rendering the video failed (the results are in "
+          << Join(out_dir, "result.json") << "): " << rs.message() << std::endl;
+      return kExitInternal;
+    }
+    out << "video: " << replay.video_path << ", contact sheet: " << replay.sheet_path << std::endl;
+  }
+  return kExitOk;
+}
+
+}  // namespace simhuman::app

@@ -1,0 +1,32 @@
+#pragma once
+/// `simhuman run`: one episode of a plan in a scene, with progress lines, a summary, result
+/// files and an optional video.
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+
+namespace simhuman::app {
+
+/// The flags of `simhuman run`.
+struct RunFlags {
+  std::string scene;  ///< built-in scene name or scene JSON file
+  std::string plan;   ///< plan file (required for now)
+  uint64_t seed = 1;
+  std::string preset = "fast";
+  bool preset_given = false;  ///< --preset was on the command line
+  std::string config;         ///< MpcConfig JSON file; empty: the preset
+  std::string out = "out";    ///< output folder
+  bool video = false;
+  double settle_s = 1.5;  ///< keep simulating this long after the last step completes
+};
+
+/// Runs the command. Writes DIR/result.json, DIR/trajectory.csv, DIR/scene.json and
+/// DIR/plan.json, then with --video DIR/video.mp4 and DIR/contact_sheet.png. Progress and the
+/// summary go to `out`, errors (one line each) to `err`. Returns kExitOk when the episode ran
+/// (whether or not the plan succeeded), kExitBadInput for bad input (detected before anything
+/// is simulated or written), kExitInternal for internal and rendering failures (the results
+/// are written before rendering starts).
+int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err);
+
+}  // namespace simhuman::app

@@ -1,0 +1,162 @@
+#include "simhuman/eval/episode.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "simhuman/core/json_io.h"
+#include "simhuman/core/rng.h"
+
+#ifndef SIMHUMAN_GIT_REV
+#define SIMHUMAN_GIT_REV "unknown"
+#endif
+
+namespace simhuman::eval {
+
+uint64_t ControllerSeed(uint64_t run_seed, int agent) {
+  return core::DeriveSeed(run_seed, kControllerStream, static_cast<uint64_t>(agent));
+}
+
+core::StatusOr<std::vector<world::AgentPlacement>> AgentPlacements(const world::SceneSpec& spec) {
+  std::vector<world::AgentPlacement> out;
+  for (size_t i = 0; i < spec.humans.size(); ++i) {
+    const world::HumanSpec& h = spec.humans[i];
+    if (h.posture != "stand") {
+      return absl::InvalidArgumentError("scene '" + spec.name + "': /humans/" + std::to_string(i) +
+                                        "/posture: '" + h.posture +
+                                        "' starts are not supported by the simulator yet; valid "
+                                        "postures to start in: stand");
+    }
+    world::AgentPlacement p;
+    p.x = h.pos_xy.x();
+    p.y = h.pos_xy.y();
+    p.yaw_rad = h.yaw_rad;
+    p.scale = h.scale;
+    out.push_back(p);
+  }
+  return out;
+}
+
+core::StatusOr<std::unique_ptr<world::SimWorld>> BuildWorld(const world::SceneSpec& spec,
+                                                            const core::SceneCatalog& catalog) {
+  SH_ASSIGN_OR_RETURN(std::vector<world::AgentPlacement> placements, AgentPlacements(spec));
+  if (placements.empty()) {
+    return absl::InvalidArgumentError("scene '" + spec.name + "' has no humans");
+  }
+  core::StatusOr<std::unique_ptr<world::SimWorld>> w = world::SimWorld::Create(catalog, placements);
+  if (!w.ok()) return core::Annotate(w.status(), "scene '" + spec.name + "'");
+  return w;
+}
+
+core::StatusOr<std::vector<std::unique_ptr<control::MpcController>>> MakeControllers(
+    const world::SimWorld& world, const control::MpcConfig& config, uint64_t run_seed) {
+  std::vector<std::unique_ptr<control::MpcController>> out;
+  for (int a = 0; a < world.num_agents(); ++a) {
+    SH_ASSIGN_OR_RETURN(
+        std::unique_ptr<control::MpcController> c,
+        control::MpcController::Create(&world, a, config, ControllerSeed(run_seed, a)));
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+control::EpisodeResult RunWithControllers(
+    world::SimWorld& world, const plan::ContactChain& chain,
+    const std::vector<std::unique_ptr<control::MpcController>>& controllers,
+    const control::RunOptions& options, control::Trajectory* trajectory) {
+  std::vector<control::Controller*> raw;
+  for (const auto& c : controllers) raw.push_back(c.get());
+  return control::RunEpisode(world, chain, raw, options, trajectory);
+}
+
+std::string StepText(const plan::ContactStep& step) {
+  if (!step.label.empty()) return step.label;
+  std::string out;
+  for (const plan::ContactPair& p : step.pairs) {
+    std::string s;
+    if (p.IsGetClose()) {
+      s = "get close to " + p.object + " (" + std::string(plan::DirectionName(p.direction)) + ")";
+    } else if (p.type == plan::ContactType::kNotCare) {
+      continue;
+    } else {
+      std::string joint = p.joint ? std::string(core::BodyJointName(*p.joint)) : "?";
+      std::string target = p.part_joint ? p.part : p.object + " " + p.part;
+      s = joint + (p.type == plan::ContactType::kContact ? " on " : " off ") + target;
+    }
+    if (!out.empty()) out += ", ";
+    out += s;
+  }
+  return out.empty() ? "(no requirement)" : out;
+}
+
+nlohmann::ordered_json EpisodeResultJson(const control::EpisodeResult& r) {
+  nlohmann::ordered_json j;
+  j["success"] = r.success;
+  j["steps_completed"] = r.steps_completed;
+  j["steps_total"] = r.steps_total;
+  j["contact_error_m"] =
+      r.contact_error_m >= 0 ? nlohmann::ordered_json(r.contact_error_m) : nlohmann::ordered_json();
+  j["fell"] = r.fell;
+  j["end_reason"] = r.end_reason;
+  j["sim_time_s"] = r.sim_time_s;
+  j["wall_time_s"] = r.wall_time_s;
+  j["wall_per_sim"] = r.sim_time_s > 0 ? nlohmann::ordered_json(r.wall_time_s / r.sim_time_s)
+                                       : nlohmann::ordered_json();
+  j["step_completion_s"] = r.step_completion_s;
+  return j;
+}
+
+nlohmann::ordered_json ProvenanceJson() {
+  return nlohmann::ordered_json{{"git_revision", SIMHUMAN_GIT_REV},
+                                {"mujoco_version", mj_versionString()}};
+}
+
+std::vector<std::string> QposColumnNames(const mjModel* m) {
+  std::vector<std::string> out(m->nq);
+  for (int j = 0; j < m->njnt; ++j) {
+    const char* raw = mj_id2name(m, mjOBJ_JOINT, j);
+    std::string name = raw && raw[0] ? raw : "joint" + std::to_string(j);
+    int adr = m->jnt_qposadr[j];
+    int n = 1;
+    if (m->jnt_type[j] == mjJNT_FREE) n = 7;
+    if (m->jnt_type[j] == mjJNT_BALL) n = 4;
+    for (int k = 0; k < n; ++k) {
+      out[adr + k] = n == 1 ? name : name + "[" + std::to_string(k) + "]";
+    }
+  }
+  return out;
+}
+
+absl::Status WriteTrajectoryCsv(const std::string& path, const mjModel* m,
+                                const control::Trajectory& trajectory) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) {
+    return absl::PermissionDeniedError("cannot write trajectory '" + path +
+                                       "': " + std::strerror(errno));
+  }
+  out << "time_s,step";
+  for (const std::string& c : QposColumnNames(m)) out << ',' << c;
+  out << '\n';
+  char buf[64];
+  for (size_t f = 0; f < trajectory.time_s.size(); ++f) {
+    std::snprintf(buf, sizeof(buf), "%.4f", trajectory.time_s[f]);
+    out << buf << ',' << (f < trajectory.step_index.size() ? trajectory.step_index[f] : 0);
+    for (double q : trajectory.qpos[f]) {
+      std::snprintf(buf, sizeof(buf), "%.7g", q);
+      out << ',' << buf;
+    }
+    out << '\n';
+  }
+  out.flush();
+  if (!out) return absl::DataLossError("error writing trajectory '" + path + "'");
+  return absl::OkStatus();
+}
+
+absl::Status WriteJsonFile(const std::string& path, const nlohmann::ordered_json& j) {
+  return core::WriteFileAtomic(
+      path, j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
+}
+
+}  // namespace simhuman::eval

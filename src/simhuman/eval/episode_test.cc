@@ -1,0 +1,204 @@
+#include "simhuman/eval/episode.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "simhuman/core/rng.h"
+#include "simhuman/eval/eval_runner.h"
+#include "simhuman/world/humanoid.h"
+
+namespace simhuman::eval {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr double kTol = 1e-12;
+
+// sit_demo plus a second human and a movable box
+world::SceneSpec TwoHumansAndABox() {
+  world::SceneSpec spec = *world::BuiltinScene("sit_demo");
+  world::ObjectSpec box;
+  box.id = "box001";
+  box.type = "box";
+  box.pos = Eigen::Vector3d(-1.5, 1.5, 0);
+  box.mass_kg = 3.0;
+  spec.objects.push_back(box);
+  world::HumanSpec h;
+  h.pos_xy = Eigen::Vector2d(-1.5, -1.5);
+  spec.humans.push_back(h);
+  return spec;
+}
+
+TEST(EpisodeTest, QposColumnsNameEveryEntry) {
+  world::SceneSpec spec = TwoHumansAndABox();
+  core::StatusOr<core::SceneCatalog> catalog = world::BuildCatalog(spec);
+  ASSERT_TRUE(catalog.ok());
+  core::StatusOr<std::unique_ptr<world::SimWorld>> sim = BuildWorld(spec, *catalog);
+  ASSERT_TRUE(sim.ok()) << sim.status();
+  const mjModel* m = (*sim)->model();
+  std::vector<std::string> names = QposColumnNames(m);
+  ASSERT_EQ(static_cast<int>(names.size()), m->nq);
+  for (const std::string& n : names) EXPECT_FALSE(n.empty());
+  const world::AgentIndex& a0 = (*sim)->agent(0);
+  EXPECT_EQ(names[a0.root_qpos], "root[0]");
+  EXPECT_EQ(names[a0.root_qpos + 6], "root[6]");
+  EXPECT_EQ(names[a0.hinge_qpos[0]], world::HumanoidJointNames()[0]);
+  const world::AgentIndex& a1 = (*sim)->agent(1);
+  EXPECT_EQ(names[a1.root_qpos + 3], "h1/root[3]");
+  EXPECT_EQ(names[a1.hinge_qpos[5]], "h1/" + world::HumanoidJointNames()[5]);
+  EXPECT_NE(std::find(names.begin(), names.end(), "obj/box001/root[0]"), names.end());
+
+  // a two-frame trajectory round trip
+  control::Trajectory t;
+  t.nq = m->nq;
+  t.time_s = {0.0, 1.0 / 30};
+  t.qpos = {std::vector<double>(m->nq, 0.5), std::vector<double>(m->nq, -0.25)};
+  t.step_index = {0, 1};
+  std::string path = (std::filesystem::temp_directory_path() / "simhuman_traj_test.csv").string();
+  ASSERT_TRUE(WriteTrajectoryCsv(path, m, t).ok());
+  std::ifstream in(path);
+  std::string header, row1, row2, extra;
+  std::getline(in, header);
+  std::getline(in, row1);
+  std::getline(in, row2);
+  EXPECT_FALSE(std::getline(in, extra));
+  EXPECT_EQ(header.rfind("time_s,step,root[0],root[1],root[2],root[3]", 0), 0u) << header;
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), m->nq + 1);
+  EXPECT_EQ(std::count(row2.begin(), row2.end(), ','), m->nq + 1);
+  EXPECT_EQ(row1.rfind("0.0000,0,0.5,0.5", 0), 0u) << row1;
+  EXPECT_EQ(row2.rfind("0.0333,1,-0.25,", 0), 0u) << row2;
+  std::filesystem::remove(path);
+  EXPECT_FALSE(WriteTrajectoryCsv("/nonexistent_dir/x.csv", m, t).ok());
+}
+
+TEST(EpisodeTest, StandingStartsOnly) {
+  world::SceneSpec spec = *world::BuiltinScene("sit_demo");
+  core::StatusOr<std::vector<world::AgentPlacement>> p = AgentPlacements(spec);
+  ASSERT_TRUE(p.ok());
+  ASSERT_EQ(p->size(), 1u);
+  EXPECT_NEAR((*p)[0].x, spec.humans[0].pos_xy.x(), kTol);
+  EXPECT_NEAR((*p)[0].yaw_rad, spec.humans[0].yaw_rad, kTol);
+  spec.humans[0].posture = "lie";
+  p = AgentPlacements(spec);
+  ASSERT_FALSE(p.ok());
+  EXPECT_THAT(p.status().message(), HasSubstr("/humans/0/posture: 'lie'"));
+  EXPECT_THAT(p.status().message(), HasSubstr("valid postures to start in: stand"));
+}
+
+TEST(EpisodeTest, ControllerSeedsAreDistinctAndStable) {
+  EXPECT_EQ(ControllerSeed(5, 0), ControllerSeed(5, 0));
+  EXPECT_NE(ControllerSeed(5, 0), ControllerSeed(5, 1));
+  EXPECT_NE(ControllerSeed(5, 0), ControllerSeed(6, 0));
+  EXPECT_EQ(ControllerSeed(5, 1), core::DeriveSeed(5, kControllerStream, 1));
+}
+
+TEST(EpisodeTest, StepTextUsesLabelOrPairs) {
+  plan::ContactStep step;
+  step.label = "sit down";
+  EXPECT_EQ(StepText(step), "sit down");
+  step.label.clear();
+  plan::ContactPair seat;
+  seat.object = "chair000";
+  seat.part = "seat surface";
+  seat.joint = core::BodyJoint::kPelvis;
+  plan::ContactPair head = seat;
+  head.part = "back surface";
+  head.joint = core::BodyJoint::kHead;
+  head.type = plan::ContactType::kNotContact;
+  plan::ContactPair ignored = seat;
+  ignored.type = plan::ContactType::kNotCare;
+  step.pairs = {seat, head, ignored};
+  EXPECT_EQ(StepText(step), "pelvis on chair000 seat surface, head off chair000 back surface");
+  plan::ContactPair close;
+  close.object = "bed000";
+  close.part = "none";
+  close.direction = plan::Direction::kFront;
+  step.pairs = {close};
+  EXPECT_EQ(StepText(step), "get close to bed000 (front)");
+}
+
+TEST(EpisodeTest, ResultJsonUsesNullForMissingValues) {
+  control::EpisodeResult r;
+  r.steps_total = 2;
+  r.end_reason = "unstable: bad qacc at t=1.000 s";
+  nlohmann::ordered_json j = EpisodeResultJson(r);
+  for (const char* key :
+       {"success", "steps_completed", "steps_total", "contact_error_m", "fell", "end_reason",
+        "sim_time_s", "wall_time_s", "wall_per_sim", "step_completion_s"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_TRUE(j["contact_error_m"].is_null());
+  EXPECT_TRUE(j["wall_per_sim"].is_null());
+  EXPECT_EQ(j["end_reason"], r.end_reason);
+  r.contact_error_m = 0.04;
+  r.sim_time_s = 2.0;
+  r.wall_time_s = 1.0;
+  j = EpisodeResultJson(r);
+  EXPECT_DOUBLE_EQ(j["contact_error_m"].get<double>(), 0.04);
+  EXPECT_DOUBLE_EQ(j["wall_per_sim"].get<double>(), 0.5);
+  nlohmann::ordered_json p = ProvenanceJson();
+  EXPECT_FALSE(p["git_revision"].get<std::string>().empty());
+  EXPECT_EQ(p["mujoco_version"], mj_versionString());
+}
+
+EpisodeRecord Record(bool plan_success, bool extra_pass, double error_m, bool fell, int steps,
+                     double sim_s, double wall_s) {
+  EpisodeRecord r;
+  r.result.success = plan_success;
+  r.result.steps_completed = steps;
+  r.result.steps_total = 2;
+  r.result.contact_error_m = error_m;
+  r.result.fell = fell;
+  r.result.sim_time_s = sim_s;
+  r.result.wall_time_s = wall_s;
+  r.extra.pass = extra_pass;
+  r.extra.metric = "lie_axis_error_deg";
+  r.extra.value = extra_pass ? 10.0 : std::nan("");
+  r.success = plan_success && extra_pass;
+  return r;
+}
+
+TEST(EvalRunnerTest, SummaryByHand) {
+  std::vector<EpisodeRecord> recs = {
+      Record(true, true, 0.02, false, 2, 10, 5), Record(true, false, 0.04, false, 2, 10, 5),
+      Record(false, true, -1, true, 0, 5, 10), Record(false, true, 0.06, false, 1, 15, 10)};
+  Summary s = Summarize("lie", recs, 10);
+  EXPECT_EQ(s.suite, "lie");
+  EXPECT_EQ(s.episodes, 4);
+  EXPECT_EQ(s.episodes_requested, 10);
+  EXPECT_DOUBLE_EQ(s.success_rate, 0.25);
+  ASSERT_TRUE(s.contact_error_m.has_value());
+  EXPECT_NEAR(*s.contact_error_m, 0.04, kTol);  // the episode without one is left out
+  EXPECT_DOUBLE_EQ(s.success_steps, 1.25);
+  EXPECT_DOUBLE_EQ(s.fall_rate, 0.25);
+  EXPECT_DOUBLE_EQ(s.extra_pass_rate, 0.75);
+  EXPECT_DOUBLE_EQ(s.wall_per_sim, 30.0 / 40.0);
+
+  Summary empty = Summarize("sit", {}, 3);
+  EXPECT_EQ(empty.episodes, 0);
+  EXPECT_FALSE(empty.contact_error_m.has_value());
+
+  EvalOptions options;
+  options.seed = 9;
+  nlohmann::ordered_json j = SummaryJson(s, options);
+  for (const char* key : {"suite", "episodes", "episodes_requested", "success_rate",
+                          "contact_error_m", "success_steps", "fall_rate", "wall_per_sim", "seed",
+                          "preset", "config", "git_revision", "mujoco_version"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_TRUE(SummaryJson(empty, options)["contact_error_m"].is_null());
+
+  nlohmann::ordered_json line = EpisodeRecordJson(recs[1]);
+  EXPECT_EQ(line["success"], false);
+  EXPECT_EQ(line["plan_success"], true);
+  EXPECT_EQ(line["extra_check"], "lie_axis_error_deg");
+  EXPECT_TRUE(EpisodeRecordJson(recs[1])["lie_axis_error_deg"].is_null());  // NaN
+  EXPECT_EQ(line.dump().find('\n'), std::string::npos);
+}
+
+}  // namespace
+}  // namespace simhuman::eval

@@ -1,0 +1,185 @@
+#include "simhuman/eval/eval_runner.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "simhuman/core/rng.h"
+#include "simhuman/eval/episode.h"
+#include "simhuman/eval/reachability.h"
+#include "simhuman/eval/replay.h"
+#include "simhuman/plan/validate.h"
+
+namespace simhuman::eval {
+namespace {
+
+nlohmann::ordered_json NumberOrNull(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
+}
+
+}  // namespace
+
+Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& records,
+                  int episodes_requested) {
+  Summary s;
+  s.suite = std::string(suite);
+  s.episodes = static_cast<int>(records.size());
+  s.episodes_requested = episodes_requested;
+  if (records.empty()) return s;
+  int successes = 0, falls = 0, extra_pass = 0, n_error = 0;
+  double steps = 0, steps_total = 0, error_sum = 0;
+  for (const EpisodeRecord& r : records) {
+    successes += r.success;
+    falls += r.result.fell;
+    extra_pass += r.extra.pass;
+    steps += r.result.steps_completed;
+    steps_total += r.result.steps_total;
+    if (r.result.contact_error_m >= 0) {
+      error_sum += r.result.contact_error_m;
+      ++n_error;
+    }
+    s.sim_time_s += r.result.sim_time_s;
+    s.wall_time_s += r.result.wall_time_s;
+  }
+  const double n = static_cast<double>(records.size());
+  s.success_rate = successes / n;
+  s.fall_rate = falls / n;
+  s.extra_pass_rate = extra_pass / n;
+  s.success_steps = steps / n;
+  s.steps_total = steps_total / n;
+  if (n_error > 0) s.contact_error_m = error_sum / n_error;
+  s.wall_per_sim = s.sim_time_s > 0 ? s.wall_time_s / s.sim_time_s : 0.0;
+  return s;
+}
+
+nlohmann::ordered_json EpisodeRecordJson(const EpisodeRecord& r) {
+  nlohmann::ordered_json j;
+  j["episode"] = r.index;
+  j["seed"] = r.seed;
+  j["variant"] = r.variant;
+  j["success"] = r.success;
+  j["plan_success"] = r.result.success;
+  const nlohmann::ordered_json result = EpisodeResultJson(r.result);
+  for (const auto& [key, value] : result.items()) {
+    if (key != "success") j[key] = value;
+  }
+  if (!r.extra.metric.empty()) {
+    j["extra_check"] = r.extra.metric;
+    j["extra_pass"] = r.extra.pass;
+    j[r.extra.metric] = NumberOrNull(r.extra.value);
+  }
+  if (!r.sheet_path.empty()) j["contact_sheet"] = r.sheet_path;
+  if (!r.render_error.empty()) j["render_error"] = r.render_error;
+  j["scene"] = r.scene;
+  j["plan"] = r.plan;
+  return j;
+}
+
+nlohmann::ordered_json SummaryJson(const Summary& s, const EvalOptions& options) {
+  nlohmann::ordered_json j;
+  j["suite"] = s.suite;
+  j["episodes"] = s.episodes;
+  j["episodes_requested"] = s.episodes_requested;
+  j["success_rate"] = s.success_rate;
+  j["contact_error_m"] =
+      s.contact_error_m ? nlohmann::ordered_json(*s.contact_error_m) : nlohmann::ordered_json();
+  j["success_steps"] = s.success_steps;
+  j["steps_total"] = s.steps_total;
+  j["fall_rate"] = s.fall_rate;
+  j["extra_pass_rate"] = s.extra_pass_rate;
+  j["wall_per_sim"] = s.wall_per_sim;
+  j["sim_time_s"] = s.sim_time_s;
+  j["wall_time_s"] = s.wall_time_s;
+  j["seed"] = options.seed;
+  j["preset"] = options.config.preset;
+  j["config"] = options.config.ToJson();
+  const nlohmann::ordered_json provenance = ProvenanceJson();
+  for (const auto& [key, value] : provenance.items()) j[key] = value;
+  return j;
+}
+
+core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int index) {
+  const uint64_t seed = core::DeriveSeed(options.seed, static_cast<uint64_t>(index));
+  const std::string who = "suite " + std::string(SuiteName(options.suite)) + ", episode " +
+                          std::to_string(index) + " (seed " + std::to_string(seed) + ")";
+  auto internal = [&](const absl::Status& st) {
+    return absl::InternalError(who + ": " + std::string(st.message()));
+  };
+  core::StatusOr<EpisodeSpec> spec = MakeEpisodeSpec(options.suite, seed);
+  if (!spec.ok()) return internal(spec.status());
+  core::StatusOr<core::SceneCatalog> catalog = world::BuildCatalog(spec->scene);
+  if (!catalog.ok()) return internal(catalog.status());
+  core::StatusOr<plan::ContactChain> chain = plan::ParseContactChainJson(spec->plan, who);
+  if (!chain.ok()) return internal(chain.status());
+  absl::Status st = plan::ValidateAndGround(*chain, *catalog);
+  if (st.ok()) st = CheckWithinReach(*chain, *catalog, spec->scene.humans);
+  if (!st.ok()) return internal(st);
+  core::StatusOr<std::unique_ptr<world::SimWorld>> sim = BuildWorld(spec->scene, *catalog);
+  if (!sim.ok()) return internal(sim.status());
+  core::StatusOr<std::vector<std::unique_ptr<control::MpcController>>> controllers =
+      MakeControllers(**sim, options.config, seed);
+  if (!controllers.ok()) return internal(controllers.status());
+
+  const bool render = options.video_every > 0 && index % options.video_every == 0;
+  control::RunOptions run;
+  run.record = render;
+  control::Trajectory trajectory;
+  EpisodeRecord rec;
+  rec.index = index;
+  rec.seed = seed;
+  rec.variant = spec->variant;
+  rec.result = RunWithControllers(**sim, *chain, *controllers, run, render ? &trajectory : nullptr);
+  rec.extra = EvaluateExtra(*spec, (*sim)->catalog(), (*sim)->BodyPoints((*sim)->data(), 0));
+  rec.success = rec.result.success && rec.extra.pass;
+  rec.scene = world::SceneToJson(spec->scene);
+  rec.plan = spec->plan;
+  if (render) {
+    ReplayOptions replay;
+    replay.sheet_path =
+        (std::filesystem::path(options.out_dir) / ("ep" + std::to_string(index) + ".png")).string();
+    absl::Status rs = RenderReplay(**sim, *chain, trajectory, replay);
+    if (rs.ok()) {
+      rec.sheet_path = replay.sheet_path;
+    } else {
+      rec.render_error = std::string(rs.message());
+    }
+  }
+  return rec;
+}
+
+core::StatusOr<Summary> RunEval(const EvalOptions& options, const EpisodeCallback& on_episode) {
+  std::error_code ec;
+  std::filesystem::create_directories(options.out_dir, ec);
+  if (ec) {
+    return absl::PermissionDeniedError("cannot create output directory '" + options.out_dir +
+                                       "': " + ec.message());
+  }
+  const std::string jsonl = (std::filesystem::path(options.out_dir) / "episodes.jsonl").string();
+  const std::string summary_path =
+      (std::filesystem::path(options.out_dir) / "summary.json").string();
+  std::ofstream lines(jsonl, std::ios::trunc);
+  if (!lines) {
+    return absl::PermissionDeniedError("cannot write '" + jsonl + "': " + std::strerror(errno));
+  }
+  const std::string suite(SuiteName(options.suite));
+  std::vector<EpisodeRecord> records;
+  Summary summary = Summarize(suite, records, options.episodes);
+  SH_RETURN_IF_ERROR(WriteJsonFile(summary_path, SummaryJson(summary, options)));
+  for (int i = 0; i < options.episodes; ++i) {
+    SH_ASSIGN_OR_RETURN(EpisodeRecord rec, RunSuiteEpisode(options, i));
+    lines << EpisodeRecordJson(rec).dump(-1, ' ', false,
+                                         nlohmann::ordered_json::error_handler_t::replace)
+          << '\n';
+    lines.flush();
+    if (!lines) return absl::DataLossError("error writing '" + jsonl + "'");
+    records.push_back(std::move(rec));
+    summary = Summarize(suite, records, options.episodes);
+    SH_RETURN_IF_ERROR(WriteJsonFile(summary_path, SummaryJson(summary, options)));
+    if (on_episode) on_episode(records.back(), summary);
+  }
+  return summary;
+}
+
+}  // namespace simhuman::eval

@@ -1,0 +1,89 @@
+#pragma once
+/// `simhuman eval` without the printing: runs a suite's seeded, independent episodes, appends
+/// one JSON line per finished episode to DIR/episodes.jsonl (flushed at once) and rewrites
+/// DIR/summary.json after every episode, so an interrupted eval keeps what finished. Formats
+/// in docs/FORMATS_run.md, protocols in docs/EVAL_PROTOCOLS.md.
+
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "simhuman/control/mpc/mpc_config.h"
+#include "simhuman/control/runner.h"
+#include "simhuman/core/status.h"
+#include "simhuman/eval/suites.h"
+
+namespace simhuman::eval {
+
+/// One finished episode.
+struct EpisodeRecord {
+  int index = 0;                  ///< 0-based episode number
+  uint64_t seed = 0;              ///< episode seed: DeriveSeed(eval seed, index)
+  std::string variant;            ///< EpisodeSpec::variant
+  control::EpisodeResult result;  ///< result.success is the plan's own success
+  ExtraResult extra;
+  bool success = false;      ///< plan success and the extra check
+  std::string sheet_path;    ///< contact sheet written for this episode, if any
+  std::string render_error;  ///< why the contact sheet could not be written, if it failed
+  nlohmann::json scene;      ///< world::SceneToJson of the episode's scene
+  nlohmann::json plan;       ///< the episode's plan
+};
+
+/// Aggregates over finished episodes.
+struct Summary {
+  std::string suite;
+  int episodes = 0;  ///< finished
+  int episodes_requested = 0;
+  double success_rate = 0;                ///< share of finished episodes with `success`
+  std::optional<double> contact_error_m;  ///< mean over episodes that recorded one
+  double success_steps = 0;               ///< mean steps completed
+  double steps_total = 0;                 ///< mean steps of the plans
+  double fall_rate = 0;
+  double extra_pass_rate = 0;  ///< share passing the suite's extra check (1 without one)
+  double wall_per_sim = 0;     ///< total wall time / total simulated time
+  double sim_time_s = 0;       ///< total
+  double wall_time_s = 0;      ///< total
+};
+
+/// Aggregates `records` (finished episodes) of `suite`.
+Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& records,
+                  int episodes_requested);
+
+/// One line of episodes.jsonl: episode, seed, variant, success, plan_success, the
+/// EpisodeResultJson() fields, the extra metric (when the suite has one), scene and plan.
+nlohmann::ordered_json EpisodeRecordJson(const EpisodeRecord& record);
+
+/// What to run.
+struct EvalOptions {
+  Suite suite = Suite::kSit;
+  int episodes = 10;
+  uint64_t seed = 1;
+  std::string out_dir;
+  control::MpcConfig config;
+  /// Every K-th episode (0, K, 2K, ...) is recorded and its contact sheet rendered to
+  /// DIR/ep<i>.png; 0 renders none.
+  int video_every = 0;
+};
+
+/// summary.json: suite, episodes, episodes_requested, success_rate, contact_error_m (null when
+/// none), success_steps, fall_rate, wall_per_sim, seed, preset, config, git_revision,
+/// mujoco_version, and the extra fields of Summary.
+nlohmann::ordered_json SummaryJson(const Summary& summary, const EvalOptions& options);
+
+/// Runs episode `index` of `options` (no files written except its contact sheet).
+/// Errors: Internal when the generated episode cannot be set up (a suite bug or a world/
+/// change), naming the suite, episode and seed.
+core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int index);
+
+/// Called after every finished episode with its record and the summary so far.
+using EpisodeCallback = std::function<void(const EpisodeRecord&, const Summary&)>;
+
+/// Runs options.episodes episodes in order. Creates out_dir, truncates DIR/episodes.jsonl, and
+/// writes both files as described above. Errors: files that cannot be written (named), and
+/// RunSuiteEpisode's errors; what finished before an error stays written.
+core::StatusOr<Summary> RunEval(const EvalOptions& options, const EpisodeCallback& on_episode);
+
+}  // namespace simhuman::eval

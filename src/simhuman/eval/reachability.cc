@@ -1,0 +1,97 @@
+#include "simhuman/eval/reachability.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <set>
+#include <utility>
+
+#include "simhuman/core/geometry.h"
+
+namespace simhuman::eval {
+namespace {
+
+std::string Metres(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.1f", v);
+  return buf;
+}
+
+// horizontal distance from (x, y) to the nearest point of the part's solids at the object's pose
+double HorizontalDistance(const core::CatalogObject& object, const core::CatalogPart& part,
+                          const Eigen::Vector2d& xy) {
+  std::vector<core::Shape> world;
+  for (const core::Shape& s : part.shapes) {
+    core::Shape w = s;
+    w.pose = object.pose.Compose(s.pose);
+    world.push_back(w);
+  }
+  auto [lo, hi] = core::ShapesBounds(world);
+  // probe at the part's mid height, so the nearest point differs only horizontally for the
+  // upright solids our objects are made of
+  Eigen::Vector3d probe(xy.x(), xy.y(), 0.5 * (lo.z() + hi.z()));
+  Eigen::Vector3d nearest = core::NearestPointOnShapes(part.shapes, object.pose, probe);
+  return (nearest - probe).head<2>().norm();
+}
+
+}  // namespace
+
+absl::Status CheckWithinReach(const plan::ContactChain& chain, const core::SceneCatalog& scene,
+                              const std::vector<world::HumanSpec>& humans, double max_reach_m) {
+  std::set<std::pair<int, std::string>> approached;  // (agent, object id)
+  for (size_t s = 0; s < chain.steps.size(); ++s) {
+    const plan::ContactStep& step = chain.steps[s];
+    // nearest checked part per (agent, object) in this step
+    struct Nearest {
+      double distance_m = std::numeric_limits<double>::infinity();
+      std::string part;
+    };
+    std::vector<std::pair<std::pair<int, std::string>, Nearest>> checks;
+    std::set<std::pair<int, std::string>> closing;  // get-close pairs of this step
+    for (const plan::ContactPair& pair : step.pairs) {
+      std::pair<int, std::string> key(pair.agent, pair.object);
+      if (pair.IsGetClose()) {
+        closing.insert(key);
+        continue;
+      }
+      if (pair.type != plan::ContactType::kContact || pair.part_joint) continue;
+      if (approached.count(key)) continue;
+      const core::CatalogObject* object = scene.Find(pair.object);
+      const core::CatalogPart* part = object ? object->FindPart(pair.part) : nullptr;
+      if (part == nullptr || pair.agent < 0 || pair.agent >= static_cast<int>(humans.size())) {
+        return absl::InvalidArgumentError("plan is not grounded against the scene at " +
+                                          pair.where + " (object '" + pair.object + "', part '" +
+                                          pair.part + "')");
+      }
+      double d = HorizontalDistance(*object, *part, humans[pair.agent].pos_xy);
+      auto it =
+          std::find_if(checks.begin(), checks.end(), [&](const auto& c) { return c.first == key; });
+      if (it == checks.end()) {
+        checks.push_back({key, {d, part->name}});
+      } else if (d < it->second.distance_m) {
+        it->second = {d, part->name};
+      }
+    }
+    for (const auto& [key, nearest] : checks) {
+      if (closing.count(key)) continue;
+      double limit = max_reach_m * humans[key.first].scale;
+      if (nearest.distance_m > limit) {
+        std::string n = std::to_string(s + 1);
+        std::string where = step.where.empty() ? "/steps/" + std::to_string(s) : step.where;
+        std::string prefix = chain.source.empty() ? std::string() : chain.source + ": ";
+        return absl::InvalidArgumentError(
+            prefix + "step " + n + " (" + where + "): object '" + key.second + "' (part '" +
+            nearest.part + "') is " + Metres(nearest.distance_m) + " m from human " +
+            std::to_string(key.first) + " and no get-close step precedes step " + n +
+            "; walking is not implemented yet: start the human within " + Metres(limit) +
+            " m of it, or add a get-close step for '" + key.second + "' before step " + n);
+      }
+    }
+    for (const auto& c : checks) approached.insert(c.first);
+    approached.insert(closing.begin(), closing.end());
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace simhuman::eval

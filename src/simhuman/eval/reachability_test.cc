@@ -1,0 +1,116 @@
+#include "simhuman/eval/reachability.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "simhuman/plan/validate.h"
+
+namespace simhuman::eval {
+namespace {
+
+using ::testing::HasSubstr;
+
+// a bed whose front (long side, +x local) faces world +x with its front face at x = front_m,
+// and one human at the origin of scale `scale`
+struct Setup {
+  world::SceneSpec spec;
+  core::SceneCatalog catalog;
+};
+
+Setup BedScene(double bed_x, double human_scale = 1.0) {
+  Setup s;
+  world::ObjectSpec bed;
+  bed.id = "bed000";
+  bed.type = "bed";
+  bed.pos = Eigen::Vector3d(bed_x, 0, 0);
+  bed.yaw_rad = M_PI;  // front (+x local) towards the human at the origin
+  s.spec.objects = {bed};
+  world::HumanSpec h;
+  h.scale = human_scale;
+  s.spec.humans = {h};
+  core::StatusOr<core::SceneCatalog> c = world::BuildCatalog(s.spec);
+  EXPECT_TRUE(c.ok()) << c.status();
+  if (c.ok()) s.catalog = *c;
+  return s;
+}
+
+// the front face of the default bed (width 1.5) is 0.75 m from its origin
+constexpr double kHalfWidth = 0.75;
+
+absl::Status Check(const Setup& s, const std::string& plan_json) {
+  core::StatusOr<plan::ContactChain> chain =
+      plan::ParseAndGround(plan_json, "plan.json", s.catalog);
+  EXPECT_TRUE(chain.ok()) << chain.status();
+  if (!chain.ok()) return chain.status();
+  return CheckWithinReach(*chain, s.catalog, s.spec.humans);
+}
+
+const char kLie[] = R"([
+  [["bed000", "mattress", "pelvis", "contact", "up"], ["bed000", "pillow", "head", "not contact", "up"]],
+  [["bed000", "mattress", "pelvis", "contact", "up"], ["bed000", "pillow", "head", "contact", "up"]]
+])";
+
+TEST(ReachabilityTest, NearObjectPasses) {
+  // mattress 0.4 m away; the pillow of step 2 is farther, but the bed was reached in step 1
+  EXPECT_TRUE(Check(BedScene(0.4 + kHalfWidth), kLie).ok());
+}
+
+TEST(ReachabilityTest, FarObjectNamesObjectDistanceAndStep) {
+  absl::Status st = Check(BedScene(3.2 + kHalfWidth), kLie);
+  ASSERT_FALSE(st.ok());
+  EXPECT_EQ(st.code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_THAT(st.message(), HasSubstr("plan.json: step 1 (/0): object 'bed000' (part 'mattress') "
+                                      "is 3.2 m from human 0 and no get-close step precedes "
+                                      "step 1; walking is not implemented yet"));
+}
+
+TEST(ReachabilityTest, LaterFirstContactIsReportedWithItsStep) {
+  const char plan[] = R"({"steps": [
+    {"pairs": [{"object": "bed000", "part": "mattress", "joint": "pelvis",
+                "contact": "not contact", "direction": "up"}]},
+    {"pairs": [{"object": "bed000", "part": "mattress", "joint": "pelvis",
+                "contact": "contact", "direction": "up"}]}]})";
+  absl::Status st = Check(BedScene(2.0 + kHalfWidth), plan);
+  ASSERT_FALSE(st.ok());
+  EXPECT_THAT(st.message(), HasSubstr("step 2 (/steps/1)"));
+  EXPECT_THAT(st.message(), HasSubstr("is 2.0 m from human 0"));
+}
+
+TEST(ReachabilityTest, GetCloseStepBeforeAllowsFarObjects) {
+  const char plan[] = R"([
+    [["bed000", "none", "none", "none", "front"]],
+    [["bed000", "mattress", "pelvis", "contact", "up"]]
+  ])";
+  EXPECT_TRUE(Check(BedScene(3.2 + kHalfWidth), plan).ok());
+}
+
+TEST(ReachabilityTest, NotContactAndNotCarePairsAreNotChecked) {
+  const char plan[] = R"([
+    [["bed000", "mattress", "pelvis", "not contact", "up"],
+     ["bed000", "pillow", "head", "not care", "none"]]
+  ])";
+  EXPECT_TRUE(Check(BedScene(3.2 + kHalfWidth), plan).ok());
+}
+
+TEST(ReachabilityTest, OneNearPairOfAStepIsEnough) {
+  // the pillow is 0.05 m from the bed's long edge on the far side of the mattress, but the
+  // mattress in the same step is near
+  const char plan[] = R"([
+    [["bed000", "pillow", "head", "contact", "up"], ["bed000", "mattress", "pelvis", "contact", "up"]]
+  ])";
+  EXPECT_TRUE(Check(BedScene(0.9 + kHalfWidth), plan).ok());
+  const char pillow_only[] = R"([[["bed000", "pillow", "head", "contact", "up"]]])";
+  absl::Status st = Check(BedScene(0.9 + kHalfWidth), pillow_only);
+  ASSERT_FALSE(st.ok());
+  EXPECT_THAT(st.message(), HasSubstr("(part 'pillow')"));
+}
+
+TEST(ReachabilityTest, LimitScalesWithTheHuman) {
+  EXPECT_TRUE(Check(BedScene(0.9 + kHalfWidth), kLie).ok());
+  absl::Status child = Check(BedScene(0.9 + kHalfWidth, 0.7), kLie);
+  ASSERT_FALSE(child.ok());
+  EXPECT_THAT(child.message(), HasSubstr("within 0.7 m"));
+}
+
+}  // namespace
+}  // namespace simhuman::eval

@@ -1,0 +1,301 @@
+#include "simhuman/eval/suites.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "simhuman/core/geometry.h"
+#include "simhuman/core/rng.h"
+#include "simhuman/world/objects.h"
+
+namespace simhuman::eval {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kDegToRad = M_PI / 180.0;
+constexpr double kTwoPi = 2.0 * M_PI;
+
+// seat types of the sit suite (and the chair-type variant of sceneplan-simple)
+const char* const kSeatTypes[] = {"chair", "armchair", "sofa", "stool", "high_stool"};
+constexpr int kNumSeatTypes = 5;
+
+// sit protocol
+constexpr double kSitFrontLoM = 0.30, kSitFrontHiM = 0.50;
+constexpr double kSitLateralM = 0.08;
+constexpr double kSofaLateralM = 0.5;
+constexpr double kYawJitterDeg = 15.0;
+// lie protocol
+constexpr double kLieFrontLoM = 0.30, kLieFrontHiM = 0.45;
+constexpr double kLieLateralM = 0.15;
+// reach protocol (human frame: x forward, y left)
+constexpr double kReachForwardLoM = 0.25, kReachForwardHiM = 0.55;
+constexpr double kReachLateralInM = 0.10;   // across the body, towards the other hand
+constexpr double kReachLateralOutM = 0.35;  // out to the reaching hand's side
+constexpr double kReachHeightLoM = 0.7, kReachHeightHiM = 1.5;
+// sceneplan-simple chair variant: a start facing the object, a little beyond its stand point
+constexpr double kApproachLoM = 0.55, kApproachHiM = 0.85;
+constexpr double kApproachLateralM = 0.25;
+constexpr double kApproachYawJitterDeg = 20.0;
+
+json Pair(const std::string& object, const std::string& part, const std::string& joint,
+          const std::string& contact, const std::string& direction) {
+  return {{"object", object},
+          {"part", part},
+          {"joint", joint},
+          {"contact", contact},
+          {"direction", direction}};
+}
+
+json GetClose(const std::string& object, const std::string& side) {
+  return {{"object", object}, {"part", "none"}, {"joint", "none"}, {"direction", side}};
+}
+
+json Step(const std::string& label, std::vector<json> pairs) {
+  return {{"label", label}, {"pairs", pairs}};
+}
+
+json Plan(std::vector<json> steps) { return {{"steps", steps}}; }
+
+// world xy of a point given in the frame of an object at `pos` turned by `yaw`
+Eigen::Vector2d LocalToWorld(const Eigen::Vector3d& pos, double yaw, double x, double y) {
+  return pos.head<2>() + Eigen::Vector2d(std::cos(yaw) * x - std::sin(yaw) * y,
+                                         std::sin(yaw) * x + std::cos(yaw) * y);
+}
+
+double WrapAngle(double a) {
+  a = std::remainder(a, kTwoPi);
+  return a <= -M_PI ? a + kTwoPi : a;
+}
+
+// a random object of `type` at the origin with a uniform yaw, built to read its bounds
+core::Status RandomObject(const std::string& type, core::Rng& rng, world::ObjectSpec* spec,
+                          core::CatalogObject* built) {
+  *spec = world::RandomObjectSpec(type, rng);
+  spec->pos = Eigen::Vector3d::Zero();
+  spec->yaw_rad = WrapAngle(rng.Uniform(0.0, kTwoPi));
+  core::StatusOr<core::CatalogObject> obj = world::BuildObject(*spec);
+  if (!obj.ok()) {
+    return absl::InternalError("eval suite: cannot build a random " + type + ": " +
+                               std::string(obj.status().message()));
+  }
+  *built = *std::move(obj);
+  return absl::OkStatus();
+}
+
+// the y centre of a part's bounds in the object frame
+double PartCentreY(const core::CatalogObject& obj, const std::string& part) {
+  const core::CatalogPart* p = obj.FindPart(part);
+  if (p == nullptr) return 0.0;
+  auto [lo, hi] = core::ShapesBounds(p->shapes);
+  return 0.5 * (lo.y() + hi.y());
+}
+
+json SitStep(const std::string& id) {
+  return Step("sit on " + id, {Pair(id, "seat surface", "pelvis", "contact", "up")});
+}
+
+// sit: back to the seat, 0.30-0.50 m in front of its front face
+core::Status MakeSit(core::Rng& rng, EpisodeSpec* out) {
+  std::string type = kSeatTypes[rng.UniformInt(0, kNumSeatTypes - 1)];
+  world::ObjectSpec o;
+  core::CatalogObject built;
+  SH_RETURN_IF_ERROR(RandomObject(type, rng, &o, &built));
+  auto [lo, hi] = built.LocalBounds();
+  double front = hi.x() + rng.Uniform(kSitFrontLoM, kSitFrontHiM);
+  double lateral_m = type == "sofa" ? kSofaLateralM : kSitLateralM;
+  double lateral = 0.5 * (lo.y() + hi.y()) + rng.Uniform(-lateral_m, lateral_m);
+  double jitter = rng.Uniform(-kYawJitterDeg, kYawJitterDeg) * kDegToRad;
+  world::HumanSpec h;
+  h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, front, lateral);
+  h.yaw_rad = WrapAngle(o.yaw_rad + jitter);
+  out->variant = type;
+  out->object_id = o.id;
+  out->scene.objects = {o};
+  out->scene.humans = {h};
+  out->plan = Plan({SitStep(o.id)});
+  return absl::OkStatus();
+}
+
+void LieSteps(const std::string& id, std::vector<json>* steps) {
+  steps->push_back(
+      Step("sit on the edge of " + id, {Pair(id, "mattress", "pelvis", "contact", "up"),
+                                        Pair(id, "pillow", "head", "not contact", "up")}));
+  steps->push_back(Step("lie down on " + id, {Pair(id, "mattress", "pelvis", "contact", "up"),
+                                              Pair(id, "pillow", "head", "contact", "up")}));
+}
+
+// lie: back to the bed's long side (its front), near the middle of the mattress
+core::Status MakeLie(core::Rng& rng, EpisodeSpec* out) {
+  world::ObjectSpec o;
+  core::CatalogObject built;
+  SH_RETURN_IF_ERROR(RandomObject("bed", rng, &o, &built));
+  auto [lo, hi] = built.LocalBounds();
+  double front = hi.x() + rng.Uniform(kLieFrontLoM, kLieFrontHiM);
+  double lateral = PartCentreY(built, "mattress") + rng.Uniform(-kLieLateralM, kLieLateralM);
+  double jitter = rng.Uniform(-kYawJitterDeg, kYawJitterDeg) * kDegToRad;
+  world::HumanSpec h;
+  h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, front, lateral);
+  h.yaw_rad = WrapAngle(o.yaw_rad + jitter);
+  out->variant = "bed";
+  out->object_id = o.id;
+  out->scene.objects = {o};
+  out->scene.humans = {h};
+  std::vector<json> steps;
+  LieSteps(o.id, &steps);
+  out->plan = Plan(steps);
+  return absl::OkStatus();
+}
+
+// reach: a marker point in front of a standing human, on the reaching hand's side
+core::Status MakeReach(core::Rng& rng, EpisodeSpec* out) {
+  world::HumanSpec h;
+  h.yaw_rad = WrapAngle(rng.Uniform(0.0, kTwoPi));
+  bool left = rng.Uniform() < 0.5;
+  double side = left ? 1.0 : -1.0;  // the human's left is its +y
+  double forward = rng.Uniform(kReachForwardLoM, kReachForwardHiM);
+  double lateral = side * rng.Uniform(-kReachLateralInM, kReachLateralOutM);
+  double height = rng.Uniform(kReachHeightLoM, kReachHeightHiM);
+  world::ObjectSpec m;
+  m.id = std::string(kMarkerType) + "000";
+  m.type = kMarkerType;
+  Eigen::Vector2d xy =
+      LocalToWorld(Eigen::Vector3d(h.pos_xy.x(), h.pos_xy.y(), 0), h.yaw_rad, forward, lateral);
+  m.pos = Eigen::Vector3d(xy.x(), xy.y(), height);
+  std::string hand = left ? "left hand" : "right hand";
+  out->variant = hand;
+  out->object_id = m.id;
+  out->joint = left ? core::BodyJoint::kLeftHand : core::BodyJoint::kRightHand;
+  out->scene.objects = {m};
+  out->scene.humans = {h};
+  out->plan = Plan({Step("touch " + m.id + " with the " + hand,
+                         {Pair(m.id, kMarkerPart, hand, "contact", "none")})});
+  out->extra = ExtraCheck::kHandAtPoint;
+  return absl::OkStatus();
+}
+
+// sceneplan-simple: a chair-type object ([get close front], [sit]) or a bed ([sit on edge],
+// [lie])
+core::Status MakeScenePlanSimple(core::Rng& rng, EpisodeSpec* out) {
+  if (rng.Uniform() < 0.5) {
+    SH_RETURN_IF_ERROR(MakeLie(rng, out));
+    out->variant = "bed: sit on edge, lie";
+    return absl::OkStatus();
+  }
+  std::string type = kSeatTypes[rng.UniformInt(0, kNumSeatTypes - 1)];
+  world::ObjectSpec o;
+  core::CatalogObject built;
+  SH_RETURN_IF_ERROR(RandomObject(type, rng, &o, &built));
+  auto [lo, hi] = built.LocalBounds();
+  double front = hi.x() + rng.Uniform(kApproachLoM, kApproachHiM);
+  double lateral = 0.5 * (lo.y() + hi.y()) + rng.Uniform(-kApproachLateralM, kApproachLateralM);
+  double jitter = rng.Uniform(-kApproachYawJitterDeg, kApproachYawJitterDeg) * kDegToRad;
+  world::HumanSpec h;
+  h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, front, lateral);
+  h.yaw_rad = WrapAngle(o.yaw_rad + M_PI + jitter);  // facing the object
+  out->variant = type + ": get close, sit";
+  out->object_id = o.id;
+  out->scene.objects = {o};
+  out->scene.humans = {h};
+  out->plan = Plan({Step("get close to " + o.id, {GetClose(o.id, "front")}), SitStep(o.id)});
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+std::vector<std::string> SuiteNames() { return {"sit", "lie", "reach", "sceneplan-simple"}; }
+
+std::string_view SuiteName(Suite suite) {
+  switch (suite) {
+    case Suite::kSit:
+      return "sit";
+    case Suite::kLie:
+      return "lie";
+    case Suite::kReach:
+      return "reach";
+    case Suite::kScenePlanSimple:
+      return "sceneplan-simple";
+  }
+  return "?";
+}
+
+std::optional<Suite> ParseSuite(std::string_view name) {
+  for (Suite s : {Suite::kSit, Suite::kLie, Suite::kReach, Suite::kScenePlanSimple}) {
+    if (SuiteName(s) == name) return s;
+  }
+  return std::nullopt;
+}
+
+core::StatusOr<EpisodeSpec> MakeEpisodeSpec(Suite suite, uint64_t seed) {
+  core::Rng rng(core::DeriveSeed(seed, kSceneStream));
+  EpisodeSpec spec;
+  spec.suite = suite;
+  spec.seed = seed;
+  spec.scene.name = std::string(SuiteName(suite)) + "_" + std::to_string(seed);
+  switch (suite) {
+    case Suite::kSit:
+      SH_RETURN_IF_ERROR(MakeSit(rng, &spec));
+      break;
+    case Suite::kLie:
+      SH_RETURN_IF_ERROR(MakeLie(rng, &spec));
+      spec.extra = ExtraCheck::kLieAlongBed;
+      break;
+    case Suite::kReach:
+      SH_RETURN_IF_ERROR(MakeReach(rng, &spec));
+      break;
+    case Suite::kScenePlanSimple:
+      SH_RETURN_IF_ERROR(MakeScenePlanSimple(rng, &spec));
+      break;
+  }
+  return spec;
+}
+
+ExtraResult EvaluateExtra(const EpisodeSpec& spec, const core::SceneCatalog& scene,
+                          const BodyPointArray& pts) {
+  ExtraResult r;
+  if (spec.extra == ExtraCheck::kNone) return r;
+  const core::CatalogObject* obj = scene.Find(spec.object_id);
+  const double scale = spec.scene.humans.empty() ? 1.0 : spec.scene.humans[0].scale;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  switch (spec.extra) {
+    case ExtraCheck::kNone:
+      break;
+    case ExtraCheck::kLieAlongBed: {
+      r.metric = "lie_axis_error_deg";
+      r.pass = false;
+      r.value = nan;
+      if (obj == nullptr) return r;
+      Eigen::Vector3d axis = obj->pose.quat * Eigen::Vector3d::UnitY();
+      Eigen::Vector2d a = axis.head<2>();
+      Eigen::Vector3d span = pts[static_cast<int>(core::BodyJoint::kHead)] -
+                             pts[static_cast<int>(core::BodyJoint::kPelvis)];
+      Eigen::Vector2d s = span.head<2>();
+      if (a.norm() < 1e-9 || s.norm() < 1e-9) {
+        r.value = 180.0;
+        return r;
+      }
+      double c = std::clamp(a.normalized().dot(s.normalized()), -1.0, 1.0);
+      r.value = std::acos(c) / kDegToRad;
+      r.pass = r.value <= kLieAxisTolDeg && s.norm() >= kLieMinSpanM * scale;
+      break;
+    }
+    case ExtraCheck::kHandAtPoint: {
+      r.metric = "hand_distance_m";
+      r.pass = false;
+      r.value = nan;
+      if (obj == nullptr) return r;
+      const core::CatalogPart* part = obj->FindPart(kMarkerPart);
+      Eigen::Vector3d point = obj->pose.pos;
+      if (part != nullptr && !part->shapes.empty()) {
+        auto [lo, hi] = core::ShapesBounds(part->shapes);
+        point = obj->pose.Apply(0.5 * (lo + hi));
+      }
+      r.value = (pts[static_cast<int>(spec.joint)] - point).norm();
+      r.pass = r.value <= kReachTolM;
+      break;
+    }
+  }
+  return r;
+}
+
+}  // namespace simhuman::eval

@@ -1,0 +1,90 @@
+#pragma once
+/// The benchmark suites of `simhuman eval`: randomized, seeded episode generators (the protocols
+/// are documented in docs/EVAL_PROTOCOLS.md) and the success checks some suites add to the plan's
+/// own (UniHSI's step completion).
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "simhuman/core/body_joint.h"
+#include "simhuman/core/status.h"
+#include "simhuman/world/scene.h"
+
+namespace simhuman::eval {
+
+/// One benchmark suite.
+enum class Suite { kSit, kLie, kReach, kScenePlanSimple };
+
+/// "sit", "lie", "reach", "sceneplan-simple", in enum order.
+std::vector<std::string> SuiteNames();
+/// The name of `suite`.
+std::string_view SuiteName(Suite suite);
+/// The suite called `name` (exact, lower case); nullopt when unknown.
+std::optional<Suite> ParseSuite(std::string_view name);
+
+/// A success condition an episode checks at its end, beyond the plan's own.
+enum class ExtraCheck {
+  kNone,
+  /// lie: the horizontal pelvis -> head direction lies within kLieAxisTolDeg of the bed's long
+  /// axis pointing to the pillow end (the bed's local +y, world/objects.h).
+  kLieAlongBed,
+  /// reach: the hand (EpisodeSpec::joint) is within kReachTolM of the marker's point.
+  kHandAtPoint,
+};
+
+/// The lie suite's alignment tolerance (degrees).
+inline constexpr double kLieAxisTolDeg = 30.0;
+/// Below this horizontal pelvis-to-head length (m, times the human's scale) the body is upright
+/// and has no lying direction: the lie check fails.
+inline constexpr double kLieMinSpanM = 0.25;
+/// The reach suite's final hand-to-point tolerance (m); stricter than the plan's 0.1 m.
+inline constexpr double kReachTolM = 0.05;
+/// The object type and part the reach suite's target uses (a small non-colliding sphere).
+inline constexpr char kMarkerType[] = "marker";
+inline constexpr char kMarkerPart[] = "point";
+
+/// One generated episode: a scene with one human, a plan and an optional extra check. Plain data.
+struct EpisodeSpec {
+  Suite suite = Suite::kSit;
+  uint64_t seed = 0;  ///< the episode seed it was generated from
+  std::string
+      variant;  ///< what was drawn, e.g. "sofa", "bed", "left hand", "chair: get close, sit"
+  world::SceneSpec scene;
+  nlohmann::json plan;  ///< simhuman plan form (plan/contact_chain.h)
+  ExtraCheck extra = ExtraCheck::kNone;
+  std::string object_id;  ///< the suite's object (the bed for kLieAlongBed, the marker, ...)
+  core::BodyJoint joint = core::BodyJoint::kPelvis;  ///< the reaching hand for kHandAtPoint
+};
+
+/// The episode of `suite` for episode seed `seed` (the eval uses DeriveSeed(run seed, i) for
+/// episode i). A pure function: the same arguments give the same spec, whatever else ran
+/// before. Draws come from core::Rng(core::DeriveSeed(seed, kSceneStream)). Errors (Internal)
+/// only when an object of the protocol cannot be built (a world/ change broke a size range).
+core::StatusOr<EpisodeSpec> MakeEpisodeSpec(Suite suite, uint64_t seed);
+
+/// The seed stream MakeEpisodeSpec() draws scenes from (controllers use other streams).
+inline constexpr uint64_t kSceneStream = 0;
+
+/// The outcome of an extra check.
+struct ExtraResult {
+  bool pass = true;
+  std::string metric;  ///< "lie_axis_error_deg", "hand_distance_m"; empty for kNone
+  double value = 0;    ///< the measured value of `metric`
+};
+
+/// The 15 body points of one human, indexed by static_cast<int>(core::BodyJoint).
+using BodyPointArray = std::array<Eigen::Vector3d, core::kNumBodyJoints>;
+
+/// Evaluates `spec.extra` for the human whose body points are `points` (world frame, at the
+/// end of the episode) in `scene` (the catalog built from spec.scene; spec.object_id is looked
+/// up there). kNone passes. A missing object fails the check (metric value NaN). Pure.
+ExtraResult EvaluateExtra(const EpisodeSpec& spec, const core::SceneCatalog& scene,
+                          const BodyPointArray& points);
+
+}  // namespace simhuman::eval

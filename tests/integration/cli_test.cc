@@ -1,0 +1,283 @@
+// Runs the built `simhuman` executable (SIMHUMAN_BIN) as a subprocess: a short sit plan end to
+// end, and every bad-input case of issue 2 (exit code 2, a one-line message naming the culprit
+// on stderr, never a signal such as a core dump).
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace {
+
+const std::string kSource = SIMHUMAN_SOURCE_DIR;
+const std::string kData = kSource + "/tests/data/app/";
+
+struct Proc {
+  int exit_code = -1;  // -1 when killed by a signal
+  int signal = 0;
+  std::string out, err;
+};
+
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string TempDir(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("simhuman_it_" + name);
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+// runs SIMHUMAN_BIN with `args` in the temp folder, stdin from /dev/null, with `env` added to
+// the environment
+Proc RunBin(const std::vector<std::string>& args, const std::vector<std::string>& env = {}) {
+  static int counter = 0;
+  std::string base = (std::filesystem::temp_directory_path() /
+                      ("simhuman_it_" + std::to_string(getpid()) + "_" + std::to_string(counter++)))
+                         .string();
+  std::string out_path = base + ".out", err_path = base + ".err";
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&fa, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> all = {SIMHUMAN_BIN};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  // in a scratch folder, so a default output folder never lands in the build tree
+  std::string cwd = std::filesystem::temp_directory_path().string();
+  posix_spawn_file_actions_addchdir_np(&fa, cwd.c_str());
+  pid_t pid = -1;
+  std::vector<std::string> env_all = env;
+  for (char** e = environ; *e != nullptr; ++e) env_all.push_back(*e);
+  std::vector<char*> envp;
+  for (std::string& e : env_all) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  int rc = posix_spawn(&pid, SIMHUMAN_BIN, &fa, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&fa);
+  Proc p;
+  if (rc != 0) {
+    p.err = "posix_spawn failed";
+    return p;
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (WIFEXITED(status)) p.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) p.signal = WTERMSIG(status);
+  p.out = Slurp(out_path);
+  p.err = Slurp(err_path);
+  std::filesystem::remove(out_path);
+  std::filesystem::remove(err_path);
+  return p;
+}
+
+// exit code 2, no signal, one line on stderr containing every needle
+void ExpectBadInput(const Proc& p, const std::vector<std::string>& needles) {
+  EXPECT_EQ(p.signal, 0) << "killed by signal " << p.signal << "\n" << p.err;
+  EXPECT_EQ(p.exit_code, 2) << p.err;
+  ASSERT_FALSE(p.err.empty());
+  EXPECT_EQ(p.err.find('\n'), p.err.size() - 1) << "expected one line:\n" << p.err;
+  for (const std::string& n : needles) EXPECT_NE(p.err.find(n), std::string::npos) << p.err;
+}
+
+Proc RunSitDemo(const std::string& plan, std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"run", "--scene", "sit_demo",    "--plan",
+                                   plan,  "--out",   TempDir("bad")};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return RunBin(args);
+}
+
+TEST(CliIntegrationTest, VersionAndScenes) {
+  Proc v = RunBin({"--version"});
+  EXPECT_EQ(v.exit_code, 0);
+  EXPECT_NE(v.out.find("simhuman "), std::string::npos);
+  Proc s = RunBin({"scenes"});
+  EXPECT_EQ(s.exit_code, 0);
+  EXPECT_NE(s.out.find("sit_demo"), std::string::npos);
+}
+
+// a one-step sit plan on the built-in sit_demo: a few seconds of simulation
+TEST(CliIntegrationTest, SitDemoEndToEnd) {
+  std::string out = TempDir("sit_demo");
+  Proc p = RunBin({"run", "--scene", "sit_demo", "--plan", kData + "sit_only.json", "--out", out,
+                   "--settle", "0.2", "--seed", "3"});
+  ASSERT_EQ(p.signal, 0) << p.err;
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  EXPECT_NE(p.out.find("step 1/1 'sit on chair000'"), std::string::npos) << p.out;
+  EXPECT_NE(p.out.find("success: "), std::string::npos) << p.out;
+
+  std::ifstream in(out + "/result.json");
+  ASSERT_TRUE(in.good());
+  nlohmann::json r = nlohmann::json::parse(in);
+  for (const char* key :
+       {"success", "steps_completed", "steps_total", "contact_error_m", "fell", "end_reason",
+        "sim_time_s", "wall_time_s", "wall_per_sim", "seed", "preset", "scene", "plan", "config",
+        "git_revision", "mujoco_version", "step_completion_s"}) {
+    EXPECT_TRUE(r.contains(key)) << key;
+  }
+  EXPECT_TRUE(r["success"].is_boolean());
+  EXPECT_TRUE(r["fell"].is_boolean());
+  EXPECT_EQ(r["steps_total"], 1);
+  EXPECT_EQ(r["seed"], 3);
+  EXPECT_EQ(r["scene"], "sit_demo");
+  EXPECT_EQ(r["preset"], "fast");
+  EXPECT_TRUE(r["config"].is_object());
+  EXPECT_TRUE(r["contact_error_m"].is_null() || r["contact_error_m"].is_number());
+  EXPECT_GT(r["sim_time_s"].get<double>(), 0.0);
+
+  // trajectory: header, then rows at ~30 Hz over the episode
+  std::ifstream csv(out + "/trajectory.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("time_s,step,root[0]", 0), 0u) << header;
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_GE(rows, static_cast<int>(r["sim_time_s"].get<double>() * 30) - 1);
+
+  // the run can be repeated from its own records
+  EXPECT_TRUE(std::filesystem::exists(out + "/scene.json"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/plan.json"));
+  Proc again = RunBin({"run", "--scene", out + "/scene.json", "--plan", out + "/plan.json", "--out",
+                       out + "/again", "--settle", "0.2", "--seed", "3"});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  std::ifstream in2(out + "/again/result.json");
+  nlohmann::json r2 = nlohmann::json::parse(in2);
+  EXPECT_EQ(r2["success"], r["success"]);
+  EXPECT_EQ(r2["sim_time_s"], r["sim_time_s"]);
+  EXPECT_EQ(r2["contact_error_m"], r["contact_error_m"]);
+}
+
+// --video: results first; without EGL or ffmpeg the render error exits 1 with result.json kept
+TEST(CliIntegrationTest, SitDemoVideoSlow) {
+  std::string out = TempDir("sit_video");
+  Proc p = RunBin({"run", "--scene", "sit_demo", "--plan", kData + "sit_only.json", "--out", out,
+                   "--settle", "0", "--video"});
+  ASSERT_EQ(p.signal, 0) << p.err;
+  EXPECT_TRUE(std::filesystem::exists(out + "/result.json"));
+  if (p.exit_code == 0) {
+    EXPECT_GT(std::filesystem::file_size(out + "/video.mp4"), 1000u);
+    EXPECT_GT(std::filesystem::file_size(out + "/contact_sheet.png"), 1000u);
+  } else {
+    EXPECT_EQ(p.exit_code, 1) << p.err;
+    EXPECT_NE(p.err.find("rendering the video failed"), std::string::npos) << p.err;
+  }
+}
+
+// no EGL (glvnd finds no vendor library): rendering fails after the results are written
+TEST(CliIntegrationTest, VideoWithoutEglKeepsResultsSlow) {
+  std::string out = TempDir("no_egl");
+  Proc p = RunBin({"run", "--scene", "sit_demo", "--plan", kData + "sit_only.json", "--out", out,
+                   "--settle", "0", "--video"},
+                  {"__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/egl_vendor.json"});
+  ASSERT_EQ(p.signal, 0) << p.err;
+  EXPECT_TRUE(std::filesystem::exists(out + "/result.json"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/trajectory.csv"));
+  if (p.exit_code != 0) {
+    EXPECT_EQ(p.exit_code, 1) << p.err;
+    EXPECT_NE(p.err.find("rendering the video failed (the results are in"), std::string::npos)
+        << p.err;
+    EXPECT_NE(p.out.find("success: "), std::string::npos) << p.out;
+  }
+}
+
+TEST(CliIntegrationTest, MissingSceneFile) {
+  ExpectBadInput(
+      RunBin({"run", "--scene", kData + "no_such_scene.json", "--plan", kData + "sit_only.json"}),
+      {"no_such_scene.json", "not a built-in scene", "no such file"});
+}
+
+TEST(CliIntegrationTest, MalformedSceneJson) {
+  ExpectBadInput(RunBin({"run", "--scene", kData + "malformed_scene_syntax.json", "--plan",
+                         kData + "sit_only.json"}),
+                 {"malformed_scene_syntax.json:5:", "invalid JSON"});
+}
+
+TEST(CliIntegrationTest, UnknownSceneName) {
+  ExpectBadInput(RunBin({"run", "--scene", "castle", "--plan", kData + "sit_only.json"}),
+                 {"'castle'", "living_room", "sit_demo"});
+}
+
+TEST(CliIntegrationTest, MissingAndMalformedPlanFiles) {
+  ExpectBadInput(RunSitDemo(kData + "no_such_plan.json"), {"--plan", "no_such_plan.json"});
+  ExpectBadInput(RunSitDemo(kData + "malformed_plan_syntax.json"),
+                 {"malformed_plan_syntax.json:4:", "invalid JSON"});
+}
+
+TEST(CliIntegrationTest, UnknownObjectPartJoint) {
+  ExpectBadInput(RunSitDemo(kData + "malformed_plan_unknown_object.json"),
+                 {"/steps/0/pairs/0/object", "'chair001'", "valid objects: chair000"});
+  ExpectBadInput(RunSitDemo(kData + "malformed_plan_unknown_part.json"),
+                 {"/steps/0/pairs/0/part", "'headrest'", "seat surface, back surface"});
+  ExpectBadInput(RunSitDemo(kData + "malformed_plan_unknown_joint.json"),
+                 {"/steps/0/pairs/0/joint", "'tail'", "left hand"});
+}
+
+TEST(CliIntegrationTest, NanInConfig) {
+  ExpectBadInput(
+      RunSitDemo(kData + "sit_only.json", {"--config", kData + "malformed_config_nan.json"}),
+      {"malformed_config_nan.json:3:", "NaN"});
+  ExpectBadInput(RunSitDemo(kData + "sit_only.json",
+                            {"--config", kData + "malformed_config_out_of_range.json"}),
+                 {"'samples'", "[2, 1024]"});
+}
+
+TEST(CliIntegrationTest, UnknownFlagAndPreset) {
+  ExpectBadInput(RunSitDemo(kData + "sit_only.json", {"--bogus"}), {"--bogus", "--help"});
+  ExpectBadInput(RunSitDemo(kData + "sit_only.json", {"--preset", "turbo"}),
+                 {"'turbo'", "fast, quality"});
+  ExpectBadInput(RunBin({"eval", "--suite", "dance"}), {"'dance'", "sit, lie, reach"});
+}
+
+TEST(CliIntegrationTest, ObjectTooFarToReach) {
+  std::string out = TempDir("too_far");
+  ExpectBadInput(RunBin({"run", "--scene", kData + "far_bed_scene.json", "--plan",
+                         kData + "malformed_plan_too_far.json", "--out", out}),
+                 {"object 'bed000'", "m from human 0", "no get-close step precedes step 1",
+                  "walking is not implemented yet"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// two sit episodes: the files an eval leaves, one JSON line per episode
+TEST(CliIntegrationTest, EvalSitTwoEpisodes) {
+  std::string out = TempDir("eval_sit");
+  Proc p = RunBin({"eval", "--suite", "sit", "--episodes", "2", "--seed", "5", "--out", out});
+  ASSERT_EQ(p.signal, 0) << p.err;
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  EXPECT_NE(p.out.find("summary"), std::string::npos) << p.out;
+  std::ifstream lines(out + "/episodes.jsonl");
+  std::string line;
+  int n = 0;
+  while (std::getline(lines, line)) {
+    nlohmann::json j = nlohmann::json::parse(line);
+    EXPECT_EQ(j["episode"], n);
+    EXPECT_TRUE(j["success"].is_boolean());
+    EXPECT_TRUE(j["scene"].is_object());
+    ++n;
+  }
+  EXPECT_EQ(n, 2);
+  std::ifstream in(out + "/summary.json");
+  nlohmann::json s = nlohmann::json::parse(in);
+  EXPECT_EQ(s["suite"], "sit");
+  EXPECT_EQ(s["episodes"], 2);
+  for (const char* key : {"success_rate", "contact_error_m", "success_steps", "fall_rate",
+                          "wall_per_sim", "seed", "preset", "config", "git_revision"}) {
+    EXPECT_TRUE(s.contains(key)) << key;
+  }
+}
+
+}  // namespace
