@@ -4,8 +4,8 @@
 
 namespace simhuman::control {
 
-void BuildHeightmap(const core::SceneCatalog& scene, const Eigen::Vector3d& pelvis,
-                    double yaw_rad, int size, double cell_m, std::vector<float>* out) {
+void BuildHeightmap(const core::SceneCatalog& scene, const Eigen::Vector3d& pelvis, double yaw_rad,
+                    int size, double cell_m, std::vector<float>* out) {
   out->assign(static_cast<size_t>(size) * size, 0.0f);
   double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
   for (int i = 0; i < size; ++i) {

@@ -1,12 +1,12 @@
 #pragma once
 /// The controller interface the episode runner drives.
 
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Core>
 #include <array>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
-#include <mujoco/mujoco.h>
 
 #include "simhuman/control/task.h"
 #include "simhuman/core/status.h"
@@ -23,7 +23,7 @@ struct Observation {
   int agent = 0;
   const world::SimWorld* world = nullptr;
   const mjData* data = nullptr;
-  int step_index = 0;          ///< index of the current plan step
+  int step_index = 0;              ///< index of the current plan step
   const StepTask* task = nullptr;  ///< the current step in controller terms
   std::array<Eigen::Vector3d, core::kNumBodyJoints> body_points;  ///< world positions
   /// Per term of `task`: target point minus joint (UniHSI's v_np - v_j).
@@ -50,7 +50,7 @@ class Controller {
 
 /// Builds an ego-centric height map around agent `agent` from the scene catalog's shapes
 /// (ray-free: the top of every object shape under each cell).
-void BuildHeightmap(const core::SceneCatalog& scene, const Eigen::Vector3d& pelvis,
-                    double yaw_rad, int size, double cell_m, std::vector<float>* out);
+void BuildHeightmap(const core::SceneCatalog& scene, const Eigen::Vector3d& pelvis, double yaw_rad,
+                    int size, double cell_m, std::vector<float>* out);
 
 }  // namespace simhuman::control

@@ -1,7 +1,7 @@
 #include "simhuman/control/runner.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace simhuman::control {
@@ -158,8 +158,7 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
   res.contact_error_m = ce ? *ce : -1;
   res.step_completion_s = tracker.completion_times_s();
   res.sim_time_s = d->time - t_start;
-  res.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  res.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   if (options.progress) {
     ProgressEvent e;
     e.ended = true;

@@ -25,7 +25,7 @@ struct Trajectory {
 
 /// One progress event (a step completed, or the episode ended).
 struct ProgressEvent {
-  int step = 0;        ///< step index the event is about
+  int step = 0;  ///< step index the event is about
   int steps_total = 0;
   double time_s = 0;
   double distance_m = 0;  ///< mean distance of the step's contact pairs to their targets

@@ -6,11 +6,16 @@ namespace simhuman::control {
 
 const char* PostureName(Posture p) {
   switch (p) {
-    case Posture::kStand: return "stand";
-    case Posture::kSit: return "sit";
-    case Posture::kLieBack: return "lie on back";
-    case Posture::kLieSide: return "lie on side";
-    case Posture::kLean: return "lean";
+    case Posture::kStand:
+      return "stand";
+    case Posture::kSit:
+      return "sit";
+    case Posture::kLieBack:
+      return "lie on back";
+    case Posture::kLieSide:
+      return "lie on side";
+    case Posture::kLean:
+      return "lean";
   }
   return "stand";
 }
@@ -18,16 +23,23 @@ const char* PostureName(Posture p) {
 double BodyPointClearance(core::BodyJoint j) {
   using core::BodyJoint;
   switch (j) {
-    case BodyJoint::kPelvis: return 0.03;
-    case BodyJoint::kTorso: return 0.10;
-    case BodyJoint::kHead: return 0.10;
+    case BodyJoint::kPelvis:
+      return 0.03;
+    case BodyJoint::kTorso:
+      return 0.10;
+    case BodyJoint::kHead:
+      return 0.10;
     case BodyJoint::kLeftHand:
-    case BodyJoint::kRightHand: return 0.045;
+    case BodyJoint::kRightHand:
+      return 0.045;
     case BodyJoint::kLeftFoot:
-    case BodyJoint::kRightFoot: return 0.03;
+    case BodyJoint::kRightFoot:
+      return 0.03;
     case BodyJoint::kLeftHip:
-    case BodyJoint::kRightHip: return 0.07;
-    default: return 0.045;
+    case BodyJoint::kRightHip:
+      return 0.07;
+    default:
+      return 0.045;
   }
 }
 
@@ -69,10 +81,13 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
     t.dir = plan::DirectionVector(pair.direction, obj->pose);
     t.clearance_m = scale * BodyPointClearance(t.joint);
     if (t.target_joint) t.clearance_m += scale * BodyPointClearance(*t.target_joint) * 0.5;
+    // a marker is a point to reach, not a surface to rest on
+    if (!t.target_joint && obj && !obj->collides) t.clearance_m = 0.0;
     task.terms.push_back(t);
     if (pair.type != plan::ContactType::kContact) {
       if (t.part && t.part->name == "mattress" &&
-          (t.joint == core::BodyJoint::kLeftShoulder || t.joint == core::BodyJoint::kRightShoulder)) {
+          (t.joint == core::BodyJoint::kLeftShoulder ||
+           t.joint == core::BodyJoint::kRightShoulder)) {
         side_lie = true;
       }
       continue;

@@ -4,11 +4,10 @@
 /// Built from grounded plan steps; holds pointers into the SceneCatalog it was built from
 /// (which must outlive it).
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "simhuman/core/body_joint.h"
 #include "simhuman/core/scene_catalog.h"
@@ -28,7 +27,7 @@ struct ContactTerm {
   plan::ContactType type = plan::ContactType::kContact;
   const core::CatalogObject* object = nullptr;  ///< null when the target is a body joint
   const core::CatalogPart* part = nullptr;
-  std::optional<core::BodyJoint> target_joint;  ///< "right foot on left knee"
+  std::optional<core::BodyJoint> target_joint;    ///< "right foot on left knee"
   Eigen::Vector3d dir = Eigen::Vector3d::Zero();  ///< unit vector, zero for "none"
   double clearance_m = 0.05;  ///< joint-centre to surface distance when touching
 
@@ -41,7 +40,7 @@ struct ContactTerm {
 struct StepTask {
   std::vector<ContactTerm> terms;
   Posture posture = Posture::kStand;
-  bool get_close = false;  ///< the step is a get-close / stand-up step
+  bool get_close = false;                      ///< the step is a get-close / stand-up step
   const core::CatalogObject* focus = nullptr;  ///< main object of the step (may be null)
   Eigen::Vector3d stand_point = Eigen::Vector3d::Zero();  ///< for get-close steps
   double stand_yaw_rad = 0;

@@ -5,9 +5,9 @@
 namespace simhuman::core {
 namespace {
 constexpr std::array<std::string_view, kNumBodyJoints> kNames = {
-    "pelvis",         "torso",       "head",       "left shoulder", "left elbow",
-    "left hand",      "right shoulder", "right elbow", "right hand",  "left hip",
-    "left knee",      "left foot",   "right hip",  "right knee",    "right foot"};
+    "pelvis",    "torso",          "head",        "left shoulder", "left elbow",
+    "left hand", "right shoulder", "right elbow", "right hand",    "left hip",
+    "left knee", "left foot",      "right hip",   "right knee",    "right foot"};
 }  // namespace
 
 std::string_view BodyJointName(BodyJoint joint) { return kNames[static_cast<int>(joint)]; }

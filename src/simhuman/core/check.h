@@ -5,11 +5,10 @@
 #include <cstdlib>
 
 /// Aborts with file:line and the message when `cond` is false. Enabled in every build type.
-#define SH_CHECK(cond, msg)                                                          \
-  do {                                                                               \
-    if (!(cond)) {                                                                   \
-      std::fprintf(stderr, "%s:%d: check failed: %s: %s\n", __FILE__, __LINE__, #cond, \
-                   (msg));                                                           \
-      std::abort();                                                                  \
-    }                                                                                \
+#define SH_CHECK(cond, msg)                                                                    \
+  do {                                                                                         \
+    if (!(cond)) {                                                                             \
+      std::fprintf(stderr, "%s:%d: check failed: %s: %s\n", __FILE__, __LINE__, #cond, (msg)); \
+      std::abort();                                                                            \
+    }                                                                                          \
   } while (0)

@@ -72,7 +72,9 @@ Eigen::Vector3d NearestPointOnShapes(const std::vector<Shape>& shapes,
 std::vector<Eigen::Vector3d> SampleShapeSurface(const Shape& s, double spacing_m) {
   SH_CHECK(spacing_m > 0, "spacing must be positive");
   std::vector<Eigen::Vector3d> local;
-  auto steps = [&](double len) { return std::max(1, static_cast<int>(std::ceil(len / spacing_m))); };
+  auto steps = [&](double len) {
+    return std::max(1, static_cast<int>(std::ceil(len / spacing_m)));
+  };
   switch (s.kind) {
     case ShapeKind::kBox: {
       // six faces on a grid
@@ -148,10 +150,18 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> ShapesBounds(const std::vector<Shape
   for (const Shape& s : shapes) {
     Eigen::Vector3d half = s.size;
     switch (s.kind) {
-      case ShapeKind::kBox: half = s.size; break;
-      case ShapeKind::kSphere: half = Eigen::Vector3d::Constant(s.size.x()); break;
-      case ShapeKind::kCapsule: half = Eigen::Vector3d(s.size.x(), s.size.x(), s.size.y() + s.size.x()); break;
-      case ShapeKind::kCylinder: half = Eigen::Vector3d(s.size.x(), s.size.x(), s.size.y()); break;
+      case ShapeKind::kBox:
+        half = s.size;
+        break;
+      case ShapeKind::kSphere:
+        half = Eigen::Vector3d::Constant(s.size.x());
+        break;
+      case ShapeKind::kCapsule:
+        half = Eigen::Vector3d(s.size.x(), s.size.x(), s.size.y() + s.size.x());
+        break;
+      case ShapeKind::kCylinder:
+        half = Eigen::Vector3d(s.size.x(), s.size.x(), s.size.y());
+        break;
     }
     // corners of the local box, rotated
     for (int i = 0; i < 8; ++i) {

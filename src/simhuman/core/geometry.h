@@ -2,10 +2,9 @@
 /// Plain geometry shared by world, plan and control: primitive shapes and rigid poses.
 /// No MuJoCo here. Lengths in metres, quaternions in MuJoCo order (w, x, y, z).
 
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <vector>
 
 namespace simhuman::core {
 
@@ -39,8 +38,7 @@ Eigen::Vector3d NearestPointOnShape(const Shape& shape, const Pose& world_from_p
 
 /// Nearest point over a union of shapes (at least one shape required).
 Eigen::Vector3d NearestPointOnShapes(const std::vector<Shape>& shapes,
-                                     const Pose& world_from_parent,
-                                     const Eigen::Vector3d& p_world);
+                                     const Pose& world_from_parent, const Eigen::Vector3d& p_world);
 
 /// Samples points on the surface of `shape` with roughly `spacing_m` between neighbours, in the
 /// parent frame. Deterministic.

@@ -1,10 +1,9 @@
 #pragma once
 /// Reading files and JSON strictly, with errors that name the file, line and column.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
-
-#include <nlohmann/json.hpp>
 
 #include "simhuman/core/status.h"
 

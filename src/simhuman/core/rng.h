@@ -19,7 +19,9 @@ class Rng {
     return std::uniform_real_distribution<double>(lo, hi)(engine_);
   }
   /// Normal with mean 0 and standard deviation `stddev`.
-  double Normal(double stddev = 1.0) { return std::normal_distribution<double>(0.0, stddev)(engine_); }
+  double Normal(double stddev = 1.0) {
+    return std::normal_distribution<double>(0.0, stddev)(engine_);
+  }
   /// Uniform integer in [lo, hi].
   int UniformInt(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine_); }
   std::mt19937_64& engine() { return engine_; }

@@ -29,7 +29,7 @@ struct CatalogObject {
   std::string color;  // colour name, e.g. "red" (may be empty)
   Pose pose;          // world_from_object; updated from the simulation for movable objects
   bool movable = false;
-  bool collides = true;  ///< false for markers (visual targets that bodies pass through)
+  bool collides = true;            ///< false for markers (visual targets that bodies pass through)
   double mass_kg = 0.0;            // movable objects only
   std::vector<CatalogPart> parts;  // named parts
   std::vector<Shape> shapes;       // every solid of the object (parts and unnamed, e.g. legs)

@@ -26,10 +26,10 @@ Status Annotate(const Status& status, std::string_view where);
 #define SH_STATUS_CONCAT(a, b) SH_STATUS_CONCAT_INNER(a, b)
 
 /// Returns from the current function if `expr` (an absl::Status) is not OK.
-#define SH_RETURN_IF_ERROR(expr)                  \
-  do {                                            \
-    ::absl::Status sh_status_ = (expr);           \
-    if (!sh_status_.ok()) return sh_status_;      \
+#define SH_RETURN_IF_ERROR(expr)             \
+  do {                                       \
+    ::absl::Status sh_status_ = (expr);      \
+    if (!sh_status_.ok()) return sh_status_; \
   } while (0)
 
 /// `SH_ASSIGN_OR_RETURN(auto x, StatusOrExpr)`: unwraps or returns the error.

@@ -67,7 +67,9 @@ struct PairParams {
   double w_dk_per_m = 5.0;            // Eq. 7 distance decay
   double not_contact_error_m = 0.3;   // Eq. 11: not-contact error is max(this - ||d||, 0)
   double get_close_radius_m = 0.3;    // pelvis (horizontal) to stand point
-  double get_close_facing_tol_rad = 0.7853981633974483;  // 45 degrees
+  /// Facing tolerance of get-close pairs. Default pi: position only, because UniHSI also
+  /// writes "stand up" as a get-close pair, after which the agent faces away from the object.
+  double get_close_facing_tol_rad = 3.141592653589793;
   double stand_off_m = 0.45;          // stand point distance beyond the object's bounds
   double adaptive_weight_eps = 1e-3;  // Eq. 9: e
 

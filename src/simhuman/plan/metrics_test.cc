@@ -264,14 +264,19 @@ TEST(PlanMetricsTest, GetClose) {
   EXPECT_NEAR(e.reward, 0.49306869139523984, kTol);  // exp(-5 sqrt(0.02))
   EXPECT_FALSE(e.has_error);
 
-  // facing within 45 degrees passes, beyond fails; facing away is penalised to 0
+  // by default facing is not required ("stand up" is written as get close, facing away)
   EXPECT_TRUE(
-      EvaluatePair(pair, scene, Agent({{BodyJoint::kPelvis, pelvis}}, facing(M_PI + M_PI / 6)), {})
+      EvaluatePair(pair, scene, Agent({{BodyJoint::kPelvis, pelvis}}, facing(0)), {}).satisfied);
+  // with a 45 degree tolerance: within passes, beyond fails; facing away is penalised to 0
+  PairParams p45;
+  p45.get_close_facing_tol_rad = M_PI / 4;
+  EXPECT_TRUE(
+      EvaluatePair(pair, scene, Agent({{BodyJoint::kPelvis, pelvis}}, facing(M_PI + M_PI / 6)), p45)
           .satisfied);
   EXPECT_FALSE(
-      EvaluatePair(pair, scene, Agent({{BodyJoint::kPelvis, pelvis}}, facing(M_PI - M_PI / 3)), {})
+      EvaluatePair(pair, scene, Agent({{BodyJoint::kPelvis, pelvis}}, facing(M_PI - M_PI / 3)), p45)
           .satisfied);
-  PairEval away = EvaluatePair(pair, scene, Agent({{BodyJoint::kPelvis, pelvis}}, facing(0)), {});
+  PairEval away = EvaluatePair(pair, scene, Agent({{BodyJoint::kPelvis, pelvis}}, facing(0)), p45);
   EXPECT_FALSE(away.satisfied);
   EXPECT_NEAR(away.reward, 0.0, kTol);
   // too far: 0.4 m from the stand point

@@ -3,10 +3,10 @@
 /// silently resets the state on divergence. We install our own handlers and read the warning
 /// counters every step so an episode ends with a reason instead.
 
+#include <mujoco/mujoco.h>
+
 #include <array>
 #include <string>
-
-#include <mujoco/mujoco.h>
 
 namespace simhuman::world {
 

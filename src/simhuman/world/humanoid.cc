@@ -50,8 +50,8 @@ class Writer {
 
   void Joint(std::ostringstream& o, const JointDef& j) const {
     double g = std::pow(s_, 4);  // torque ~ mass x length
-    o << "<joint name=\"" << p_ << j.name << "\" type=\"hinge\" axis=\"" << j.axis
-      << "\" range=\"" << j.lo_deg << " " << j.hi_deg << "\" damping=\"" << F(j.gains.damping * g)
+    o << "<joint name=\"" << p_ << j.name << "\" type=\"hinge\" axis=\"" << j.axis << "\" range=\""
+      << j.lo_deg << " " << j.hi_deg << "\" damping=\"" << F(j.gains.damping * g)
       << "\" armature=\"" << F(0.02 * g) << "\"/>\n";
   }
   void Capsule(std::ostringstream& o, const std::string& name, double x0, double y0, double z0,
@@ -133,10 +133,9 @@ const std::vector<std::string>& HumanoidJointNames() {
 
 const std::vector<std::string>& HumanoidBodyNames() {
   static const std::vector<std::string> names = {
-      "pelvis",          "torso",           "head",           "right_upper_arm",
-      "right_lower_arm", "right_hand",      "left_upper_arm", "left_lower_arm",
-      "left_hand",       "right_thigh",     "right_shin",     "right_foot",
-      "left_thigh",      "left_shin",       "left_foot"};
+      "pelvis",     "torso",          "head",           "right_upper_arm", "right_lower_arm",
+      "right_hand", "left_upper_arm", "left_lower_arm", "left_hand",       "right_thigh",
+      "right_shin", "right_foot",     "left_thigh",     "left_shin",       "left_foot"};
   return names;
 }
 
@@ -159,8 +158,8 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
   Writer w(spec);
   const std::string& p = w.p();
   std::ostringstream o;
-  o << "<body name=\"" << p << "pelvis\" pos=\"" << V(x, y, w.L(kPelvisStandHeight))
-    << "\" quat=\"" << V(std::cos(yaw_rad / 2), 0, 0) << " " << F(std::sin(yaw_rad / 2)) << "\">\n";
+  o << "<body name=\"" << p << "pelvis\" pos=\"" << V(x, y, w.L(kPelvisStandHeight)) << "\" quat=\""
+    << V(std::cos(yaw_rad / 2), 0, 0) << " " << F(std::sin(yaw_rad / 2)) << "\">\n";
   o << "<freejoint name=\"" << p << "root\"/>\n";
   w.Capsule(o, "pelvis_geom", 0, -0.065, -0.03, 0, 0.065, -0.03, 0.09, kPelvisMass);
   w.Site(o, BodyJoint::kPelvis, 0, 0, -0.09);
@@ -218,8 +217,8 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
     o << "<body name=\"" << p << s << "foot\" pos=\"" << w.Pos(0, 0, -0.42) << "\">\n";
     for (const char* j : {"ankle_x", "ankle_y", "ankle_z"}) w.Joint(o, Def(s + j));
     o << "<geom name=\"" << p << s << "foot_geom\" type=\"box\" pos=\"" << w.Pos(0.045, 0, -0.0375)
-      << "\" size=\"" << V(w.L(0.105), w.L(0.045), w.L(0.0275)) << "\" mass=\""
-      << F(w.M(kFootMass)) << "\" friction=\"1.0 0.02 0.01\" rgba=\"" << spec.rgba << "\"/>\n";
+      << "\" size=\"" << V(w.L(0.105), w.L(0.045), w.L(0.0275)) << "\" mass=\"" << F(w.M(kFootMass))
+      << "\" friction=\"1.0 0.02 0.01\" rgba=\"" << spec.rgba << "\"/>\n";
     w.Site(o, foot, 0.045, 0, -0.0375);
     o << "</body>\n</body>\n</body>\n";
   }

@@ -22,19 +22,26 @@ std::string Q(const Eigen::Quaterniond& q) {
 
 const char* GeomType(core::ShapeKind k) {
   switch (k) {
-    case core::ShapeKind::kBox: return "box";
-    case core::ShapeKind::kSphere: return "sphere";
-    case core::ShapeKind::kCapsule: return "capsule";
-    case core::ShapeKind::kCylinder: return "cylinder";
+    case core::ShapeKind::kBox:
+      return "box";
+    case core::ShapeKind::kSphere:
+      return "sphere";
+    case core::ShapeKind::kCapsule:
+      return "capsule";
+    case core::ShapeKind::kCylinder:
+      return "cylinder";
   }
   return "box";
 }
 
 std::string GeomSize(const core::Shape& s) {
   switch (s.kind) {
-    case core::ShapeKind::kBox: return V3(s.size);
-    case core::ShapeKind::kSphere: return F(s.size.x());
-    default: return F(s.size.x()) + " " + F(s.size.y());
+    case core::ShapeKind::kBox:
+      return V3(s.size);
+    case core::ShapeKind::kSphere:
+      return F(s.size.x());
+    default:
+      return F(s.size.x()) + " " + F(s.size.y());
   }
 }
 

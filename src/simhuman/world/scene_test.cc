@@ -51,7 +51,8 @@ TEST(SceneTest, MalformedFilesNameTheCulprit) {
 
   e = LoadError("malformed_unknown_type.json");
   EXPECT_THAT(e, HasSubstr("/objects/1/type: unknown object type 'throne'"));
-  EXPECT_THAT(e, HasSubstr("chair, armchair, sofa, stool, high_stool, bed, table, laptop, marker, box"));
+  EXPECT_THAT(
+      e, HasSubstr("chair, armchair, sofa, stool, high_stool, bed, table, laptop, marker, box"));
 
   e = LoadError("malformed_missing_pos.json");
   EXPECT_THAT(e, HasSubstr("/objects/0/pos: missing required key"));

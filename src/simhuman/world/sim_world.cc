@@ -82,7 +82,8 @@ SimWorld::~SimWorld() {
 void SimWorld::Reset() {
   mj_resetData(model_, data_);
   for (const AgentIndex& a : agents_) {
-    for (int j = 0; j < kHumanoidDofs; ++j) data_->ctrl[a.actuator[j]] = data_->qpos[a.hinge_qpos[j]];
+    for (int j = 0; j < kHumanoidDofs; ++j)
+      data_->ctrl[a.actuator[j]] = data_->qpos[a.hinge_qpos[j]];
   }
   mj_forward(model_, data_);
   health_.Reset(data_);

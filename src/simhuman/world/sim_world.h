@@ -2,13 +2,13 @@
 /// A loaded simulation: the MuJoCo model and data of one scene with its humans, the index
 /// tables controllers need (per-agent joint addresses and body-point sites), and health.
 
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Core>
 #include <array>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
-#include <mujoco/mujoco.h>
 
 #include "simhuman/core/body_joint.h"
 #include "simhuman/core/scene_catalog.h"

@@ -89,9 +89,6 @@ absl::StatusOr<MpcConfig> MpcConfig::Preset(std::string_view name) {
   if (name == "quality") {
     c.preset = "quality";
     c.samples = 32;
-    c.knots = 4;
-    c.horizon_s = 0.6;
-    c.plan_dt_s = 0.01;
     c.replan_s = 0.02;
     return c;
   }

@@ -2,9 +2,8 @@
 /// Settings of the reference-guided predictive-sampling MPC, in one strict struct.
 
 #include <cstdint>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "simhuman/core/status.h"
 
@@ -13,12 +12,12 @@ namespace simhuman::control {
 /// All tunables of MpcController. Times in seconds, angles in radians.
 struct MpcConfig {
   std::string preset = "fast";
-  int samples = 16;          ///< rollouts per replan (incl. the nominal and the reference)
-  int knots = 3;             ///< spline knots over the horizon
-  double horizon_s = 0.5;    ///< rollout length
-  double plan_dt_s = 0.015;  ///< planning model time step
-  double replan_s = 0.04;    ///< control period: one replan per period
-  double noise_rad = 0.08;   ///< knot perturbation std dev (legs and spine; arms 1.5x)
+  int samples = 16;         ///< rollouts per replan (incl. the nominal and the reference)
+  int knots = 4;            ///< spline knots over the horizon
+  double horizon_s = 0.6;   ///< rollout length
+  double plan_dt_s = 0.01;  ///< planning model time step
+  double replan_s = 0.03;   ///< control period: one replan per period
+  double noise_rad = 0.08;  ///< knot perturbation std dev (legs and spine; arms 1.5x)
   double small_noise_fraction = 0.25;  ///< share of samples drawn at 0.3x noise
   double ramp_speed_rad_s = 0.9;       ///< reference ramp speed (largest joint change)
   double min_ramp_s = 0.8;
@@ -27,13 +26,13 @@ struct MpcConfig {
   // cost weights
   double w_track = 4.0;     ///< body points toward the reference pose trajectory
   double w_contact = 12.0;  ///< contact terms (x adaptive weights, Eq. 9)
-  double w_balance = 6.0;   ///< capture point over the feet (while not seated)
+  double w_balance = 12.0;  ///< capture point over the feet (while not seated)
   double w_upright = 3.0;   ///< torso upright (stand and sit postures)
   double w_effort = 0.05;   ///< normalised actuator force squared
   double w_ctrl = 0.3;      ///< servo targets away from the reference
   double w_velocity = 0.002;
-  double w_com_velocity = 2.0;  ///< centre-of-mass speed squared (calm, human-paced motion)
-  double w_fall = 30.0;     ///< head below its safe height
+  double w_com_velocity = 10.0;     ///< centre-of-mass speed squared (calm, human-paced motion)
+  double w_fall = 30.0;             ///< head below its safe height
   double fall_head_height_m = 0.5;  ///< head below this (scaled) ends the episode as a fall
 
   /// Every field finite and in range; the message names the field and the valid range.

@@ -25,9 +25,9 @@ double Smoothstep(double x) {
 
 // importance of each body point in reference tracking
 constexpr std::array<double, core::kNumBodyJoints> kTrackWeight = {
-    2.0,  // pelvis
-    1.5,  // torso
-    1.5,  // head
+    2.0,            // pelvis
+    1.5,            // torso
+    1.5,            // head
     0.4, 0.4, 0.4,  // left shoulder, elbow, hand
     0.4, 0.4, 0.4,  // right shoulder, elbow, hand
     0.6, 1.0, 1.0,  // left hip, knee, foot
@@ -81,24 +81,74 @@ void MpcController::Interp(const Knots& knots, double t0, double span, double t,
   for (int j = 0; j < kDofs; ++j) out[j] = (1 - f) * knots[i][j] + f * knots[i + 1][j];
 }
 
-std::array<double, kDofs> MpcController::RefHinges(double t) const {
-  double s = Smoothstep((t - ramp_t0_) / ramp_s_);
-  std::array<double, kDofs> q;
-  for (int j = 0; j < kDofs; ++j) q[j] = start_.hinges[j] + s * (goal_.hinges[j] - start_.hinges[j]);
-  return q;
+ReferencePose MpcController::RefPose(double t) const {
+  // piecewise smoothstep between keyframes
+  double u = t - ramp_t0_;
+  size_t seg = 0;
+  while (seg + 1 < key_s_.size() && u > key_s_[seg + 1]) ++seg;
+  if (keys_.size() == 1 || seg + 1 >= keys_.size()) return keys_.back();
+  double len = key_s_[seg + 1] - key_s_[seg];
+  double f = Smoothstep(len > 0 ? (u - key_s_[seg]) / len : 1.0);
+  const ReferencePose& a = keys_[seg];
+  const ReferencePose& b = keys_[seg + 1];
+  ReferencePose p;
+  for (int k = 0; k < 3; ++k) p.root[k] = a.root[k] + f * (b.root[k] - a.root[k]);
+  Eigen::Quaterniond qa(a.root[3], a.root[4], a.root[5], a.root[6]);
+  Eigen::Quaterniond qb(b.root[3], b.root[4], b.root[5], b.root[6]);
+  Eigen::Quaterniond q = qa.slerp(f, qb);
+  p.root[3] = q.w();
+  p.root[4] = q.x();
+  p.root[5] = q.y();
+  p.root[6] = q.z();
+  for (int j = 0; j < kDofs; ++j) p.hinges[j] = a.hinges[j] + f * (b.hinges[j] - a.hinges[j]);
+  return p;
 }
 
-void MpcController::RefPoints(double t, std::array<Eigen::Vector3d, core::kNumBodyJoints>* pts) const {
+std::array<double, kDofs> MpcController::RefHinges(double t) const { return RefPose(t).hinges; }
+
+void MpcController::RefPoints(double t,
+                              std::array<Eigen::Vector3d, core::kNumBodyJoints>* pts) const {
   int n = static_cast<int>(ref_table_.size());
-  double u = std::clamp((t - ramp_t0_) / kRefTableDt, 0.0, static_cast<double>(n - 1));
-  int i = std::min(static_cast<int>(u), n - 2);
   if (n == 1) {
     *pts = ref_table_[0];
     return;
   }
+  double u = std::clamp((t - ramp_t0_) / kRefTableDt, 0.0, static_cast<double>(n - 1));
+  int i = std::min(static_cast<int>(u), n - 2);
   double f = u - i;
   for (int b = 0; b < core::kNumBodyJoints; ++b) {
     (*pts)[b] = (1 - f) * ref_table_[i][b] + f * ref_table_[i + 1][b];
+  }
+}
+
+double MpcController::SegmentSeconds(const ReferencePose& a, const ReferencePose& b) const {
+  double dq = 0;
+  for (int j = 0; j < kDofs; ++j) dq = std::max(dq, std::abs(b.hinges[j] - a.hinges[j]));
+  double dx = std::hypot(b.root[0] - a.root[0], b.root[1] - a.root[1]);
+  double dz = std::abs(b.root[2] - a.root[2]);
+  return std::clamp(std::max({dq / config_.ramp_speed_rad_s, dx / 0.35, dz / 0.4}),
+                    config_.min_ramp_s, config_.max_ramp_s);
+}
+
+void MpcController::SetReference(double now, const std::vector<ReferencePose>& keys,
+                                 const mjData* d) {
+  const world::AgentIndex& a = world_->agent(agent_);
+  keys_ = keys;
+  key_s_.assign(1, 0.0);
+  for (size_t i = 1; i < keys_.size(); ++i) {
+    key_s_.push_back(key_s_.back() + SegmentSeconds(keys_[i - 1], keys_[i]));
+  }
+  ramp_s_ = std::max(key_s_.back(), 1e-3);
+  ramp_t0_ = now;
+  goal_ = keys_.back();
+  // reference body points along the ramp
+  ref_table_.clear();
+  mj_copyData(scratch_, world_->model(), d);
+  int n = static_cast<int>(std::ceil(ramp_s_ / kRefTableDt)) + 1;
+  for (int i = 0; i < n; ++i) {
+    SetAgentPose(a, RefPose(now + i * kRefTableDt), scratch_);
+    mj_kinematics(world_->model(), scratch_);
+    ref_table_.push_back(world_->BodyPoints(scratch_, agent_));
   }
 }
 
@@ -106,36 +156,27 @@ void MpcController::StartStep(const Observation& obs, const StepTask& task) {
   const world::AgentIndex& a = world_->agent(agent_);
   task_ = task;
   step_index_ = obs.step_index;
-  start_ = GetAgentPose(a, obs.data);
-  goal_ = SolveReferencePose(*world_, agent_, task_, obs.data, scratch_);
-  // ramp duration from the largest joint change and the root travel
-  double dq = 0;
-  for (int j = 0; j < kDofs; ++j) dq = std::max(dq, std::abs(goal_.hinges[j] - start_.hinges[j]));
-  double dx = std::hypot(goal_.root[0] - start_.root[0], goal_.root[1] - start_.root[1]);
-  double dz = std::abs(goal_.root[2] - start_.root[2]);
-  ramp_s_ = std::clamp(std::max({dq / config_.ramp_speed_rad_s, dx / 0.35, dz / 0.4}),
-                       config_.min_ramp_s, config_.max_ramp_s);
-  ramp_t0_ = obs.time_s;
-  // reference body points along the ramp
-  ref_table_.clear();
-  mj_copyData(scratch_, world_->model(), obs.data);
-  Eigen::Quaterniond q0(start_.root[3], start_.root[4], start_.root[5], start_.root[6]);
-  Eigen::Quaterniond q1(goal_.root[3], goal_.root[4], goal_.root[5], goal_.root[6]);
-  int n = static_cast<int>(std::ceil(ramp_s_ / kRefTableDt)) + 1;
-  for (int i = 0; i < n; ++i) {
-    double s = Smoothstep(i * kRefTableDt / ramp_s_);
-    ReferencePose p;
-    for (int k = 0; k < 3; ++k) p.root[k] = start_.root[k] + s * (goal_.root[k] - start_.root[k]);
-    Eigen::Quaterniond q = q0.slerp(s, q1);
-    p.root[3] = q.w();
-    p.root[4] = q.x();
-    p.root[5] = q.y();
-    p.root[6] = q.z();
-    for (int j = 0; j < kDofs; ++j) p.hinges[j] = start_.hinges[j] + s * (goal_.hinges[j] - start_.hinges[j]);
-    SetAgentPose(a, p, scratch_);
-    mj_kinematics(world_->model(), scratch_);
-    ref_table_.push_back(world_->BodyPoints(scratch_, agent_));
+  ReferencePose start = GetAgentPose(a, obs.data);
+  ReferencePose goal = SolveReferencePose(*world_, agent_, task_, obs.data, scratch_);
+  std::vector<ReferencePose> keys = {start};
+  bool rising = false;
+  // getting up from a seat goes through a lean-forward pose with the weight over the feet
+  bool seated = obs.data->qpos[a.root_qpos + 2] < 0.75 * world::kPelvisStandHeight * a.scale;
+  bool to_stand = task_.posture == Posture::kStand || task_.posture == Posture::kLean;
+  if (seated && to_stand) {
+    // lean forward while seated, then lift off over the feet, then extend
+    ReferencePoseOptions rise;
+    rise.rise = 1;
+    keys.push_back(SolveReferencePose(*world_, agent_, task_, obs.data, scratch_, rise));
+    rise.rise = 2;
+    rise.w_balance = 30.0;  // the seat-off pose must have the weight over the feet
+    keys.push_back(SolveReferencePose(*world_, agent_, task_, obs.data, scratch_, rise));
+    rising = true;
   }
+  keys.push_back(goal);
+  SetReference(obs.time_s, keys, obs.data);
+  // when getting up, standing balance takes over once the reference lifts off the seat
+  stand_balance_from_s_ = rising ? key_s_[2] : 1e9;
   // seat height gates the balance term while sitting down
   seat_top_z_ = -1;
   for (const ContactTerm& t : task_.terms) {
@@ -165,11 +206,11 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
   std::memcpy(d->ctrl, start->ctrl, sizeof(mjtNum) * m->nu);
   if (m->na) std::memcpy(d->act, start->act, sizeof(mjtNum) * m->na);
 
-  const int steps = std::max(1, static_cast<int>(std::lround(config_.horizon_s / config_.plan_dt_s)));
+  const int steps =
+      std::max(1, static_cast<int>(std::lround(config_.horizon_s / config_.plan_dt_s)));
   const double scale = a.scale;
   const bool standing = task_.posture == Posture::kStand || task_.posture == Posture::kLean;
   const bool sitting = task_.posture == Posture::kSit;
-  const bool lying = task_.posture == Posture::kLieBack || task_.posture == Posture::kLieSide;
   std::array<double, kDofs> u;
   std::array<Eigen::Vector3d, core::kNumBodyJoints> pts, ref;
   Eigen::Vector3d com_prev = Eigen::Vector3d::Zero();
@@ -219,7 +260,10 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
     const mjtNum* comp = d->subtree_com + 3 * a.pelvis_body;
     Eigen::Vector3d com(comp[0], comp[1], comp[2]);
     const Eigen::Vector3d& pelvis = pts[static_cast<int>(core::BodyJoint::kPelvis)];
-    bool balance = standing || (sitting && pelvis.z() > seat_top_z_ + 0.2 * scale);
+    // standing balance while the weight is on the feet; a low pelvis (sitting down, or the
+    // start of getting up) keeps the seated form
+    bool low = pelvis.z() < 0.62 * scale && t - ramp_t0_ < stand_balance_from_s_;
+    bool balance = (standing && !low) || (sitting && pelvis.z() > seat_top_z_ + 0.2 * scale);
     if (h > 0) {
       Eigen::Vector3d v = (com - com_prev) / config_.plan_dt_s;
       Eigen::Vector3d cp = com + v * std::sqrt(std::max(com.z(), 0.1) / 9.81);
@@ -227,7 +271,7 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
                                    pts[static_cast<int>(core::BodyJoint::kRightFoot)]);
       if (balance) {
         c += config_.w_balance * SmoothL1((cp.head<2>() - mid.head<2>()).norm(), 0.05);
-      } else if (sitting) {
+      } else if (sitting || low) {
         // seated: the capture point stays between the seat contact and the feet
         Eigen::Vector2d a2 = pelvis.head<2>(), b2 = mid.head<2>(), p2 = cp.head<2>();
         Eigen::Vector2d ab = b2 - a2;
@@ -237,10 +281,12 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
       c += config_.w_com_velocity * v.squaredNorm();
     }
     com_prev = com;
-    // upright torso
-    if (!lying) {
-      double zz = d->xmat[9 * a.torso_body + 8];
-      c += config_.w_upright * (1.0 - zz);
+    // trunk orientation (pelvis to head) as in the reference
+    {
+      Eigen::Vector3d trunk = pts[static_cast<int>(core::BodyJoint::kHead)] - pelvis;
+      Eigen::Vector3d trunk_ref = ref[static_cast<int>(core::BodyJoint::kHead)] -
+                                  ref[static_cast<int>(core::BodyJoint::kPelvis)];
+      c += config_.w_upright * (1.0 - trunk.normalized().dot(trunk_ref.normalized()));
     }
     // effort, servo targets near the reference, joint speeds
     double effort = 0, dev = 0, vel = 0;
@@ -256,7 +302,8 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
     c += config_.w_effort * effort + config_.w_ctrl * dev + config_.w_velocity * vel;
     // falling
     double head_z = pts[static_cast<int>(core::BodyJoint::kHead)].z();
-    double safe = lying ? 0.0 : (sitting ? 0.9 : 1.2) * scale;
+    // falling: the head well below where the reference has it
+    double safe = ref[static_cast<int>(core::BodyJoint::kHead)].z() - 0.3 * scale;
     if (head_z < safe) c += config_.w_fall * (safe - head_z);
     cost += c * (h == steps - 1 ? 3.0 : 1.0);
   }
@@ -280,22 +327,27 @@ absl::Status MpcController::Act(const Observation& obs) {
   term_weights_ = plan::AdaptiveWeights(rewards, 1e-3);
   for (double& w : term_weights_) w *= static_cast<double>(term_weights_.size());
 
-  // fall monitor: a strongly tilted torso while standing switches to recovery (stand up
-  // straight over the feet, quickly); back to the step once upright again
-  double zz = obs.data->xmat[9 * a.torso_body + 8];
+  // fall monitor: while standing on its feet, a trunk tilted more than 35 degrees away from
+  // the reference's switches to recovery (stand up straight over the feet, quickly); back to
+  // the step once within 12 degrees again
+  std::array<Eigen::Vector3d, core::kNumBodyJoints> ref_now;
+  RefPoints(now, &ref_now);
+  const auto& bp = obs.body_points;
+  auto trunk = [](const std::array<Eigen::Vector3d, core::kNumBodyJoints>& p) {
+    return Eigen::Vector3d(p[static_cast<int>(core::BodyJoint::kHead)] -
+                           p[static_cast<int>(core::BodyJoint::kPelvis)])
+        .normalized();
+  };
+  double cos_dev = trunk(bp).dot(recovering_ ? Eigen::Vector3d::UnitZ() : trunk(ref_now));
   bool standing = task_.posture == Posture::kStand || task_.posture == Posture::kLean;
-  if (standing && !recovering_ && zz < std::cos(35.0 * M_PI / 180.0)) {
+  bool on_feet = bp[static_cast<int>(core::BodyJoint::kPelvis)].z() > 0.62 * a.scale;
+  if (standing && on_feet && !recovering_ && cos_dev < std::cos(35.0 * M_PI / 180.0)) {
     recovering_ = true;
     StepTask recover;
     recover.posture = Posture::kStand;
-    recover.terms.clear();
-    std::vector<ContactTerm> keep = task_.terms;
-    goal_ = SolveReferencePose(*world_, agent_, recover, obs.data, scratch_);
-    start_ = GetAgentPose(a, obs.data);
-    ramp_t0_ = now;
-    ramp_s_ = 0.5;
-    ref_table_.assign(1, world_->BodyPoints(obs.data, agent_));
-  } else if (recovering_ && zz > std::cos(12.0 * M_PI / 180.0)) {
+    ReferencePose up = SolveReferencePose(*world_, agent_, recover, obs.data, scratch_);
+    SetReference(now, {GetAgentPose(a, obs.data), up}, obs.data);
+  } else if (recovering_ && cos_dev > std::cos(12.0 * M_PI / 180.0)) {
     recovering_ = false;
     StartStep(obs, task_);
   }
@@ -323,12 +375,14 @@ absl::Status MpcController::Act(const Observation& obs) {
   const int n_small = static_cast<int>(std::round(config_.small_noise_fraction * (n - 2)));
   double noise = config_.noise_rad * (recovering_ ? 1.5 : 1.0);
   for (int c = 2; c < n; ++c) {
-    core::Rng rng(core::DeriveSeed(seed_, static_cast<uint64_t>(iteration_), static_cast<uint64_t>(c)));
+    core::Rng rng(
+        core::DeriveSeed(seed_, static_cast<uint64_t>(iteration_), static_cast<uint64_t>(c)));
     double sigma = noise * (c - 2 < n_small ? 0.3 : 1.0);
     cand[c] = shifted;
     for (int k = 1; k < K; ++k) {
       for (int j = 0; j < kDofs; ++j) {
-        cand[c][k][j] = std::clamp(shifted[k][j] + rng.Normal(sigma * noise_scale_[j]), lo_[j], hi_[j]);
+        cand[c][k][j] =
+            std::clamp(shifted[k][j] + rng.Normal(sigma * noise_scale_[j]), lo_[j], hi_[j]);
       }
     }
   }

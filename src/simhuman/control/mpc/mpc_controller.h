@@ -44,7 +44,10 @@ class MpcController : public Controller {
   using Knots = std::vector<std::array<double, world::kHumanoidDofs>>;
   MpcController() = default;
   void StartStep(const Observation& obs, const StepTask& task);
+  ReferencePose RefPose(double t) const;
   std::array<double, world::kHumanoidDofs> RefHinges(double t) const;
+  double SegmentSeconds(const ReferencePose& a, const ReferencePose& b) const;
+  void SetReference(double now, const std::vector<ReferencePose>& keys, const mjData* d);
   void RefPoints(double t, std::array<Eigen::Vector3d, core::kNumBodyJoints>* pts) const;
   double Rollout(int thread, const Knots& knots, double t0, const mjData* start) const;
   static void Interp(const Knots& knots, double t0, double span, double t, double* out);
@@ -61,10 +64,14 @@ class MpcController : public Controller {
   int step_index_ = -1;
   StepTask task_;
   std::vector<double> term_weights_;
-  ReferencePose start_, goal_;
+  std::vector<ReferencePose> keys_;  // reference keyframes: current pose, ..., goal
+  std::vector<double> key_s_;        // their times after ramp_t0_
+  ReferencePose goal_;
   double ramp_t0_ = 0, ramp_s_ = 1;
   std::vector<std::array<Eigen::Vector3d, core::kNumBodyJoints>> ref_table_;  // every 20 ms
-  double seat_top_z_ = -1;  // seat height for sit postures (balance gating)
+  double seat_top_z_ = -1;
+  double stand_balance_from_s_ =
+      1e9;  // after ramp_t0_; see StartStep  // seat height for sit postures (balance gating)
   bool recovering_ = false;
 
   // plan

@@ -1,9 +1,8 @@
 #include "simhuman/control/mpc/reference_pose.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-
-#include <Eigen/Dense>
 
 namespace simhuman::control {
 namespace {
@@ -149,10 +148,10 @@ std::vector<double> Residual(const Problem& pr, const Vars& v) {
     r.push_back(o.w_balance * (com[1] - mid.y()));
   }
   // keep body points out of the focus object (beyond their clearance)
-  if (pr.task->focus) {
+  if (pr.task->focus && pr.task->focus->collides) {
     for (int i = 0; i < core::kNumBodyJoints; ++i) {
-      Eigen::Vector3d np = core::NearestPointOnShapes(pr.task->focus->shapes, pr.task->focus->pose,
-                                                      pts[i]);
+      Eigen::Vector3d np =
+          core::NearestPointOnShapes(pr.task->focus->shapes, pr.task->focus->pose, pts[i]);
       double dist = (pts[i] - np).norm();
       double need = 0.8 * pr.scale * BodyPointClearance(static_cast<core::BodyJoint>(i));
       r.push_back(o.w_penetration * std::max(0.0, need - dist));
@@ -251,9 +250,52 @@ ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const 
     return std::nullopt;
   };
 
-  switch (task.posture) {
-    case Posture::kStand:
-    case Posture::kLean: {
+  if (options.rise == 2) {
+    // seat-off: hips and knees still flexed, trunk over the feet, weight on the feet
+    pr.base = BasePostureHinges(Posture::kSit);
+    pr.base[JointIndex("abdomen_y")] = 30 * kDeg;
+    for (const char* n : {"right_hip_y", "left_hip_y"}) pr.base[JointIndex(n)] = 95 * kDeg;
+    for (const char* n : {"right_knee", "left_knee"}) pr.base[JointIndex(n)] = 85 * kDeg;
+    for (const char* n : {"right_shoulder_y", "left_shoulder_y"}) {
+      pr.base[JointIndex(n)] = 45 * kDeg;
+    }
+    v.h = pr.base;
+    pr.anchor_feet = true;
+    pr.balance = true;
+    pr.feet_on_floor = true;
+    pr.feet_anchor = {now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
+                      now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+    pr.base_quat = YawQuat(cur_yaw) *
+                   Eigen::Quaterniond(Eigen::AngleAxisd(25 * kDeg, Eigen::Vector3d::UnitY()));
+    v.quat = pr.base_quat;
+    v.pos = cur_pos + YawQuat(cur_yaw) * Eigen::Vector3d(0.12 * s, 0, 0.05 * s);
+  } else if (options.rise == 1) {
+    // the first phase of getting up: still seated, pelvis tipped and trunk leaning forward,
+    // feet drawn back under the knees, so the weight can then move onto the feet
+    pr.base = BasePostureHinges(Posture::kSit);
+    pr.base[JointIndex("abdomen_y")] = 30 * kDeg;
+    for (const char* n : {"right_hip_y", "left_hip_y"}) pr.base[JointIndex(n)] = 110 * kDeg;
+    for (const char* n : {"right_knee", "left_knee"}) pr.base[JointIndex(n)] = 105 * kDeg;
+    for (const char* n : {"right_shoulder_y", "left_shoulder_y"}) {
+      pr.base[JointIndex(n)] = 45 * kDeg;
+    }
+    v.h = pr.base;
+    pr.feet_on_floor = true;
+    pr.anchor_feet = true;  // feet stay where they are (they cannot slide back under load)
+    pr.feet_anchor = {now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
+                      now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+    pr.root_anchor = cur_pos;
+    pr.anchor_root_xy = true;
+    pr.base_quat = YawQuat(cur_yaw) *
+                   Eigen::Quaterniond(Eigen::AngleAxisd(20 * kDeg, Eigen::Vector3d::UnitY()));
+    v.quat = pr.base_quat;
+    v.pos = cur_pos;
+  }
+  switch (options.rise ? Posture::kLean : task.posture) {
+    case Posture::kLean:
+      if (options.rise) break;
+      [[fallthrough]];
+    case Posture::kStand: {
       pr.balance = true;
       if (task.get_close) {
         // stand up / get close: stand on the way to the stand point, feet free
@@ -262,9 +304,17 @@ ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const 
         double reach = std::min(to.norm(), 0.25 * s);
         pr.root_anchor = cur_pos + (to.norm() > 1e-6 ? Eigen::Vector3d(to.normalized() * reach)
                                                      : Eigen::Vector3d::Zero());
+        if (cur_pos.z() < 0.75 * world::kPelvisStandHeight * s) {
+          // getting up from a seat: stand over the feet
+          pr.root_anchor = 0.5 * (now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)] +
+                                  now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]);
+          pr.feet_anchor = {now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
+                            now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+          pr.anchor_feet = true;
+        }
         pr.anchor_root_xy = true;
         v.pos = pr.root_anchor;
-        v.quat = YawQuat(task.stand_yaw_rad);
+        v.quat = YawQuat(cur_yaw);  // no turning in place without a walking skill
       } else {
         // reach etc.: feet stay where they are
         pr.anchor_feet = true;
@@ -307,7 +357,8 @@ ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const 
       auto pelvis_top = part_top(core::BodyJoint::kPelvis);
       auto head_top = part_top(core::BodyJoint::kHead);
       Eigen::Vector3d mat = pelvis_top ? *pelvis_top : cur_pos;
-      Eigen::Vector3d head = head_top ? *head_top : mat + YawQuat(obj_yaw) * Eigen::Vector3d(0, 1, 0);
+      Eigen::Vector3d head =
+          head_top ? *head_top : mat + YawQuat(obj_yaw) * Eigen::Vector3d(0, 1, 0);
       Eigen::Vector3d h = head - mat;
       h.z() = 0;
       if (h.norm() < 1e-6) h = YawQuat(obj_yaw) * Eigen::Vector3d(0, 1, 0);

@@ -6,11 +6,11 @@
 /// the floor (stand, sit), the centre of mass over the feet (stand), and stays close to the
 /// base posture. Nothing here is written per task: the posture is chosen from the contacts.
 
+#include <mujoco/mujoco.h>
+
 #include <array>
 #include <string>
 #include <vector>
-
-#include <mujoco/mujoco.h>
 
 #include "simhuman/control/task.h"
 #include "simhuman/world/sim_world.h"
@@ -21,7 +21,7 @@ namespace simhuman::control {
 struct ReferencePose {
   std::array<double, 7> root{};  ///< pos (3) + quat wxyz (4)
   std::array<double, world::kHumanoidDofs> hinges{};
-  double residual = 0;  ///< final weighted residual norm (diagnostic)
+  double residual = 0;         ///< final weighted residual norm (diagnostic)
   double contact_error_m = 0;  ///< mean distance of contact joints to touching position
 };
 
@@ -38,6 +38,10 @@ struct ReferencePoseOptions {
   double w_feet = 8.0;
   double w_balance = 6.0;
   double w_penetration = 10.0;
+  /// Solve a pose of getting up from a seat instead of the step's goal: 1 = still seated,
+  /// trunk leaning forward and feet drawn back; 2 = seat-off, pelvis just off the seat with the
+  /// centre of mass over the feet (feet where they are). 0 = the step's goal.
+  int rise = 0;
 };
 
 /// Solves the reference pose of `task` for agent `agent` of `world`. `d_now` is the current

@@ -1,0 +1,142 @@
+#include "simhuman/control/mpc/mpc_controller.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "simhuman/control/runner.h"
+#include "simhuman/plan/validate.h"
+#include "simhuman/world/health.h"
+#include "simhuman/world/scene.h"
+
+namespace simhuman::control {
+namespace {
+
+constexpr double kSeatTolM = 0.05;
+
+struct Fixture {
+  core::SceneCatalog catalog;
+  std::unique_ptr<world::SimWorld> world;
+};
+
+// a chair at the origin and a human standing 0.4 m in front of it, back to the seat
+Fixture SitDemo() {
+  Fixture s;
+  auto spec = world::LoadScene("sit_demo");
+  EXPECT_TRUE(spec.ok()) << spec.status();
+  auto cat = world::BuildCatalog(*spec);
+  EXPECT_TRUE(cat.ok()) << cat.status();
+  s.catalog = *cat;
+  std::vector<world::AgentPlacement> agents;
+  for (const auto& h : spec->humans)
+    agents.push_back({h.pos_xy.x(), h.pos_xy.y(), h.yaw_rad, h.scale});
+  auto w = world::SimWorld::Create(s.catalog, agents);
+  EXPECT_TRUE(w.ok()) << w.status();
+  s.world = std::move(w).value();
+  return s;
+}
+
+plan::ContactChain SitPlan(const core::SceneCatalog& cat) {
+  std::string id = cat.objects[0].id;
+  auto chain = plan::ParseAndGround(
+      "[[[\"" + id + "\", \"seat surface\", \"pelvis\", \"contact\", \"up\"]]]", "<test>", cat);
+  EXPECT_TRUE(chain.ok()) << chain.status();
+  return *chain;
+}
+
+std::vector<double> RunFor(int threads, double seconds) {
+  Fixture s = SitDemo();
+  MpcConfig cfg = *MpcConfig::Preset("fast");
+  cfg.threads = threads;
+  auto ctl = MpcController::Create(s.world.get(), 0, cfg, 42);
+  EXPECT_TRUE(ctl.ok()) << ctl.status();
+  plan::ContactChain chain = SitPlan(s.catalog);
+  RunOptions ro;
+  ro.tracker.budget_s_per_step = seconds;
+  ro.record = false;
+  RunEpisode(*s.world, chain, {ctl->get()}, ro, nullptr);
+  const mjData* d = s.world->data();
+  return std::vector<double>(d->qpos, d->qpos + s.world->model()->nq);
+}
+
+TEST(MpcConfigTest, PresetsAreValidAndBadValuesAreNamed) {
+  for (const char* p : {"fast", "quality"}) {
+    auto c = MpcConfig::Preset(p);
+    ASSERT_TRUE(c.ok());
+    EXPECT_TRUE(c->Validate().ok());
+  }
+  EXPECT_FALSE(MpcConfig::Preset("turbo").ok());
+  MpcConfig c;
+  c.noise_rad = std::nan("");
+  absl::Status st = c.Validate();
+  EXPECT_FALSE(st.ok());
+  EXPECT_NE(st.message().find("noise_rad"), std::string::npos) << st;
+  auto bad = MpcConfig::FromJson(nlohmann::json{{"samplez", 3}}, "/cfg");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("samplez"), std::string::npos);
+  auto round = MpcConfig::FromJson(MpcConfig::Preset("quality")->ToJson(), "/cfg");
+  ASSERT_TRUE(round.ok()) << round.status();
+  EXPECT_EQ(round->samples, MpcConfig::Preset("quality")->samples);
+}
+
+TEST(ReferencePoseTest, SitPoseTouchesTheSeatWithFeetOnTheFloor) {
+  Fixture s = SitDemo();
+  plan::ContactChain chain = SitPlan(s.catalog);
+  StepTask task = BuildStepTask(chain.steps[0], s.catalog, 0, 1.0, plan::PairParams());
+  EXPECT_EQ(task.posture, Posture::kSit);
+  mjData* scratch = mj_makeData(s.world->model());
+  ReferencePose ref = SolveReferencePose(*s.world, 0, task, s.world->data(), scratch);
+  SetAgentPose(s.world->agent(0), ref, scratch);
+  mj_kinematics(s.world->model(), scratch);
+  auto pts = s.world->BodyPoints(scratch, 0);
+  const core::CatalogPart* seat = s.catalog.objects[0].FindPart("seat surface");
+  Eigen::Vector3d pelvis = pts[static_cast<int>(core::BodyJoint::kPelvis)];
+  Eigen::Vector3d np = core::NearestPointOnShapes(seat->shapes, s.catalog.objects[0].pose, pelvis);
+  EXPECT_LT((pelvis - np).norm(), kSeatTolM + BodyPointClearance(core::BodyJoint::kPelvis));
+  EXPECT_GT(pelvis.z(), np.z());  // above the seat, not in it
+  EXPECT_NEAR(pts[static_cast<int>(core::BodyJoint::kLeftFoot)].z(), 0.0375, 0.03);
+  EXPECT_NEAR(pts[static_cast<int>(core::BodyJoint::kRightFoot)].z(), 0.0375, 0.03);
+  mj_deleteData(scratch);
+}
+
+TEST(MpcControllerTest, SameSeedSameTrajectoryWithOneOrTwoThreadsIntegration) {
+  std::vector<double> one = RunFor(1, 0.6);
+  std::vector<double> two = RunFor(2, 0.6);
+  ASSERT_EQ(one.size(), two.size());
+  for (size_t i = 0; i < one.size(); ++i) EXPECT_DOUBLE_EQ(one[i], two[i]) << "qpos " << i;
+}
+
+TEST(MpcControllerTest, StandsStillForThreeSecondsIntegration) {
+  // a get-close step to the side the human already stands at: stay standing
+  Fixture s = SitDemo();
+  std::string id = s.catalog.objects[0].id;
+  auto chain = plan::ParseAndGround("[[[\"" + id + "\", \"none\", \"none\", \"none\", \"back\"]]]",
+                                    "<test>", s.catalog);
+  ASSERT_TRUE(chain.ok()) << chain.status();
+  auto ctl = MpcController::Create(s.world.get(), 0, *MpcConfig::Preset("fast"), 7);
+  ASSERT_TRUE(ctl.ok());
+  RunOptions ro;
+  ro.tracker.budget_s_per_step = 3.0;  // the step cannot complete (wrong side): run 3 s
+  ro.record = false;
+  EpisodeResult r = RunEpisode(*s.world, *chain, {ctl->get()}, ro, nullptr);
+  EXPECT_FALSE(r.fell) << r.end_reason;
+  EXPECT_GE(r.sim_time_s, 3.0 - 1e-6);
+  auto pts = s.world->BodyPoints(s.world->data(), 0);
+  EXPECT_GT(pts[static_cast<int>(core::BodyJoint::kHead)].z(), 1.4);
+}
+
+TEST(MpcControllerTest, SitsOnTheChairIntegration) {
+  Fixture s = SitDemo();
+  plan::ContactChain chain = SitPlan(s.catalog);
+  auto ctl = MpcController::Create(s.world.get(), 0, *MpcConfig::Preset("fast"), 3);
+  ASSERT_TRUE(ctl.ok());
+  RunOptions ro;
+  ro.record = false;
+  EpisodeResult r = RunEpisode(*s.world, chain, {ctl->get()}, ro, nullptr);
+  EXPECT_TRUE(r.success) << r.end_reason;
+  EXPECT_FALSE(r.fell);
+  EXPECT_LT(r.contact_error_m, 0.1);
+}
+
+}  // namespace
+}  // namespace simhuman::control

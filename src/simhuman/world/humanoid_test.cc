@@ -1,0 +1,104 @@
+#include "simhuman/world/humanoid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "simhuman/world/health.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::world {
+namespace {
+
+constexpr double kMassTolKg = 0.5;
+
+std::unique_ptr<SimWorld> Empty(double scale = 1.0) {
+  core::SceneCatalog cat;
+  auto w = SimWorld::Create(cat, {{0, 0, 0, scale}});
+  EXPECT_TRUE(w.ok()) << w.status();
+  return std::move(w).value();
+}
+
+TEST(HumanoidTest, DofsBodiesActuatorsAndNamedPoints) {
+  long warnings0 = MujocoWarningCount();
+  auto w = Empty();
+  const mjModel* m = w->model();
+  EXPECT_EQ(m->nu, kHumanoidDofs);
+  EXPECT_EQ(m->nv, kHumanoidDofs + 6);
+  EXPECT_EQ(m->nq, kHumanoidDofs + 7);
+  EXPECT_EQ(m->nbody, kHumanoidBodies + 1);  // + world
+  EXPECT_EQ(static_cast<int>(HumanoidJointNames().size()), kHumanoidDofs);
+  for (int j = 0; j < m->njnt; ++j) {
+    if (m->jnt_type[j] == mjJNT_HINGE) {
+      EXPECT_TRUE(m->jnt_limited[j]) << j;
+    }
+  }
+  for (core::BodyJoint bj : core::AllBodyJoints()) {
+    EXPECT_GE(mj_name2id(m, mjOBJ_SITE, BodyPointSiteName(bj).c_str()), 0)
+        << core::BodyJointName(bj);
+  }
+  EXPECT_EQ(MujocoWarningCount(), warnings0);
+}
+
+TEST(HumanoidTest, HumanProportionsAndMass) {
+  auto w = Empty();
+  EXPECT_NEAR(mj_getTotalmass(w->model()), 60.0, kMassTolKg);
+  EXPECT_NEAR(HumanoidMassKg(1.0), 60.0, kMassTolKg);
+  auto pts = w->BodyPoints(w->data(), 0);
+  auto at = [&](core::BodyJoint j) { return pts[static_cast<int>(j)]; };
+  // head centre ~1.57 m (top of head ~1.67 m), shoulders ~1.37 m, hips ~0.91 m, knees ~0.49 m
+  EXPECT_NEAR(at(core::BodyJoint::kHead).z(), 1.57, 0.05);
+  EXPECT_NEAR(at(core::BodyJoint::kLeftShoulder).z(), 1.37, 0.05);
+  EXPECT_NEAR(at(core::BodyJoint::kLeftHip).z(), 0.91, 0.05);
+  EXPECT_NEAR(at(core::BodyJoint::kLeftKnee).z(), 0.49, 0.05);
+  EXPECT_GT(at(core::BodyJoint::kLeftHand).y(), 0.1);  // left is +y when facing +x
+  EXPECT_LT(at(core::BodyJoint::kRightHand).y(), -0.1);
+  EXPECT_NEAR(at(core::BodyJoint::kLeftFoot).z(), 0.04, 0.02);
+}
+
+TEST(HumanoidTest, ChildVariantScalesWithOneParameter) {
+  auto w = Empty(0.7);
+  EXPECT_NEAR(mj_getTotalmass(w->model()), 60.0 * 0.7 * 0.7 * 0.7, kMassTolKg);
+  auto pts = w->BodyPoints(w->data(), 0);
+  EXPECT_NEAR(pts[static_cast<int>(core::BodyJoint::kHead)].z(), 1.57 * 0.7, 0.05);
+}
+
+TEST(HumanoidTest, TwoAgentsHaveSeparateNames) {
+  core::SceneCatalog cat;
+  auto w = SimWorld::Create(cat, {{0, 0, 0, 1.0}, {2, 0, 0, 0.7}});
+  ASSERT_TRUE(w.ok()) << w.status();
+  EXPECT_EQ((*w)->num_agents(), 2);
+  EXPECT_EQ((*w)->model()->nu, 2 * kHumanoidDofs);
+  EXPECT_NE((*w)->agent(0).pelvis_body, (*w)->agent(1).pelvis_body);
+}
+
+TEST(HealthTest, NonFiniteStateEndsWithAReason) {
+  auto w = Empty();
+  w->data()->qvel[3] = std::nan("");
+  HealthReport r = w->Step();
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.reason.find("unstable"), std::string::npos) << r.reason;
+}
+
+TEST(HealthTest, RunawayVelocityIsUnstable) {
+  auto w = Empty();
+  w->data()->qvel[10] = 1e6;
+  HealthReport r = w->Step();
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.reason.find("unstable"), std::string::npos) << r.reason;
+}
+
+TEST(HealthTest, CleanStepsAreOk) {
+  auto w = Empty();
+  for (int i = 0; i < 50; ++i) ASSERT_TRUE(w->Step().ok());
+}
+
+TEST(ModelBuilderTest, RejectsBadPlacements) {
+  core::SceneCatalog cat;
+  EXPECT_FALSE(SimWorld::Create(cat, {}).ok());
+  EXPECT_FALSE(SimWorld::Create(cat, {{std::nan(""), 0, 0, 1.0}}).ok());
+  EXPECT_FALSE(SimWorld::Create(cat, {{0, 0, 0, 5.0}}).ok());
+}
+
+}  // namespace
+}  // namespace simhuman::world
