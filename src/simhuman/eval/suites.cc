@@ -27,7 +27,10 @@ constexpr double kSofaLateralM = 0.5;
 constexpr double kYawJitterDeg = 15.0;
 // lie protocol
 constexpr double kLieFrontLoM = 0.30, kLieFrontHiM = 0.45;
-constexpr double kLieLateralM = 0.15;
+constexpr double kLieLateralM = 0.10;
+// where one sits on a bed's edge to lie down: the pelvis this far from the pillow's centre
+constexpr double kLieFromPillowM = 0.65;
+constexpr double kMidBedLateralM = 0.15;
 // reach protocol (human frame: x forward, y left)
 constexpr double kReachForwardLoM = 0.25, kReachForwardHiM = 0.55;
 constexpr double kReachLateralInM = 0.10;   // across the body, towards the other hand
@@ -125,14 +128,20 @@ void LieSteps(const std::string& id, std::vector<json>* steps) {
                                               Pair(id, "pillow", "head", "contact", "up")}));
 }
 
-// lie: back to the bed's long side (its front), near the middle of the mattress
-core::Status MakeLie(core::Rng& rng, EpisodeSpec* out) {
+// lie: back to the bed's long side (its front), at the spot where sitting down and lying back
+// puts the head on the pillow (as a person walking up to a bed to lie down would stand);
+// `mid_bed` starts near the middle of the long side instead (sceneplan-simple)
+core::Status MakeLie(core::Rng& rng, EpisodeSpec* out, bool mid_bed = false) {
   world::ObjectSpec o;
   core::CatalogObject built;
   SH_RETURN_IF_ERROR(RandomObject("bed", rng, &o, &built));
   auto [lo, hi] = built.LocalBounds();
   double front = hi.x() + rng.Uniform(kLieFrontLoM, kLieFrontHiM);
-  double lateral = PartCentreY(built, "mattress") + rng.Uniform(-kLieLateralM, kLieLateralM);
+  double pillow = PartCentreY(built, "pillow"), mattress = PartCentreY(built, "mattress");
+  double toward_foot = pillow > mattress ? -1.0 : 1.0;
+  double lateral =
+      pillow + toward_foot * kLieFromPillowM + rng.Uniform(-kLieLateralM, kLieLateralM);
+  if (mid_bed) lateral = mattress + rng.Uniform(-kMidBedLateralM, kMidBedLateralM);
   double jitter = rng.Uniform(-kYawJitterDeg, kYawJitterDeg) * kDegToRad;
   world::HumanSpec h;
   h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, front, lateral);
@@ -178,7 +187,7 @@ core::Status MakeReach(core::Rng& rng, EpisodeSpec* out) {
 // [lie])
 core::Status MakeScenePlanSimple(core::Rng& rng, EpisodeSpec* out) {
   if (rng.Uniform() < 0.5) {
-    SH_RETURN_IF_ERROR(MakeLie(rng, out));
+    SH_RETURN_IF_ERROR(MakeLie(rng, out, /*mid_bed=*/true));
     out->variant = "bed: sit on edge, lie";
     return absl::OkStatus();
   }

@@ -125,7 +125,11 @@ TEST(SuitesTest, LieProtocolRanges) {
     Eigen::Vector2d local = HumanInObjectFrame(s);
     EXPECT_GE(local.x() - hi.x(), 0.30 - kTol);
     EXPECT_LE(local.x() - hi.x(), 0.45 + kTol);
-    EXPECT_LE(std::abs(local.y()), 0.15 + kTol);  // the mattress is centred on the origin
+    // 0.65 m +- 0.1 m from the pillow's centre towards the foot end
+    const core::CatalogObject bed = Built(s);
+    auto [plo, phi] = core::ShapesBounds(bed.FindPart("pillow")->shapes);
+    double pillow_y = 0.5 * (plo.y() + phi.y());
+    EXPECT_LE(std::abs(std::abs(local.y() - pillow_y) - 0.65), 0.10 + kTol);
     EXPECT_LE(std::abs(Wrap(s.scene.humans[0].yaw_rad - o.yaw_rad)), 15 * kDegToRad + kTol);
     ASSERT_EQ(s.plan["steps"].size(), 2u);
     EXPECT_EQ(s.plan["steps"][0]["pairs"][1]["contact"], "not contact");
