@@ -2,7 +2,7 @@
 /// `simhuman eval` without the printing: runs a suite's seeded, independent episodes, appends
 /// one JSON line per finished episode to DIR/episodes.jsonl (flushed at once) and rewrites
 /// DIR/summary.json after every episode, so an interrupted eval keeps what finished. Formats
-/// in docs/FORMATS_run.md, protocols in docs/EVAL_PROTOCOLS.md.
+/// in docs/FORMATS.md, protocols in docs/EVAL_PROTOCOLS.md.
 
 #include <cstdint>
 #include <functional>
