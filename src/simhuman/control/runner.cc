@@ -66,6 +66,14 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
       obs.step_index = step;
       obs.task = &tasks[a];
       obs.body_points = world.BodyPoints(d, a);
+      if (options.heightmap_size > 0) {
+        const mjtNum* pelvis = d->xpos + 3 * world.agent(a).pelvis_body;
+        BuildHeightmap(catalog, Eigen::Vector3d(pelvis[0], pelvis[1], pelvis[2]),
+                       world::PelvisYaw(d, world.agent(a)), options.heightmap_size,
+                       options.heightmap_cell_m, &obs.heightmap);
+        obs.heightmap_size = options.heightmap_size;
+        obs.heightmap_cell_m = options.heightmap_cell_m;
+      }
       for (const ContactTerm& term : tasks[a].terms) {
         const Eigen::Vector3d& p = obs.body_points[static_cast<int>(term.joint)];
         obs.contact_offsets.push_back(term.Nearest(p, obs.body_points) - p);

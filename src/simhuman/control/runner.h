@@ -44,6 +44,10 @@ struct RunOptions {
     return p;
   }();
   double record_fps = 30;
+  /// Ego-centric height map handed to controllers (UniHSI's scene awareness): cells per side
+  /// and cell size. 0 cells turns it off.
+  int heightmap_size = 16;
+  double heightmap_cell_m = 0.1;
   bool record = true;
   double fall_head_height_m = 0.45;  ///< head below this (x scale) while not lying: a fall
   /// After the last step completes, keep simulating (controllers keep the last step) for this

@@ -108,8 +108,8 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
     // lying, the pelvis and head rest on their backs: touching distance is the body radius,
     // less what a soft pillow gives
     for (ContactTerm& t : task.terms) {
-      if (t.joint == core::BodyJoint::kPelvis) t.clearance_m = 0.09 * scale;
-      if (t.joint == core::BodyJoint::kHead) t.clearance_m = 0.075 * scale;
+      if (t.joint == core::BodyJoint::kPelvis) t.clearance_m = 0.07 * scale;
+      if (t.joint == core::BodyJoint::kHead) t.clearance_m = 0.06 * scale;
     }
   } else if (pelvis_on_seat) {
     task.posture = Posture::kSit;

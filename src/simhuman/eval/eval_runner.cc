@@ -65,6 +65,7 @@ nlohmann::ordered_json EpisodeRecordJson(const EpisodeRecord& r) {
   for (const auto& [key, value] : result.items()) {
     if (key != "success") j[key] = value;
   }
+  j["held"] = r.held;
   if (!r.extra.metric.empty()) {
     j["extra_check"] = r.extra.metric;
     j["extra_pass"] = r.extra.pass;
@@ -125,6 +126,8 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   const bool render = options.video_every > 0 && index % options.video_every == 0;
   control::RunOptions run;
   run.record = render;
+  // after the plan completes the episode goes on for kEvalSettleS: the final pose must hold
+  run.settle_s = kEvalSettleS;
   control::Trajectory trajectory;
   EpisodeRecord rec;
   rec.index = index;
@@ -132,7 +135,15 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   rec.variant = spec->variant;
   rec.result = RunWithControllers(**sim, *chain, *controllers, run, render ? &trajectory : nullptr);
   rec.extra = EvaluateExtra(*spec, (*sim)->catalog(), (*sim)->BodyPoints((*sim)->data(), 0));
-  rec.success = rec.result.success && rec.extra.pass;
+  if (rec.result.success) {
+    // the last step's pairs must still hold at the end of the settle time, without a fall
+    core::SceneCatalog now = (*sim)->catalog();
+    (*sim)->SyncCatalog((*sim)->data(), &now);
+    plan::StepEval last = plan::EvaluateStep(
+        chain->steps.back(), now, control::AllBodyPoints(**sim, (*sim)->data()), run.pair);
+    rec.held = last.complete && !rec.result.fell;
+  }
+  rec.success = rec.result.success && rec.held && rec.extra.pass;
   rec.scene = world::SceneToJson(spec->scene);
   rec.plan = spec->plan;
   if (render) {

@@ -19,13 +19,19 @@
 namespace simhuman::eval {
 
 /// One finished episode.
+/// Seconds an episode goes on after its plan completed; the final pose must still satisfy the
+/// last step (and the suite's extra check) at the end.
+inline constexpr double kEvalSettleS = 3.0;
+
 struct EpisodeRecord {
   int index = 0;                  ///< 0-based episode number
   uint64_t seed = 0;              ///< episode seed: DeriveSeed(eval seed, index)
   std::string variant;            ///< EpisodeSpec::variant
   control::EpisodeResult result;  ///< result.success is the plan's own success
   ExtraResult extra;
-  bool success = false;      ///< plan success and the extra check
+  /// The last step's pairs still hold kEvalSettleS after the plan completed, without a fall.
+  bool held = false;
+  bool success = false;      ///< plan success, held, and the extra check
   std::string sheet_path;    ///< contact sheet written for this episode, if any
   std::string render_error;  ///< why the contact sheet could not be written, if it failed
   nlohmann::json scene;      ///< world::SceneToJson of the episode's scene

@@ -111,12 +111,13 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
         return absl::InvalidArgumentError("object '" + obj.id + "': shape " + std::to_string(n) +
                                           " has an invalid size");
       }
-      bool in_part = false, soft = false;
+      bool in_part = false, soft = false, cushion = false;
       for (const auto& part : obj.parts) {
         for (const auto& ps : part.shapes) {
           bool same = SameShape(ps, s);
           in_part |= same;
           soft |= same && part.name == "pillow";
+          cushion |= same && part.name == "mattress";
         }
       }
       o << "<geom name=\"obj/" << obj.id << "/" << n++ << "\" type=\"" << GeomType(s.kind)
@@ -126,6 +127,8 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
       if (!obj.collides) o << " contype=\"0\" conaffinity=\"0\"";
       // pillows give: a head sinks a few centimetres
       if (soft) o << " solref=\"0.04 1\" solimp=\"0.2 0.9 0.05\"";
+      // mattresses give a little less than pillows
+      if (cushion) o << " solref=\"0.03 1\" solimp=\"0.4 0.95 0.04\"";
       if (obj.movable) {
         o << " mass=\"" << F(obj.mass_kg / std::max<size_t>(1, obj.shapes.size())) << "\"";
       }

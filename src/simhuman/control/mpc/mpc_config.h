@@ -25,7 +25,7 @@ struct MpcConfig {
   int threads = 2;
   // cost weights
   double w_track = 4.0;     ///< body points toward the reference pose trajectory
-  double w_contact = 12.0;  ///< contact terms (x adaptive weights, Eq. 9)
+  double w_contact = 30.0;  ///< contact terms (x adaptive weights, Eq. 9)
   double w_balance = 12.0;  ///< capture point over the feet (while not seated)
   double w_upright = 3.0;   ///< torso upright (stand and sit postures)
   double w_effort = 0.05;   ///< normalised actuator force squared

@@ -270,7 +270,10 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
       Eigen::Vector3d mid = 0.5 * (pts[static_cast<int>(core::BodyJoint::kLeftFoot)] +
                                    pts[static_cast<int>(core::BodyJoint::kRightFoot)]);
       if (balance) {
-        c += config_.w_balance * SmoothL1((cp.head<2>() - mid.head<2>()).norm(), 0.05);
+        double off = (cp.head<2>() - mid.head<2>()).norm();
+        // plus a steep wall near the edge of the support (feet ~0.1 m around their middle)
+        double out = std::max(0.0, off - 0.12 * scale);
+        c += config_.w_balance * (SmoothL1(off, 0.05) + 200.0 * out * out);
       } else if (sitting || low) {
         // seated: the capture point stays between the seat contact and the feet
         Eigen::Vector2d a2 = pelvis.head<2>(), b2 = mid.head<2>(), p2 = cp.head<2>();

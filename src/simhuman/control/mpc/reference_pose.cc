@@ -364,6 +364,17 @@ ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const 
       if (h.norm() < 1e-6) h = YawQuat(obj_yaw) * Eigen::Vector3d(0, 1, 0);
       h.normalize();
       Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+      // lie along the bed on the line nearest to where the agent is, as long as the head still
+      // lands on the pillow: less to shuffle across the mattress
+      for (const ContactTerm& t : task.terms) {
+        if (t.joint != core::BodyJoint::kHead || !t.part) continue;
+        Eigen::Vector3d across(-h.y(), h.x(), 0);
+        auto [plo, phi] = core::ShapesBounds(t.part->shapes);
+        Eigen::Vector3d half_w = t.object->pose.quat * (0.5 * (phi - plo));
+        double room = std::max(0.0, std::abs(half_w.dot(across)) - 0.12 * s);
+        double off = std::clamp((cur_pos - head).dot(across), -room, room);
+        head += across * off;
+      }
       if (task.posture == Posture::kLieBack) {
         v.quat = FrameQuat(up, h);
         v.pos = head - h * 0.62 * s;
