@@ -56,15 +56,14 @@ int ReportError(std::ostream& err, const std::string& command, const absl::Statu
 
 core::StatusOr<control::MpcConfig> ResolveConfig(const std::string& preset, bool preset_given,
                                                  const std::string& config_path) {
-  if (config_path.empty()) return control::MpcConfig::Preset(preset);
-  SH_ASSIGN_OR_RETURN(std::string text, core::ReadFile(config_path));
-  core::StatusOr<nlohmann::json> j = absl::InternalError("unparsed");
-  try {
-    j = core::ParseJson(text, config_path);
-  } catch (const nlohmann::json::exception& e) {
-    // ParseJson reports syntax errors; e.g. 1e999 overflows with out_of_range
-    j = absl::InvalidArgumentError(config_path + ": invalid JSON: " + e.what());
+  if (config_path.empty()) {
+    core::StatusOr<control::MpcConfig> c = control::MpcConfig::Preset(preset);
+    if (!c.ok()) return core::Annotate(c.status(), "--preset");
+    return c;
   }
+  SH_ASSIGN_OR_RETURN(std::string text, core::ReadFile(config_path));
+  // core::ParseJson reports syntax errors and overflows (e.g. 1e999) as statuses
+  core::StatusOr<nlohmann::json> j = core::ParseJson(text, config_path);
   if (!j.ok()) {
     std::string msg(j.status().message());
     if (HasBareWord(text, {"NaN", "nan", "Infinity", "inf"})) {

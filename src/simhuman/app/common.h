@@ -32,7 +32,7 @@ int ReportError(std::ostream& err, const std::string& command, const absl::Statu
 /// file, strictly, where keys the file leaves out come from the preset the file names, or else
 /// from `preset`; a file naming another preset than an explicit --preset is an error. Errors
 /// name the file (and the JSON pointer); a NaN or Infinity, which JSON cannot hold, is pointed
-/// out as such.
+/// out as such. An unknown preset (no file) is reported against "--preset".
 core::StatusOr<control::MpcConfig> ResolveConfig(const std::string& preset, bool preset_given,
                                                  const std::string& config_path);
 

@@ -102,11 +102,7 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
   }
   core::StatusOr<control::MpcConfig> config =
       ResolveConfig(flags.preset, flags.preset_given, flags.config);
-  if (!config.ok()) {
-    absl::Status st = config.status();
-    if (flags.config.empty()) st = core::Annotate(st, "--preset");
-    return ReportError(err, kCommand, st);
-  }
+  if (!config.ok()) return ReportError(err, kCommand, config.status());
   eval::EvalOptions options;
   options.suite = *suite;
   options.episodes = flags.episodes;

@@ -60,11 +60,7 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   }
   core::StatusOr<control::MpcConfig> config =
       ResolveConfig(flags.preset, flags.preset_given, flags.config);
-  if (!config.ok()) {
-    absl::Status st = config.status();
-    if (flags.config.empty()) st = core::Annotate(st, "--preset");
-    return ReportError(err, kCommand, st);
-  }
+  if (!config.ok()) return ReportError(err, kCommand, config.status());
 
   // scene, plan and whether it can be done from where the humans start
   core::StatusOr<world::SceneSpec> scene = world::LoadScene(flags.scene);
