@@ -8,6 +8,9 @@ pkgs=(
   libgtest-dev libgmock-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev
   libpng-dev ffmpeg
+  libcpp-httplib-dev
+  libtorch-dev libopenblas0-openmp
+  clang libfuzzer-14-dev libclang-rt-14-dev
 )
 missing=()
 for p in "${pkgs[@]}"; do
