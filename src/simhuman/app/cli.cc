@@ -10,13 +10,10 @@
 #include "simhuman/app/common.h"
 #include "simhuman/app/eval_command.h"
 #include "simhuman/app/run_command.h"
+#include "simhuman/core/version.h"
 #include "simhuman/eval/suites.h"
 #include "simhuman/world/health.h"
 #include "simhuman/world/scene.h"
-
-#ifndef SIMHUMAN_GIT_REV
-#define SIMHUMAN_GIT_REV "unknown"
-#endif
 
 namespace simhuman::app {
 namespace {
@@ -63,8 +60,8 @@ std::string ParsedCommand(const CLI::App& app) {
 }  // namespace
 
 std::string VersionText() {
-  return std::string("simhuman ") + kVersion + " (git " + SIMHUMAN_GIT_REV + ", MuJoCo " +
-         mj_versionString() + ")";
+  return std::string("simhuman ") + kVersion + " (git " + std::string(core::GitRevision()) +
+         ", MuJoCo " + mj_versionString() + ")";
 }
 
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {

@@ -3,12 +3,15 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <regex>
+#include <string>
 
 #include "simhuman/core/body_joint.h"
 #include "simhuman/core/geometry.h"
 #include "simhuman/core/json_io.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/core/scene_catalog.h"
+#include "simhuman/core/version.h"
 
 namespace simhuman::core {
 namespace {
@@ -144,6 +147,11 @@ TEST(JsonIoTest, AtomicWriteReplacesTheFile) {
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(*r, "two");
   std::remove(path.c_str());
+}
+
+TEST(VersionTest, GitRevisionIsAnAbbreviatedHashOrUnknown) {
+  const std::string rev(GitRevision());
+  EXPECT_TRUE(std::regex_match(rev, std::regex("[0-9a-f]{7,40}(-dirty)?|unknown"))) << rev;
 }
 
 }  // namespace

@@ -8,10 +8,7 @@
 
 #include "simhuman/core/json_io.h"
 #include "simhuman/core/rng.h"
-
-#ifndef SIMHUMAN_GIT_REV
-#define SIMHUMAN_GIT_REV "unknown"
-#endif
+#include "simhuman/core/version.h"
 
 namespace simhuman::eval {
 
@@ -109,7 +106,7 @@ nlohmann::ordered_json EpisodeResultJson(const control::EpisodeResult& r) {
 }
 
 nlohmann::ordered_json ProvenanceJson() {
-  return nlohmann::ordered_json{{"git_revision", SIMHUMAN_GIT_REV},
+  return nlohmann::ordered_json{{"git_revision", std::string(core::GitRevision())},
                                 {"mujoco_version", mj_versionString()}};
 }
 

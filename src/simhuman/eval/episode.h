@@ -56,7 +56,7 @@ std::string StepText(const plan::ContactStep& step);
 /// for a zero-length episode), step_completion_s.
 nlohmann::ordered_json EpisodeResultJson(const control::EpisodeResult& result);
 
-/// Where the results came from: git_revision (the build's SIMHUMAN_GIT_REV) and
+/// Where the results came from: git_revision (core::GitRevision(), refreshed each build) and
 /// mujoco_version (mj_versionString()).
 nlohmann::ordered_json ProvenanceJson();
 
