@@ -30,6 +30,9 @@ struct ContactTerm {
   std::optional<core::BodyJoint> target_joint;    ///< "right foot on left knee"
   Eigen::Vector3d dir = Eigen::Vector3d::Zero();  ///< unit vector, zero for "none"
   double clearance_m = 0.05;  ///< joint-centre to surface distance when touching
+  /// Added to the touching position when solving a reference pose: a controller's correction
+  /// of a steady miss (zero unless a controller sets it).
+  Eigen::Vector3d aim_offset = Eigen::Vector3d::Zero();
 
   /// Nearest point of the target to `p` (part surface or the target joint's position).
   Eigen::Vector3d Nearest(const Eigen::Vector3d& p,

@@ -39,6 +39,7 @@ const std::vector<Field>& Fields() {
       {"w_velocity", &MpcConfig::w_velocity, nullptr, 0, 1e6},
       {"w_com_velocity", &MpcConfig::w_com_velocity, nullptr, 0, 1e6},
       {"w_fall", &MpcConfig::w_fall, nullptr, 0, 1e6},
+      {"aim_gain", &MpcConfig::aim_gain, nullptr, 0, 2},
       {"fall_head_height_m", &MpcConfig::fall_head_height_m, nullptr, 0, 2},
   };
   return f;

@@ -34,6 +34,10 @@ struct MpcConfig {
   double w_com_velocity = 10.0;     ///< centre-of-mass speed squared (calm, human-paced motion)
   double w_fall = 30.0;             ///< head below its safe height
   double fall_head_height_m = 0.5;  ///< head below this (scaled) ends the episode as a fall
+  /// Aim correction for hand contacts: once the reference has arrived, the reference's hand
+  /// target moves past the contact point by this fraction of the remaining miss (position
+  /// servos under gravity leave a reaching hand short). 0 disables it.
+  double aim_gain = 0.8;
 
   /// Every field finite and in range; the message names the field and the valid range.
   absl::Status Validate() const;

@@ -156,6 +156,8 @@ void MpcController::StartStep(const Observation& obs, const StepTask& task) {
   const world::AgentIndex& a = world_->agent(agent_);
   task_ = task;
   step_index_ = obs.step_index;
+  next_aim_s_ = 0;
+  progress_floor_ = 0;
   ReferencePose start = GetAgentPose(a, obs.data);
   ReferencePose goal = SolveReferencePose(*world_, agent_, task_, obs.data, scratch_);
   std::vector<ReferencePose> keys = {start};
@@ -230,7 +232,7 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
     }
     RefPoints(t, &ref);
     double c = 0;
-    const double progress = Smoothstep((t - ramp_t0_) / ramp_s_);
+    const double progress = std::max(progress_floor_, Smoothstep((t - ramp_t0_) / ramp_s_));
     // reference tracking
     double track = 0;
     for (int b = 0; b < core::kNumBodyJoints; ++b) {
@@ -355,6 +357,8 @@ absl::Status MpcController::Act(const Observation& obs) {
     StartStep(obs, task_);
   }
 
+  if (!recovering_) CorrectAim(obs);
+
   // shift the nominal to start now
   const int K = config_.knots;
   const double span = config_.horizon_s;
@@ -411,6 +415,40 @@ absl::Status MpcController::Act(const Observation& obs) {
   last_cost_ = costs[best];
   ++iteration_;
   return absl::OkStatus();
+}
+
+void MpcController::CorrectAim(const Observation& obs) {
+  const double now = obs.time_s;
+  if (config_.aim_gain <= 0 || now < ramp_t0_ + ramp_s_ + 0.2 || now < next_aim_s_) return;
+  next_aim_s_ = now + 0.3;
+  const double scale = world_->agent(agent_).scale;
+  bool changed = false;
+  for (ContactTerm& t : task_.terms) {
+    bool hand = t.joint == core::BodyJoint::kLeftHand || t.joint == core::BodyJoint::kRightHand;
+    if (t.type != plan::ContactType::kContact || !hand) continue;
+    const Eigen::Vector3d& p = obs.body_points[static_cast<int>(t.joint)];
+    Eigen::Vector3d np = t.Nearest(p, obs.body_points);
+    Eigen::Vector3d dir = t.dir;
+    if (dir.squaredNorm() < 0.5) {
+      Eigen::Vector3d away = p - np;
+      dir = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
+    }
+    Eigen::Vector3d miss = np + dir * t.clearance_m - p;
+    // a miss this large is not a steady sag but a reach still under way (or out of range)
+    if (miss.norm() < 0.01 * scale || miss.norm() > 0.15 * scale) continue;
+    t.aim_offset += config_.aim_gain * miss;
+    double cap = 0.12 * scale;
+    if (t.aim_offset.norm() > cap) t.aim_offset *= cap / t.aim_offset.norm();
+    changed = true;
+  }
+  if (!changed) return;
+  // re-solve the goal with the corrected aim and move the reference there from the old goal
+  ReferencePoseOptions warm;
+  warm.warm_start = &goal_;
+  ReferencePose goal = SolveReferencePose(*world_, agent_, task_, obs.data, scratch_, warm);
+  SetReference(now, {goal_, goal}, obs.data);
+  stand_balance_from_s_ = 1e9;
+  progress_floor_ = 1.0;
 }
 
 void MpcController::Targets(double time_s, double* ctrl28) const {

@@ -44,6 +44,8 @@ class MpcController : public Controller {
   using Knots = std::vector<std::array<double, world::kHumanoidDofs>>;
   MpcController() = default;
   void StartStep(const Observation& obs, const StepTask& task);
+  /// Moves the reference's hand targets past their contact points by the steady miss.
+  void CorrectAim(const Observation& obs);
   ReferencePose RefPose(double t) const;
   std::array<double, world::kHumanoidDofs> RefHinges(double t) const;
   double SegmentSeconds(const ReferencePose& a, const ReferencePose& b) const;
@@ -73,6 +75,8 @@ class MpcController : public Controller {
   double stand_balance_from_s_ =
       1e9;  // after ramp_t0_; see StartStep  // seat height for sit postures (balance gating)
   bool recovering_ = false;
+  double next_aim_s_ = 0;      // next aim correction (see MpcConfig::aim_gain)
+  double progress_floor_ = 0;  // 1 once the goal has been reached and is only being refined
 
   // plan
   Knots nominal_;

@@ -106,7 +106,7 @@ std::vector<double> Residual(const Problem& pr, const Vars& v) {
         Eigen::Vector3d away = p - np;
         dir = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
       }
-      Eigen::Vector3d goal = np + dir * t.clearance_m;
+      Eigen::Vector3d goal = np + dir * t.clearance_m + t.aim_offset;
       for (int k = 0; k < 3; ++k) r.push_back(o.w_contact * (p[k] - goal[k]));
     } else {
       double dist = (p - np).norm();
@@ -391,6 +391,13 @@ ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const 
       pr.feet_on_floor = false;
       break;
     }
+  }
+
+  if (options.warm_start) {
+    const ReferencePose& w = *options.warm_start;
+    v.pos = Eigen::Vector3d(w.root[0], w.root[1], w.root[2]);
+    v.quat = Eigen::Quaterniond(w.root[3], w.root[4], w.root[5], w.root[6]).normalized();
+    v.h = w.hinges;
   }
 
   // Levenberg-Marquardt with forward-difference Jacobians

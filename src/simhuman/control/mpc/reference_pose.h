@@ -42,6 +42,9 @@ struct ReferencePoseOptions {
   /// trunk leaning forward and feet drawn back; 2 = seat-off, pelvis just off the seat with the
   /// centre of mass over the feet (feet where they are). 0 = the step's goal.
   int rise = 0;
+  /// Start the optimization from this pose instead of the base posture (which still anchors
+  /// the posture term); for small corrections of an already solved pose. Not owned.
+  const ReferencePose* warm_start = nullptr;
 };
 
 /// Solves the reference pose of `task` for agent `agent` of `world`. `d_now` is the current
