@@ -19,8 +19,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!chain.ok()) return 0;
   if (!plan::ValidateAndGround(*chain, scene).ok()) return 0;
   // what the writer writes, the reader must read back and ground again
-  std::string written =
-      plan::ContactChainToJson(*chain).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  std::string written = plan::ContactChainToJson(*chain).dump(
+      -1, ' ', false, nlohmann::json::error_handler_t::replace);
   absl::StatusOr<plan::ContactChain> again = plan::ParseAndGround(written, "roundtrip", scene);
   if (!again.ok() || again->steps.size() != chain->steps.size()) std::abort();
   return 0;

@@ -18,8 +18,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 4> kFieldFla
 }  // namespace
 
 void AddLlmFlags(CLI::App& command, LlmFlags& flags) {
-  CLI::Option_group* group =
-      command.add_option_group("LLM planner", "Settings of --planner llm");
+  CLI::Option_group* group = command.add_option_group("LLM planner", "Settings of --planner llm");
   group
       ->add_option("--llm-url", flags.url,
                    "Base URL of an OpenAI-compatible API (llama.cpp server, Ollama, vLLM, ...); "
@@ -32,8 +31,9 @@ void AddLlmFlags(CLI::App& command, LlmFlags& flags) {
       ->add_option("--llm-key-env", flags.key_env,
                    "Environment variable that holds the API key (unset: no key is sent)")
       ->capture_default_str();
-  group->add_flag("--llm-fallback", flags.fallback,
-                  "Use the offline planner when the LLM fails (unreachable, timeout, no valid plan)");
+  group->add_flag(
+      "--llm-fallback", flags.fallback,
+      "Use the offline planner when the LLM fails (unreachable, timeout, no valid plan)");
 }
 
 core::StatusOr<language::LlmPlannerOptions> LlmOptionsFromFlags(
@@ -56,8 +56,7 @@ core::StatusOr<language::LlmPlannerOptions> LlmOptionsFromFlags(
   for (const auto& [field, flag] : kFieldFlags) {
     std::string prefix = std::string(field) + ": ";
     if (message.compare(0, prefix.size(), prefix) == 0) {
-      return core::Status(status.code(),
-                          std::string(flag) + ": " + message.substr(prefix.size()));
+      return core::Status(status.code(), std::string(flag) + ": " + message.substr(prefix.size()));
     }
   }
   return status;  // a field without a flag keeps its default, so this is not expected

@@ -14,7 +14,8 @@ using ::testing::StartsWith;
 
 class NullPlanner : public language::Planner {
  public:
-  core::StatusOr<language::PlanResult> Plan(std::string_view, const language::PlanContext&) override {
+  core::StatusOr<language::PlanResult> Plan(std::string_view,
+                                            const language::PlanContext&) override {
     return absl::UnimplementedError("null");
   }
   std::string name() const override { return "null"; }
@@ -40,8 +41,8 @@ std::string Error(const std::vector<std::string>& args, language::Planner* fallb
 TEST(LlmFlagsTest, FlagsBecomeOptions) {
   NullPlanner offline;
   core::StatusOr<language::LlmPlannerOptions> o = LlmOptionsFromFlags(
-      Parse({"--llm-url", "http://localhost:11434/v1", "--llm-model", "qwen2.5:7b",
-             "--llm-timeout", "12.5", "--llm-key-env", "OLLAMA_KEY", "--llm-fallback"}),
+      Parse({"--llm-url", "http://localhost:11434/v1", "--llm-model", "qwen2.5:7b", "--llm-timeout",
+             "12.5", "--llm-key-env", "OLLAMA_KEY", "--llm-fallback"}),
       &offline);
   ASSERT_TRUE(o.ok()) << o.status();
   EXPECT_EQ(o->url, "http://localhost:11434/v1");

@@ -150,21 +150,24 @@ core::Status SplitUrl(const std::string& url, std::string* scheme_host_port, std
   if (scheme != "http" && scheme != "https") return bad("scheme '" + scheme + "' is not http(s)");
   size_t authority_begin = sep + 3;
   size_t path_begin = url.find('/', authority_begin);
-  std::string authority = url.substr(authority_begin, path_begin == std::string::npos
-                                                          ? std::string::npos
-                                                          : path_begin - authority_begin);
+  std::string authority =
+      url.substr(authority_begin, path_begin == std::string::npos ? std::string::npos
+                                                                  : path_begin - authority_begin);
   if (authority.find('@') != std::string::npos) {
-    return bad("credentials in the URL are not accepted; put the API key in the environment "
-               "variable named by the key option");
+    return bad(
+        "credentials in the URL are not accepted; put the API key in the environment "
+        "variable named by the key option");
   }
-  if (url.find_first_of("?#") != std::string::npos) return bad("a query or fragment is not allowed");
+  if (url.find_first_of("?#") != std::string::npos)
+    return bad("a query or fragment is not allowed");
   std::string host = authority;
   size_t colon = authority.rfind(':');
   if (colon != std::string::npos && authority.find(']') == std::string::npos) {
     host = authority.substr(0, colon);
     std::string port = authority.substr(colon + 1);
-    if (port.empty() || port.size() > 5 || port.find_first_not_of("0123456789") != std::string::npos ||
-        std::stoi(port) < 1 || std::stoi(port) > 65535) {
+    if (port.empty() || port.size() > 5 ||
+        port.find_first_not_of("0123456789") != std::string::npos || std::stoi(port) < 1 ||
+        std::stoi(port) > 65535) {
       return bad("port '" + port + "' is not in 1..65535");
     }
   }
@@ -193,8 +196,7 @@ core::StatusOr<std::string> HttpChatClient::Complete(const std::vector<ChatMessa
   for (const ChatMessage& m : messages) {
     request["messages"].push_back({{"role", m.role}, {"content", m.content}});
   }
-  const std::string body =
-      request.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  const std::string body = request.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 
   // never let the key reach a message, even if a server echoes it back
   auto scrub = [this](core::Status s) {
@@ -252,9 +254,9 @@ core::StatusOr<std::string> HttpChatClient::Complete(const std::vector<ChatMessa
     const double elapsed_s = std::chrono::duration<double>(Clock::now() - start).count();
     std::optional<double> retry_after_s;
     if (too_big) {
-      return fail(absl::StatusCode::kUnavailable,
-                  "the reply is larger than max_reply_bytes (" +
-                      std::to_string(options_.max_reply_bytes) + " bytes)");
+      return fail(absl::StatusCode::kUnavailable, "the reply is larger than max_reply_bytes (" +
+                                                      std::to_string(options_.max_reply_bytes) +
+                                                      " bytes)");
     }
     if (!res) {
       httplib::Error e = res.error();
@@ -266,13 +268,14 @@ core::StatusOr<std::string> HttpChatClient::Complete(const std::vector<ChatMessa
       }
       bool retryable = e == httplib::Error::Connection || e == httplib::Error::Read ||
                        e == httplib::Error::Write || e == httplib::Error::Unknown;
-      last_error = "request failed: " + httplib::to_string(e) +
-                   (e == httplib::Error::Connection ? " (is the server running at that address?)"
-                                                    : "");
+      last_error =
+          "request failed: " + httplib::to_string(e) +
+          (e == httplib::Error::Connection ? " (is the server running at that address?)" : "");
       if (!retryable) return fail(absl::StatusCode::kUnavailable, last_error);
     } else if (res->status >= 200 && res->status < 300) {
       core::StatusOr<std::string> content = ContentOf(reply);
-      if (!content.ok()) return fail(content.status().code(), std::string(content.status().message()));
+      if (!content.ok())
+        return fail(content.status().code(), std::string(content.status().message()));
       return content;
     } else if (res->status == 429 || res->status >= 500) {
       last_error = "HTTP " + std::to_string(res->status) + ": " + ServerMessage(reply);
@@ -284,8 +287,8 @@ core::StatusOr<std::string> HttpChatClient::Complete(const std::vector<ChatMessa
       } else if (res->status == 404) {
         hint = " (check the URL, e.g. http://127.0.0.1:8080/v1, and the model name)";
       }
-      return fail(absl::StatusCode::kUnavailable, "HTTP " + std::to_string(res->status) + hint +
-                                                      ": " + ServerMessage(reply));
+      return fail(absl::StatusCode::kUnavailable,
+                  "HTTP " + std::to_string(res->status) + hint + ": " + ServerMessage(reply));
     }
     if (attempt == attempts) break;
     // back off before the next attempt; a server's Retry-After is honoured up to the cap
@@ -293,9 +296,8 @@ core::StatusOr<std::string> HttpChatClient::Complete(const std::vector<ChatMessa
     backoff_s *= 2.0;
     std::this_thread::sleep_for(std::chrono::duration<double>(wait_s));
   }
-  return fail(absl::StatusCode::kUnavailable,
-              last_error + " (after " + std::to_string(attempts) +
-                  (attempts == 1 ? " attempt)" : " attempts)"));
+  return fail(absl::StatusCode::kUnavailable, last_error + " (after " + std::to_string(attempts) +
+                                                  (attempts == 1 ? " attempt)" : " attempts)"));
 }
 
 }  // namespace simhuman::language

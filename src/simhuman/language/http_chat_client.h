@@ -23,15 +23,15 @@ struct ChatClientOptions {
   /// Base URL of the API, "http://host[:port][/path]" or "https://...", e.g.
   /// "http://127.0.0.1:8080/v1"; "/chat/completions" is appended.
   std::string url = "http://127.0.0.1:8080/v1";
-  std::string model;               ///< the "model" field of the request (required)
-  std::string api_key;             ///< empty: no Authorization header
-  double timeout_s = 60.0;         ///< per attempt: connect, send, and the whole reply
-  int max_retries = 2;             ///< extra attempts after a retryable failure, 0..10
-  double backoff_s = 0.5;          ///< first wait between attempts; doubles each retry
-  double max_backoff_s = 8.0;      ///< cap of every wait, including a server's Retry-After
-  size_t max_reply_bytes = 262144; ///< a longer response body is an error
-  double temperature = 0.0;        ///< 0..2
-  int max_tokens = 2048;           ///< "max_tokens" of the request; 0: not sent
+  std::string model;                ///< the "model" field of the request (required)
+  std::string api_key;              ///< empty: no Authorization header
+  double timeout_s = 60.0;          ///< per attempt: connect, send, and the whole reply
+  int max_retries = 2;              ///< extra attempts after a retryable failure, 0..10
+  double backoff_s = 0.5;           ///< first wait between attempts; doubles each retry
+  double max_backoff_s = 8.0;       ///< cap of every wait, including a server's Retry-After
+  size_t max_reply_bytes = 262144;  ///< a longer response body is an error
+  double temperature = 0.0;         ///< 0..2
+  int max_tokens = 2048;            ///< "max_tokens" of the request; 0: not sent
 
   /// OK, or InvalidArgument naming the field ("timeout_s: ...") and its valid range.
   core::Status Validate() const;

@@ -22,9 +22,9 @@ TEST(SplitUrlTest, AcceptsHttpAndHttps) {
 
 TEST(SplitUrlTest, RejectsMalformedUrls) {
   std::string base, path;
-  for (const char* bad : {"127.0.0.1:8080", "ftp://host/", "http://:80/v1", "http://h:0/",
-                          "http://h:99999/", "http://user:pw@h/v1", "http://h/v1?x=1",
-                          "http://h /v1", ""}) {
+  for (const char* bad :
+       {"127.0.0.1:8080", "ftp://host/", "http://:80/v1", "http://h:0/", "http://h:99999/",
+        "http://user:pw@h/v1", "http://h/v1?x=1", "http://h /v1", ""}) {
     core::Status s = SplitUrl(bad, &base, &path);
     EXPECT_EQ(s.code(), absl::StatusCode::kInvalidArgument) << bad;
     EXPECT_THAT(std::string(s.message()), HasSubstr("expected http://host[:port][/path]")) << bad;

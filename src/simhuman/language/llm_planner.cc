@@ -76,8 +76,9 @@ core::Status LlmPlannerOptions::Validate() const {
                                       std::to_string(max_command_bytes));
   }
   if (template_dir.empty()) {
-    return absl::InvalidArgumentError("template_dir: a folder with system.txt, user.txt and "
-                                      "repair.txt is required, e.g. assets/prompts");
+    return absl::InvalidArgumentError(
+        "template_dir: a folder with system.txt, user.txt and "
+        "repair.txt is required, e.g. assets/prompts");
   }
   return absl::OkStatus();
 }
@@ -104,8 +105,9 @@ core::StatusOr<std::vector<ChatMessage>> LlmPlanner::BuildMessages(
         " bytes (max_command_bytes); split it into shorter commands");
   }
   if (command.find_first_not_of(" \t\r\n") == std::string_view::npos) {
-    return absl::InvalidArgumentError("llm planner: the command is empty; say what the human "
-                                      "should do, e.g. \"sit on the chair\"");
+    return absl::InvalidArgumentError(
+        "llm planner: the command is empty; say what the human "
+        "should do, e.g. \"sit on the chair\"");
   }
   std::map<std::string, std::string> values = DescribeScene(*context.scene, context.agents);
   values["command"] = QuoteCommand(command);
@@ -120,8 +122,7 @@ core::StatusOr<std::vector<ChatMessage>> LlmPlanner::BuildMessages(
   return messages;
 }
 
-core::StatusOr<PlanResult> LlmPlanner::Plan(std::string_view command,
-                                            const PlanContext& context) {
+core::StatusOr<PlanResult> LlmPlanner::Plan(std::string_view command, const PlanContext& context) {
   last_fallback_reason_.clear();
   last_requests_ = 0;
   // our own input errors never fall back
@@ -206,10 +207,10 @@ core::StatusOr<PlanResult> LlmPlanner::PlanWithLlm(std::string_view command,
     messages.push_back({"assistant", reply->substr(0, kMaxEchoedReplyBytes)});
     messages.push_back({"user", *std::move(repair)});
   }
-  return absl::InvalidArgumentError(
-      "llm planner: no valid plan from the model after " +
-      std::to_string(options_.max_repair_rounds) + " repair round" +
-      (options_.max_repair_rounds == 1 ? "" : "s") + "; last error: " + last_error);
+  return absl::InvalidArgumentError("llm planner: no valid plan from the model after " +
+                                    std::to_string(options_.max_repair_rounds) + " repair round" +
+                                    (options_.max_repair_rounds == 1 ? "" : "s") +
+                                    "; last error: " + last_error);
 }
 
 std::string ExplainStep(const plan::ContactStep& step) {

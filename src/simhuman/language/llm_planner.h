@@ -25,11 +25,11 @@ struct LlmPlannerOptions {
   /// Name of the environment variable holding the API key (read at each Plan() call; unset or
   /// empty: no Authorization header). The key is never logged or put in a status message.
   std::string api_key_env = "SIMHUMAN_LLM_API_KEY";
-  double timeout_s = 60.0;  ///< per HTTP attempt: connect, send and the whole reply
-  int max_retries = 2;      ///< retries after connection errors, 429 and 5xx; 0..10
-  double backoff_s = 0.5;   ///< first wait between retries; doubles each retry
-  double max_backoff_s = 8.0;   ///< cap of every wait, including a server's Retry-After
-  int max_repair_rounds = 2;    ///< rejected replies sent back with their errors; 0..5
+  double timeout_s = 60.0;              ///< per HTTP attempt: connect, send and the whole reply
+  int max_retries = 2;                  ///< retries after connection errors, 429 and 5xx; 0..10
+  double backoff_s = 0.5;               ///< first wait between retries; doubles each retry
+  double max_backoff_s = 8.0;           ///< cap of every wait, including a server's Retry-After
+  int max_repair_rounds = 2;            ///< rejected replies sent back with their errors; 0..5
   size_t max_reply_bytes = 256 * 1024;  ///< a longer HTTP reply body is an error
   size_t max_command_bytes = 2000;      ///< a longer command is InvalidArgument
   double temperature = 0.0;             ///< 0..2; 0 for repeatable plans

@@ -14,11 +14,11 @@ namespace simhuman::language {
 namespace {
 
 using ::testing::AllOf;
+using testing::FakeChatServer;
+using testing::FakeReply;
 using ::testing::HasSubstr;
 using ::testing::Not;
 using ::testing::StartsWith;
-using testing::FakeChatServer;
-using testing::FakeReply;
 
 constexpr char kKeyEnv[] = "SIMHUMAN_LLM_TEST_KEY";
 constexpr char kSecretKey[] = "sk-test-SECRET-4242";
@@ -123,8 +123,8 @@ TEST_F(LlmPlannerTest, GoodPlanIsParsedAndGrounded) {
   EXPECT_THAT(user, AllOf(HasSubstr("chair000 (red chair)"), HasSubstr("bed001 (bed)"),
                           HasSubstr("[OBJECT: chair000] has PARTS: [seat surface, back surface"),
                           HasSubstr("[OBJECT: bed001] is at x = 3.00 m"),
-                          HasSubstr("Human 0 (agent 0) is standing"),
-                          HasSubstr("right foot"), HasSubstr("\"sit on the chair\"")));
+                          HasSubstr("Human 0 (agent 0) is standing"), HasSubstr("right foot"),
+                          HasSubstr("\"sit on the chair\"")));
   EXPECT_EQ(reqs[0].authorization, "");  // no key in the environment: no header
 }
 
@@ -183,9 +183,10 @@ TEST_F(LlmPlannerTest, UnknownObjectThreeTimesFailsWithTheGroundingError) {
   core::StatusOr<PlanResult> r = PlanCommand("play the piano");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
-  EXPECT_THAT(std::string(r.status().message()),
-              AllOf(HasSubstr("after 2 repair rounds"), HasSubstr("llm reply: /steps/0/pairs/0/object"),
-                    HasSubstr("piano003"), HasSubstr("chair000, bed001")));
+  EXPECT_THAT(
+      std::string(r.status().message()),
+      AllOf(HasSubstr("after 2 repair rounds"), HasSubstr("llm reply: /steps/0/pairs/0/object"),
+            HasSubstr("piano003"), HasSubstr("chair000, bed001")));
   EXPECT_EQ(server_.requests().size(), 3u);
   EXPECT_THAT(LastMessage(2), HasSubstr("piano003"));  // the repair rounds named the culprit
 }
@@ -240,8 +241,9 @@ TEST_F(LlmPlannerTest, ClientErrorIsNotRetried) {
   core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), absl::StatusCode::kUnavailable);
-  EXPECT_THAT(std::string(r.status().message()), AllOf(HasSubstr("HTTP 404"), HasSubstr("check the URL"),
-                                          HasSubstr("model 'test-model' not found")));
+  EXPECT_THAT(std::string(r.status().message()),
+              AllOf(HasSubstr("HTTP 404"), HasSubstr("check the URL"),
+                    HasSubstr("model 'test-model' not found")));
   EXPECT_EQ(server_.requests().size(), 1u);
 }
 
@@ -251,7 +253,8 @@ TEST_F(LlmPlannerTest, OversizedReplyIsRejected) {
   core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), absl::StatusCode::kUnavailable);
-  EXPECT_THAT(std::string(r.status().message()), HasSubstr("larger than max_reply_bytes (4096 bytes)"));
+  EXPECT_THAT(std::string(r.status().message()),
+              HasSubstr("larger than max_reply_bytes (4096 bytes)"));
 }
 
 TEST_F(LlmPlannerTest, DefaultReplyCapRejectsAQuarterMegabyte) {
@@ -296,12 +299,13 @@ TEST_F(LlmPlannerTest, HostileReplyIsOnlyEverReadAsAPlan) {
       R"({"steps": [{"pairs": [{"object": "chair000", "part": "seat", "joint": "pelvis",
          "contact": "contact", "direction": "up"}]}], "exec": "rm -rf /"})"));
   // a plan for a different scene
-  server_.Push(FakeReply::Completion(
-      R"([[["sofa003", "seat surface", "pelvis", "contact", "up"]]])"));
+  server_.Push(
+      FakeReply::Completion(R"([[["sofa003", "seat surface", "pelvis", "contact", "up"]]])"));
   core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), absl::StatusCode::kInvalidArgument);
-  EXPECT_THAT(std::string(r.status().message()), AllOf(HasSubstr("sofa003"), HasSubstr("chair000, bed001")));
+  EXPECT_THAT(std::string(r.status().message()),
+              AllOf(HasSubstr("sofa003"), HasSubstr("chair000, bed001")));
   EXPECT_THAT(LastMessage(1), HasSubstr("no JSON plan found"));
   EXPECT_THAT(LastMessage(2), AllOf(HasSubstr("'exec'"), HasSubstr("steps")));
 }
@@ -356,11 +360,13 @@ TEST_F(LlmPlannerTest, ApiKeyIsSentAsBearerAndAppearsInNoError) {
 
   core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
   ASSERT_FALSE(r.ok());
-  EXPECT_THAT(std::string(r.status().message()),
-              AllOf(HasSubstr("HTTP 401"), HasSubstr("check the API key"), Not(HasSubstr(kSecretKey))));
+  EXPECT_THAT(
+      std::string(r.status().message()),
+      AllOf(HasSubstr("HTTP 401"), HasSubstr("check the API key"), Not(HasSubstr(kSecretKey))));
   r = PlanCommand("sit on the chair");
   ASSERT_FALSE(r.ok());
-  EXPECT_THAT(std::string(r.status().message()), AllOf(HasSubstr("<redacted>"), Not(HasSubstr(kSecretKey))));
+  EXPECT_THAT(std::string(r.status().message()),
+              AllOf(HasSubstr("<redacted>"), Not(HasSubstr(kSecretKey))));
 }
 
 TEST_F(LlmPlannerTest, OverlongCommandIsRejectedBeforeAnyRequest) {
@@ -403,8 +409,8 @@ TEST_F(LlmPlannerTest, FallbackPlannerIsUsedWhenTheLlmFails) {
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_EQ(stub.calls, 1);
   ASSERT_EQ(r->explanation.size(), r->chain.steps.size());
-  EXPECT_THAT(r->explanation[0], AllOf(StartsWith(std::string(kFallbackNote)), HasSubstr("HTTP 500"),
-                                       HasSubstr("get close to the chair")));
+  EXPECT_THAT(r->explanation[0], AllOf(StartsWith(std::string(kFallbackNote)),
+                                       HasSubstr("HTTP 500"), HasSubstr("get close to the chair")));
   EXPECT_THAT(planner_->last_fallback_reason(), HasSubstr("HTTP 500"));
 
   // not used when the LLM succeeds, nor for our own input errors

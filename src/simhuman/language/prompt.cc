@@ -87,7 +87,7 @@ core::Status CheckOne(std::string_view text, std::string_view source,
 }  // namespace
 
 std::vector<std::string> PromptPlaceholderNames() {
-  return {"objects", "parts",      "layout",  "humans", "joints",
+  return {"objects",       "parts",      "layout",  "humans", "joints",
           "contact_types", "directions", "command", "errors"};
 }
 
@@ -184,7 +184,9 @@ std::map<std::string, std::string> DescribeScene(const core::SceneCatalog& scene
     const AgentStart& s = agents[a];
     Eigen::Vector3d p(s.x_m, s.y_m, 0.0);
     humans += "Human " + std::to_string(a) + " (agent " + std::to_string(a) + ") is " +
-              (s.posture == "sit" ? "sitting" : s.posture == "lie" ? "lying" : "standing") +
+              (s.posture == "sit"   ? "sitting"
+               : s.posture == "lie" ? "lying"
+                                    : "standing") +
               " at x = " + Fixed(s.x_m, 2) + " m, y = " + Fixed(s.y_m, 2) + " m.";
     for (const core::CatalogObject& o : scene.objects) {
       double d = Distance2d(p, o.pose.pos);

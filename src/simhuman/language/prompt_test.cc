@@ -41,9 +41,8 @@ TEST(PromptTest, DescribeSceneFillsTheBackground) {
 }
 
 TEST(PromptTest, FillTemplateIsOnePass) {
-  core::StatusOr<std::string> s =
-      FillTemplate("a {{command}} b {{objects}}", {{"command", "{{objects}}"}, {"objects", "X"}},
-                   "t");
+  core::StatusOr<std::string> s = FillTemplate("a {{command}} b {{objects}}",
+                                               {{"command", "{{objects}}"}, {"objects", "X"}}, "t");
   ASSERT_TRUE(s.ok());
   EXPECT_EQ(*s, "a {{objects}} b X");
   EXPECT_THAT(std::string(FillTemplate("{{nope}}", {}, "user.txt").status().message()),
@@ -53,8 +52,9 @@ TEST(PromptTest, FillTemplateIsOnePass) {
 TEST(PromptTest, TemplateChecksNameTheFileAndPlaceholder) {
   PromptTemplates t{"rules {{colour}}", "{{command}}", "{{errors}}"};
   core::Status s = CheckPromptTemplates(t, "dir");
-  EXPECT_THAT(std::string(s.message()), HasSubstr("dir/system.txt: unknown placeholder '{{colour}}'; valid "
-                                     "placeholders: objects, parts"));
+  EXPECT_THAT(std::string(s.message()),
+              HasSubstr("dir/system.txt: unknown placeholder '{{colour}}'; valid "
+                        "placeholders: objects, parts"));
   t = {"", "no command here", "{{errors}}"};
   EXPECT_THAT(std::string(CheckPromptTemplates(t, "dir").message()),
               HasSubstr("dir/user.txt: the required placeholder '{{command}}' is missing"));

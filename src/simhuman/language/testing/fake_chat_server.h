@@ -27,14 +27,13 @@ struct FakeReply {
 
   /// A 200 chat completion whose message content is `content`.
   static FakeReply Completion(const std::string& content) {
-    nlohmann::json j = {
-        {"id", "chatcmpl-fake"},
-        {"object", "chat.completion"},
-        {"model", "fake"},
-        {"choices",
-         {{{"index", 0},
-           {"message", {{"role", "assistant"}, {"content", content}}},
-           {"finish_reason", "stop"}}}}};
+    nlohmann::json j = {{"id", "chatcmpl-fake"},
+                        {"object", "chat.completion"},
+                        {"model", "fake"},
+                        {"choices",
+                         {{{"index", 0},
+                           {"message", {{"role", "assistant"}, {"content", content}}},
+                           {"finish_reason", "stop"}}}}};
     FakeReply r;
     r.body = j.dump();
     return r;
@@ -61,9 +60,8 @@ class FakeChatServer {
  public:
   FakeChatServer() {
     server_.set_tcp_nodelay(true);
-    server_.Post("/v1/chat/completions", [this](const httplib::Request& req, httplib::Response& res) {
-      Handle(req, res);
-    });
+    server_.Post("/v1/chat/completions",
+                 [this](const httplib::Request& req, httplib::Response& res) { Handle(req, res); });
     port_ = server_.bind_to_any_port("127.0.0.1");
     thread_ = std::thread([this] { server_.listen_after_bind(); });
     while (!server_.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -105,7 +103,8 @@ class FakeChatServer {
       std::unique_lock<std::mutex> lock(mu_);
       RecordedRequest r;
       r.path = req.path;
-      r.authorization = req.has_header("Authorization") ? req.get_header_value("Authorization") : "";
+      r.authorization =
+          req.has_header("Authorization") ? req.get_header_value("Authorization") : "";
       r.body = req.body;
       r.json = nlohmann::json::parse(req.body, nullptr, false);
       requests_.push_back(std::move(r));
@@ -116,7 +115,8 @@ class FakeChatServer {
         script_.pop_front();
       }
       if (reply.delay_s > 0) {
-        cv_.wait_for(lock, std::chrono::duration<double>(reply.delay_s), [this] { return stopping_; });
+        cv_.wait_for(lock, std::chrono::duration<double>(reply.delay_s),
+                     [this] { return stopping_; });
       }
     }
     res.status = reply.status;
