@@ -15,7 +15,8 @@ namespace {
 
 constexpr std::string_view kOpen = "{{";
 constexpr std::string_view kClose = "}}";
-// an object closer than this to a human is "close"; farther needs a get-close step first
+// an object whose footprint is closer than this to a human is "close"; farther needs a
+// get-close step first
 constexpr double kCloseDistanceM = 1.0;
 constexpr double kRadToDeg = 180.0 / M_PI;
 
@@ -45,6 +46,16 @@ std::string SideWords(const core::CatalogObject& ref, const Eigen::Vector3d& p_w
 
 double Distance2d(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::hypot(a.x() - b.x(), a.y() - b.y());
+}
+
+// floor distance from `p_world` to the object's footprint (its LocalBounds in x and y)
+double FootprintDistance(const core::CatalogObject& o, const Eigen::Vector3d& p_world) {
+  if (o.shapes.empty()) return Distance2d(o.pose.pos, p_world);
+  auto [lo, hi] = o.LocalBounds();
+  Eigen::Vector3d p = o.pose.ApplyInverse(p_world);
+  double dx = std::max({lo.x() - p.x(), 0.0, p.x() - hi.x()});
+  double dy = std::max({lo.y() - p.y(), 0.0, p.y() - hi.y()});
+  return std::hypot(dx, dy);
 }
 
 std::string Describe(const core::CatalogObject& o) {
@@ -189,7 +200,7 @@ std::map<std::string, std::string> DescribeScene(const core::SceneCatalog& scene
                                     : "standing") +
               " at x = " + Fixed(s.x_m, 2) + " m, y = " + Fixed(s.y_m, 2) + " m.";
     for (const core::CatalogObject& o : scene.objects) {
-      double d = Distance2d(p, o.pose.pos);
+      double d = FootprintDistance(o, p);
       humans += " [OBJECT: " + o.id + "] is " + Fixed(d, 1) + " m away" +
                 (d < kCloseDistanceM ? " (close)" : " (not close)") + ".";
     }

@@ -45,7 +45,8 @@ core::StatusOr<std::string> FillTemplate(std::string_view text,
 
 /// The scene in words, one value per placeholder: "objects", "parts", "layout", "humans",
 /// "joints", "contact_types", "directions". Objects are named by id, which is what a plan must
-/// use. `agents` empty means one standing human at (0, 0).
+/// use; a human's distance to an object is measured on the floor to the object's footprint
+/// (LocalBounds), "close" under 1 m. `agents` empty means one standing human at (0, 0).
 std::map<std::string, std::string> DescribeScene(const core::SceneCatalog& scene,
                                                  const std::vector<AgentStart>& agents);
 

@@ -22,7 +22,7 @@ TEST(PromptTest, ShippedTemplatesLoad) {
 TEST(PromptTest, DescribeSceneFillsTheBackground) {
   core::SceneCatalog scene = plan::fixtures::MakeTestScene();
   AgentStart sitting;
-  sitting.x_m = 0.5;
+  sitting.x_m = 1.1;
   sitting.posture = "sit";
   std::map<std::string, std::string> v = DescribeScene(scene, {sitting});
   EXPECT_EQ(v["objects"], "chair000 (red chair), bed001 (bed)");
@@ -33,9 +33,11 @@ TEST(PromptTest, DescribeSceneFillsTheBackground) {
                                      "facing 90 degrees. It is 3.0 m from [OBJECT: chair000], "
                                      "in front of it."));
   EXPECT_THAT(v["layout"], HasSubstr("from [OBJECT: bed001], to the left of it."));
-  EXPECT_THAT(v["humans"], HasSubstr("Human 0 (agent 0) is sitting at x = 0.50 m"));
-  EXPECT_THAT(v["humans"], HasSubstr("[OBJECT: chair000] is 0.5 m away (close)"));
-  EXPECT_THAT(v["humans"], HasSubstr("[OBJECT: bed001] is 2.5 m away (not close)"));
+  EXPECT_THAT(v["humans"], HasSubstr("Human 0 (agent 0) is sitting at x = 1.10 m"));
+  // distances to the footprints: the chair's front edge is at x = 0.25, the bed's near long
+  // side at x = 2.5
+  EXPECT_THAT(v["humans"], HasSubstr("[OBJECT: chair000] is 0.9 m away (close)"));
+  EXPECT_THAT(v["humans"], HasSubstr("[OBJECT: bed001] is 1.4 m away (not close)"));
   EXPECT_THAT(v["joints"], HasSubstr("pelvis, torso, head, left shoulder"));
   EXPECT_EQ(v["directions"], "up, down, front, back, left, right, none");
 }
