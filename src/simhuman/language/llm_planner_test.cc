@@ -5,10 +5,14 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
+#include "simhuman/core/json_io.h"
+#include "simhuman/language/reply_extract.h"
 #include "simhuman/language/testing/fake_chat_server.h"
 #include "simhuman/plan/test_scene.h"
+#include "simhuman/plan/validate.h"
 
 namespace simhuman::language {
 namespace {
@@ -203,6 +207,29 @@ TEST_F(LlmPlannerTest, SlowReplyTimesOut) {
   EXPECT_THAT(std::string(r.status().message()), HasSubstr("within the timeout of 0.15 s"));
   EXPECT_LT(Seconds(start), kFastS);
   EXPECT_EQ(server_.requests().size(), 1u);  // timeouts are not retried
+}
+
+TEST_F(LlmPlannerTest, TrickledReplyHitsTheWholeReplyDeadline) {
+  // every chunk arrives well within the socket read timeout; the reply as a whole does not
+  FakeReply trickle = FakeReply::Completion(kGoodPlan);
+  trickle.trickle_s = 0.02;
+  server_.Push(trickle);
+  options_.timeout_s = 0.2;
+  auto start = std::chrono::steady_clock::now();
+  core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().code(), absl::StatusCode::kDeadlineExceeded);
+  EXPECT_LT(Seconds(start), kFastS);
+}
+
+TEST_F(LlmPlannerTest, RetryAfterAsADateFallsBackToTheBackoff) {
+  FakeReply limited = FakeReply::Error(429, "slow down");
+  limited.headers.push_back({"Retry-After", "Wed, 21 Oct 2015 07:28:00 GMT"});
+  server_.Push(limited);
+  server_.Push(FakeReply::Completion(kGoodPlan));
+  core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_EQ(server_.requests().size(), 2u);
 }
 
 TEST_F(LlmPlannerTest, ServerErrorThenSuccessIsRetried) {
@@ -421,6 +448,22 @@ TEST_F(LlmPlannerTest, FallbackPlannerIsUsedWhenTheLlmFails) {
   options_.max_command_bytes = 5;
   EXPECT_FALSE(PlanCommand("sit on the chair").ok());
   EXPECT_EQ(stub.calls, 1);
+}
+
+// the fuzz seed corpora are valid plans of the test scene, in both forms
+TEST(FuzzCorpusTest, SeedsAreGroundedPlans) {
+  core::SceneCatalog scene = plan::fixtures::MakeTestScene();
+  const std::string dir = std::string(SIMHUMAN_SOURCE_DIR) + "/tests/fuzz/corpus/";
+  int plans = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir + "plan_json_fuzz")) {
+    core::StatusOr<plan::ContactChain> c = plan::LoadAndGroundFile(entry.path().string(), scene);
+    EXPECT_TRUE(c.ok()) << c.status();
+    ++plans;
+  }
+  EXPECT_GE(plans, 3);
+  core::StatusOr<std::string> fenced = core::ReadFile(dir + "llm_reply_fuzz/reply_fenced.txt");
+  ASSERT_TRUE(fenced.ok());
+  EXPECT_TRUE(ExtractPlanJson(*fenced).ok());
 }
 
 TEST(LlmPlannerOptionsTest, ValidateNamesTheField) {

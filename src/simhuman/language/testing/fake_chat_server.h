@@ -6,6 +6,7 @@
 
 #include <httplib.h>
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -24,6 +25,8 @@ struct FakeReply {
   std::string body;  ///< the raw HTTP body
   std::vector<std::pair<std::string, std::string>> headers;
   double delay_s = 0.0;  ///< wait this long before answering (cut short when the server stops)
+  /// > 0: send the body chunked, 16 bytes every trickle_s seconds (a slow stream)
+  double trickle_s = 0.0;
 
   /// A 200 chat completion whose message content is `content`.
   static FakeReply Completion(const std::string& content) {
@@ -121,7 +124,27 @@ class FakeChatServer {
     }
     res.status = reply.status;
     for (const auto& [k, v] : reply.headers) res.set_header(k, v);
-    res.set_content(reply.body, "application/json");
+    if (reply.trickle_s <= 0) {
+      res.set_content(reply.body, "application/json");
+      return;
+    }
+    res.set_chunked_content_provider(
+        "application/json", [this, body = reply.body, trickle_s = reply.trickle_s](
+                                size_t offset, httplib::DataSink& sink) {
+          {
+            std::unique_lock<std::mutex> lock(mu_);
+            if (cv_.wait_for(lock, std::chrono::duration<double>(trickle_s),
+                             [this] { return stopping_; })) {
+              return false;
+            }
+          }
+          if (offset >= body.size()) {
+            sink.done();
+            return true;
+          }
+          size_t n = std::min<size_t>(16, body.size() - offset);
+          return sink.write(body.data() + offset, n);
+        });
   }
 
   httplib::Server server_;
