@@ -927,9 +927,13 @@ absl::Status Session::AddSit(const CatalogObject& o) {
     }
     d.text = "sit on the edge of " + Describe(o);
   } else {
+    std::vector<std::string> seats;
+    for (const CatalogObject& x : scene_.objects) {
+      if (HasPart(x, "seat surface") || HasPart(x, "mattress")) seats.push_back(Describe(x));
+    }
     return Invalid("cannot sit on " + Describe(o) + ": it has no seat (its parts: " +
                    PartsText(o) + "); objects to sit on: " +
-                   ObjectsWith(scene_, "seat surface") + "; " + ObjectsWith(scene_, "mattress"));
+                   (seats.empty() ? std::string("none in this scene") : core::JoinNames(seats)));
   }
   d.base_pairs = d.step.pairs.size();
   Push(std::move(d));
