@@ -108,6 +108,16 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
       {{"head", "over", "to"}, {"go"}},
       {{"head", "to"}, {"go"}},
       {{"head", "towards"}, {"go"}},
+      // politeness and the default lying pose
+      {{"i", "want", "you", "to"}, {}},
+      {{"i", "would", "like", "you", "to"}, {}},
+      {{"i", "need", "you", "to"}, {}},
+      {{"can", "you"}, {}},
+      {{"could", "you"}, {}},
+      {{"would", "you"}, {}},
+      {{"on", "your", "back"}, {}},
+      {{"face", "up"}, {}},
+      {{"facing", "up"}, {}},
       // objects and parts
       {{"high", "stool"}, {"high_stool"}},
       {{"bar", "stool"}, {"high_stool"}},
@@ -154,6 +164,7 @@ const std::map<std::string, std::string>& Synonyms() {
       {"pull", "raise"},       {"roll", "turn"},        {"towards", "to"},
       {"toward", "to"},        {"into", "in"},          {"yourself", "your"},
       {"dont", "dont"},        {"lap", "knees"},        {"thats", "that"},
+      {"crossed", "cross"},    {"crossing", "cross"},
   };
   return *words;
 }
@@ -346,7 +357,7 @@ struct Viewer {
 enum class Rel { kNear, kNearest, kFarthest, kLeftOf, kRightOf, kFrontOf, kBehind, kOn };
 
 std::optional<Rel> RelFromWord(const std::string& w) {
-  if (w == "near") return Rel::kNear;
+  if (w == "near" || w == "at") return Rel::kNear;
   if (w == "nearest") return Rel::kNearest;
   if (w == "farthest") return Rel::kFarthest;
   if (w == "left_of") return Rel::kLeftOf;
@@ -1368,6 +1379,30 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, bool lie, bool rest,
                       "?");
     }
     o = fit[0];
+  }
+  if (!lie && !HasPart(*o, "seat surface") && !HasPart(*o, "mattress") && i > b &&
+      t[i - 1] == "at") {
+    // "sit at the table": the seat nearest to it
+    const CatalogObject* best = nullptr;
+    double best_d = 1e300;
+    bool tie = false;
+    for (const CatalogObject& x : scene_.objects) {
+      if (!HasPart(x, "seat surface")) continue;
+      const double d = CentreDistance(x, *o);
+      if (d < best_d - kTieM) {
+        tie = false;
+        best = &x;
+        best_d = d;
+      } else if (d <= best_d + kTieM) {
+        tie = true;
+      }
+    }
+    if (best == nullptr) {
+      return Invalid("\"" + c + "\": there is no seat to sit at " + Describe(*o) +
+                     "; the scene has: " + DescribeSceneObjects(scene_));
+    }
+    if (tie) return Question("Which seat at " + Describe(*o) + " should I sit on?");
+    o = best;
   }
   if (rest) lie = !HasPart(*o, "seat surface") && HasPart(*o, "mattress");
   focus_ = o;

@@ -269,6 +269,21 @@ add(LR, [[GC(LP)], REACH(LP, "screen", "right", "front")], "touch the screen of 
 add(LR, [[GC(CH)], [SIT(CH)], REACH(LP, "keyboard", "right", "up"), [GC(CH)], [GC(BD)], LIE(BD)],
     "sit on the chair, then touch the laptop with your right hand, then stand up, then lie on the bed")
 ambiguous(LR, "put your hands on the armrests", "touch the armrest")
+add(LR, [[GC(CH)], [SIT(CH)]], "sit on the chair at the table", "sit at the table")
+add(LR, [LIE(BD)], "lie on your back on the bed", "can you lie on the bed facing up")
+add(LR, [[GC(SF)], [SIT(SF)]], "I want you to sit on the sofa", "Please go and sit on the sofa")
+add(LR, [[GC(SF)], [SIT(SF), FOOT(SF, "right", "left")]], "sit on the sofa with your legs crossed")
+add(LR, [[GC(SF)], [SIT(SF), HANDARM(SF, "left"), HANDARM(SF, "right"), LEANB(SF)]],
+    "sit on the couch, put your hands on the armrests and lean back")
+add(LR, [LIE(BD) + [HPILLOW(BD, "right")]], "lie on the bed and then put your right hand on the pillow")
+add(LR, [[GC(BD)], LIE(BD) + [KNEEUP(BD, "left"), KNEEUP(BD, "right")], [GC(BD)]],
+    "go to the bed, lie down with your knees up, then stand up")
+add(LR, [[GC(TB)], REACH(TB, "board", "right", "up")], "approach the table and put your right hand on it")
+add(LR, [[GC(CH)], [SIT(CH)], REACH(LP, "screen", "right", "front")],
+    "sit on the chair and touch the laptop screen")
+add(LR, [[GC(TB)]], "stand in front of the table", "walk up to the table")
+add(LR, [[GC(SF)]], "go to the front of the sofa")
+error(LR, "put your hands on your hips", "lie on the bed facing the wall")
 
 # ------------------------------------------------------------ bedroom (everything is far)
 BRM = "bedroom"
@@ -304,6 +319,7 @@ b = "box004|body|right hand|contact|none"
 add(OF, [[SIT("chair002")], [GC("chair002")], [GC("box004")], [b], [GC("table000")],
          [b, "table000|board|@box004:body|contact|up"]],
     "sit on the chair, then put the box on the table")
+add(OF, [[SIT("chair002")]], "sit at the table", "take a seat at the desk")
 error(OF, "sit on the laptop", "lie on the table", "lie on the chair", "sit on the table",
       "put the table on the box", "sit on the sofa", "touch the bed")
 
