@@ -92,6 +92,10 @@ TEST(CliTest, RunRequiresSceneAndPlan) {
   ExpectBadInput(RunSitDemo({}, out), {"exactly one of --plan FILE", "--command TEXT"});
   ExpectBadInput(RunSitDemo({"--plan", kData + "sit_only.json", "--command", "sit"}, out),
                  {"exactly one of"});
+  // a command that cannot be planned fails before anything is simulated or written
+  ExpectBadInput(RunSitDemo({"--command", "lie on the chair"}, out),
+                 {"--command", "cannot lie on chair000"});
+  ExpectBadInput(RunSitDemo({"--command", "sit", "--planner", "oracle"}, out), {"--planner"});
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

@@ -602,6 +602,12 @@ core::StatusOr<NounPhrase> ParseNounPhrase(const Tokens& t, size_t b, size_t e, 
       i = j;
     }
   }
+  // "the chair on the left" / "the box on the right": a selection, not a relation
+  if (i + 2 == e && (t[i] == "on" || t[i] == "at" || t[i] == "to") &&
+      (t[i + 1] == "left" || t[i + 1] == "right")) {
+    np.select = t[i + 1] == "left" ? Select::kLeft : Select::kRight;
+    i = e;
+  }
   SH_RETURN_IF_ERROR(ParseRelations(t, i, e, depth, clause, np));
   if (np.Empty()) {
     return Invalid("expected an object in \"" + clause + "\", got '" + np.text + "'");

@@ -172,6 +172,8 @@ TEST(OfflinePlannerTest, SpatialReferences) {
   EXPECT_EQ(PlanText(scene, "sit on the chair nearest the bed"), blue);
   EXPECT_EQ(PlanText(scene, "sit on the blue chair"), blue);
   EXPECT_EQ(PlanText(scene, "sit on the farthest chair"), blue);
+  EXPECT_EQ(PlanText(scene, "sit on the chair on the left"), red);
+  EXPECT_EQ(PlanText(scene, "sit on the chair on the right"), blue);
 }
 
 TEST(OfflinePlannerTest, AmbiguityIsAQuestion) {
