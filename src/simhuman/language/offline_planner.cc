@@ -105,6 +105,10 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
       {{"go", "over", "to"}, {"go"}},
       {{"walk", "over", "to"}, {"go"}},
       {{"pick", "up"}, {"grab"}},
+      {{"get", "on"}, {"geton"}},
+      {{"get", "onto"}, {"geton"}},
+      {{"climb", "on"}, {"geton"}},
+      {{"climb", "onto"}, {"geton"}},
       {{"head", "over", "to"}, {"go"}},
       {{"head", "to"}, {"go"}},
       {{"head", "towards"}, {"go"}},
@@ -231,7 +235,7 @@ const std::set<std::string>& OtherWords() {
       "front", "in", "at", "to", "of", "it", "them", "that", "which", "is", "are", "its",
       "away", "from", "off", "big", "small", "tall", "short", "far", "nearby", "middle",
       "centre", "center", "there", "yours", "own", "one", "edge", "each", "against", "dont",
-      "lean", "place", "using", "either", "s"};
+      "lean", "place", "using", "either", "s", "geton"};
   return *words;
 }
 
@@ -486,7 +490,7 @@ struct NounPhrase {
 };
 
 bool IsRelativizer(const std::string& w) {
-  return w == "that" || w == "which" || w == "is" || w == "are" || w == "its";
+  return w == "that" || w == "which" || w == "is" || w == "are";
 }
 
 core::StatusOr<NounPhrase> ParseNounPhrase(const Tokens& t, size_t b, size_t e, int depth,
@@ -535,6 +539,17 @@ core::StatusOr<NounPhrase> ParseNounPhrase(const Tokens& t, size_t b, size_t e, 
       return np;
     }
     if (t[i] == "that") ++i;  // "that chair"
+  }
+  if (i < e && t[i] == "its") {
+    // "its keyboard": a part of the object last referred to
+    np.pronoun = true;
+    ++i;
+    if (i < e && (t[i] == "left" || t[i] == "right") && i + 1 < e && PartWords().count(t[i + 1])) {
+      np.part_side = t[i++];
+    }
+    if (i < e && PartWords().count(t[i])) np.part = PartWords().at(t[i++]);
+    SH_RETURN_IF_ERROR(ParseRelations(t, i, e, depth, clause, np));
+    return np;
   }
   // adjectives
   for (; i < e; ++i) {
@@ -1527,6 +1542,24 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c) {
     np.part_side = side;
   }
   SH_ASSIGN_OR_RETURN(const CatalogObject* o, Resolve(np, c));
+  if (side == "both" && np.part == "arm" && np.part_side.empty() && HasPart(*o, "left arm") &&
+      HasPart(*o, "right arm")) {
+    // both hands on the armrests: each hand on its own side
+    focus_ = o;
+    if (posture_ != Posture::kStand && on_ != o && FootprintDistance(*o, pos_) > kNearEnoughM) {
+      EnsureFree(nullptr);
+    }
+    EnsureNear(*o);
+    StepDraft d;
+    for (const std::string& s : Sides(side)) {
+      d.step.pairs.push_back(Pair(*o, s + " arm",
+                                  SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
+                                  ContactType::kContact, Direction::kUp));
+    }
+    d.text = "both hands touch the arms of " + Describe(*o);
+    Push(std::move(d));
+    return absl::OkStatus();
+  }
   std::string part;
   Direction dir = Direction::kNone;
   if (np.part.empty()) {
@@ -1743,6 +1776,19 @@ absl::Status Session::Clause(const Tokens& t) {
     return Tabletop(t, i + 1, c);
   }
   if (v == "touch" || v == "reach" || v == "grab") return Reach(t, c);
+  if (v == "geton") {
+    // "get on the bed (and lie down)": go to it if it is far; the next clause says what to do
+    if (i + 1 >= t.size()) {
+      return Invalid("\"" + c + "\": get on what? name an object; the scene has: " +
+                     DescribeSceneObjects(scene_));
+    }
+    SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i + 1, t.size(), 0, c));
+    SH_ASSIGN_OR_RETURN(const CatalogObject* o, Resolve(np, c));
+    focus_ = o;
+    EnsureFree(o);
+    EnsureNear(*o);
+    return absl::OkStatus();
+  }
   // a pose: "cross your right foot over your left knee", "lean back", "knees up", "with ..."
   SH_ASSIGN_OR_RETURN(std::optional<Variant> var, ParseVariant(t, i, t.size(), c));
   if (var) return AddVariant(*var, c);
