@@ -15,9 +15,9 @@ struct EvalFlags {
   std::string out;  ///< output folder; empty: out/eval_<suite>
   std::string preset = "fast";
   bool preset_given = false;
-  std::string config;   ///< MpcConfig JSON file; empty: the preset
-  int video_every = 0;  ///< contact sheet of every K-th episode; 0: none
-  std::string corpus;   ///< language suite: corpus file; empty: the one in the sources
+  std::string config;               ///< MpcConfig JSON file; empty: the preset
+  int video_every = 0;              ///< contact sheet of every K-th episode; 0: none
+  std::string corpus;               ///< language suite: corpus file; empty: the one in the sources
   std::string planner = "offline";  ///< language suite: the planner
 };
 

@@ -13,11 +13,11 @@ namespace simhuman::app {
 
 /// The flags of `simhuman plan`.
 struct PlanFlags {
-  std::string scene;               ///< built-in scene name or scene JSON file
-  std::string command;             ///< the text command
+  std::string scene;                ///< built-in scene name or scene JSON file
+  std::string command;              ///< the text command
   std::string planner = "offline";  ///< one of PlannerNames()
-  bool explain = false;            ///< also print one line per step
-  std::string out;                 ///< also write the plan JSON here (empty: do not)
+  bool explain = false;             ///< also print one line per step
+  std::string out;                  ///< also write the plan JSON here (empty: do not)
 };
 
 /// The planner's view of a scene's humans (start pose and posture of each).

@@ -10,10 +10,10 @@ namespace simhuman::app {
 
 /// The flags of `simhuman run`.
 struct RunFlags {
-  std::string scene;  ///< built-in scene name or scene JSON file
-  std::string plan;   ///< plan file (this or `command`)
-  std::string command;                ///< text command planned with `planner` (or `plan`)
-  std::string planner = "offline";    ///< one of PlannerNames()
+  std::string scene;                ///< built-in scene name or scene JSON file
+  std::string plan;                 ///< plan file (this or `command`)
+  std::string command;              ///< text command planned with `planner` (or `plan`)
+  std::string planner = "offline";  ///< one of PlannerNames()
   uint64_t seed = 1;
   std::string preset = "fast";
   bool preset_given = false;  ///< --preset was on the command line

@@ -57,8 +57,8 @@ core::StatusOr<std::vector<LanguageCase>> LoadLanguageCorpus(const std::string& 
     if (!command.ok()) return core::Annotate(command.status(), where);
     c.scene = *scene;
     c.command = *command;
-    const int kinds = j.contains("expect") + j.contains("expect_ambiguous") +
-                      j.contains("expect_error");
+    const int kinds =
+        j.contains("expect") + j.contains("expect_ambiguous") + j.contains("expect_error");
     if (kinds != 1) {
       return absl::InvalidArgumentError(
           where + ": exactly one of 'expect', 'expect_ambiguous', 'expect_error' is required");
@@ -82,8 +82,9 @@ core::StatusOr<std::vector<LanguageCase>> LoadLanguageCorpus(const std::string& 
       }
       if (!ok) {
         return absl::InvalidArgumentError(
-            where + ": /expect: expected a non-empty list of steps, each a non-empty list of "
-                    "\"object|part|joint|contact|direction\" strings");
+            where +
+            ": /expect: expected a non-empty list of steps, each a non-empty list of "
+            "\"object|part|joint|contact|direction\" strings");
       }
     }
     out.push_back(std::move(c));

@@ -33,9 +33,7 @@ constexpr double kTieM = 0.05;
 constexpr int kMaxNesting = 3;
 
 absl::Status Invalid(const std::string& message) { return absl::InvalidArgumentError(message); }
-absl::Status Question(const std::string& message) {
-  return absl::FailedPreconditionError(message);
-}
+absl::Status Question(const std::string& message) { return absl::FailedPreconditionError(message); }
 
 std::string Join(const Tokens& tokens, size_t b, size_t e) {
   std::string out;
@@ -142,33 +140,33 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
 // single-word synonyms
 const std::map<std::string, std::string>& Synonyms() {
   static const auto* words = new std::map<std::string, std::string>{
-      {"couch", "sofa"},       {"settee", "sofa"},      {"desk", "table"},
-      {"computer", "laptop"},  {"notebook", "laptop"},  {"crate", "box"},
-      {"cube", "box"},         {"block", "box"},        {"ball", "sphere"},
-      {"tube", "cylinder"},    {"gray", "grey"},
-      {"walk", "go"},          {"move", "move"},        {"head", "head"},
-      {"approach", "go"},      {"come", "go"},          {"run", "go"},
-      {"step", "go"},          {"proceed", "go"},       {"sleep", "lie"},
-      {"nap", "lie"},          {"lay", "lie"},          {"lying", "lie"},
-      {"recline", "lie"},      {"sitting", "sit"},      {"seated", "sit"},
-      {"sits", "sit"},         {"lies", "lie"},         {"relax", "rest"},
-      {"touch", "touch"},      {"tap", "touch"},        {"touches", "touch"},
-      {"reaches", "reach"},    {"reaching", "reach"},   {"grasp", "grab"},
-      {"hold", "grab"},        {"take", "grab"},        {"place", "put"},
-      {"set", "put"},          {"rest", "rest"},        {"leaning", "lean"},
-      {"onto", "onto"},        {"upon", "on"},          {"atop", "onto"},
-      {"palm", "hand"},        {"palms", "hands"},      {"belly", "stomach"},
-      {"tummy", "stomach"},    {"abdomen", "stomach"},  {"tummy", "stomach"},
-      {"backwards", "back"},   {"backward", "back"},    {"forwards", "forward"},
-      {"armrests", "armrests"}, {"largest", "big"},     {"large", "big"},
-      {"bigger", "big"},       {"biggest", "big"},      {"larger", "big"},
-      {"little", "small"},     {"smaller", "small"},    {"smallest", "small"},
-      {"tiny", "small"},       {"leftmost", "left"},    {"rightmost", "right"},
-      {"raise", "raise"},      {"lift", "raise"},       {"bend", "raise"},
-      {"pull", "raise"},       {"roll", "turn"},        {"towards", "to"},
-      {"toward", "to"},        {"into", "in"},          {"yourself", "your"},
-      {"dont", "dont"},        {"lap", "knees"},        {"thats", "that"},
-      {"crossed", "cross"},    {"crossing", "cross"},
+      {"couch", "sofa"},      {"settee", "sofa"},      {"desk", "table"},
+      {"computer", "laptop"}, {"notebook", "laptop"},  {"crate", "box"},
+      {"cube", "box"},        {"block", "box"},        {"ball", "sphere"},
+      {"tube", "cylinder"},   {"gray", "grey"},        {"walk", "go"},
+      {"move", "move"},       {"head", "head"},        {"approach", "go"},
+      {"come", "go"},         {"run", "go"},           {"step", "go"},
+      {"proceed", "go"},      {"sleep", "lie"},        {"nap", "lie"},
+      {"lay", "lie"},         {"lying", "lie"},        {"recline", "lie"},
+      {"sitting", "sit"},     {"seated", "sit"},       {"sits", "sit"},
+      {"lies", "lie"},        {"relax", "rest"},       {"touch", "touch"},
+      {"tap", "touch"},       {"touches", "touch"},    {"reaches", "reach"},
+      {"reaching", "reach"},  {"grasp", "grab"},       {"hold", "grab"},
+      {"take", "grab"},       {"place", "put"},        {"set", "put"},
+      {"rest", "rest"},       {"leaning", "lean"},     {"onto", "onto"},
+      {"upon", "on"},         {"atop", "onto"},        {"palm", "hand"},
+      {"palms", "hands"},     {"belly", "stomach"},    {"tummy", "stomach"},
+      {"abdomen", "stomach"}, {"tummy", "stomach"},    {"backwards", "back"},
+      {"backward", "back"},   {"forwards", "forward"}, {"armrests", "armrests"},
+      {"largest", "big"},     {"large", "big"},        {"bigger", "big"},
+      {"biggest", "big"},     {"larger", "big"},       {"little", "small"},
+      {"smaller", "small"},   {"smallest", "small"},   {"tiny", "small"},
+      {"leftmost", "left"},   {"rightmost", "right"},  {"raise", "raise"},
+      {"lift", "raise"},      {"bend", "raise"},       {"pull", "raise"},
+      {"roll", "turn"},       {"towards", "to"},       {"toward", "to"},
+      {"into", "in"},         {"yourself", "your"},    {"dont", "dont"},
+      {"lap", "knees"},       {"thats", "that"},       {"crossed", "cross"},
+      {"crossing", "cross"},
   };
   return *words;
 }
@@ -176,11 +174,11 @@ const std::map<std::string, std::string>& Synonyms() {
 // words dropped everywhere: fillers and determiners (relations and "your" are kept)
 const std::set<std::string>& Fillers() {
   static const auto* words = new std::set<std::string>{
-      "the", "a", "an", "please", "now", "just", "first", "slowly", "gently", "carefully",
-      "quickly", "also", "again", "down", "over", "kindly", "could", "you", "can", "should",
-      "i", "want", "would", "like", "to_", "for", "this", "my", "both_", "along", "there_",
-      "comfortably", "straight", "located", "placed", "standing", "sitting_", "lying_",
-      "one_"};
+      "the",      "a",         "an",      "please",   "now",      "just",   "first",  "slowly",
+      "gently",   "carefully", "quickly", "also",     "again",    "down",   "over",   "kindly",
+      "could",    "you",       "can",     "should",   "i",        "want",   "would",  "like",
+      "to_",      "for",       "this",    "my",       "both_",    "along",  "there_", "comfortably",
+      "straight", "located",   "placed",  "standing", "sitting_", "lying_", "one_"};
   return *words;
 }
 
@@ -192,31 +190,47 @@ const std::set<std::string>& Colors() {
 
 // object type words (singular and plural) -> canonical type
 const std::map<std::string, std::string>& TypeWords() {
-  static const auto* words = new std::map<std::string, std::string>{
-      {"chair", "chair"},           {"chairs", "chair"},         {"armchair", "armchair"},
-      {"armchairs", "armchair"},    {"sofa", "sofa"},            {"sofas", "sofa"},
-      {"stool", "stool"},           {"stools", "stool"},         {"high_stool", "high_stool"},
-      {"bed", "bed"},               {"beds", "bed"},             {"table", "table"},
-      {"tables", "table"},          {"laptop", "laptop"},        {"laptops", "laptop"},
-      {"box", "box"},               {"boxes", "box"},            {"cylinder", "cylinder"},
-      {"cylinders", "cylinder"},    {"sphere", "sphere"},        {"spheres", "sphere"},
-      {"marker", "marker"},         {"markers", "marker"},       {"target", "marker"},
-      {"object", ""},               {"thing", ""},               {"one", ""}};
+  static const auto* words = new std::map<std::string, std::string>{{"chair", "chair"},
+                                                                    {"chairs", "chair"},
+                                                                    {"armchair", "armchair"},
+                                                                    {"armchairs", "armchair"},
+                                                                    {"sofa", "sofa"},
+                                                                    {"sofas", "sofa"},
+                                                                    {"stool", "stool"},
+                                                                    {"stools", "stool"},
+                                                                    {"high_stool", "high_stool"},
+                                                                    {"bed", "bed"},
+                                                                    {"beds", "bed"},
+                                                                    {"table", "table"},
+                                                                    {"tables", "table"},
+                                                                    {"laptop", "laptop"},
+                                                                    {"laptops", "laptop"},
+                                                                    {"box", "box"},
+                                                                    {"boxes", "box"},
+                                                                    {"cylinder", "cylinder"},
+                                                                    {"cylinders", "cylinder"},
+                                                                    {"sphere", "sphere"},
+                                                                    {"spheres", "sphere"},
+                                                                    {"marker", "marker"},
+                                                                    {"markers", "marker"},
+                                                                    {"target", "marker"},
+                                                                    {"object", ""},
+                                                                    {"thing", ""},
+                                                                    {"one", ""}};
   return *words;
 }
 
 // part words -> the name looked up among a part's name and aliases
 const std::map<std::string, std::string>& PartWords() {
   static const auto* words = new std::map<std::string, std::string>{
-      {"seat", "seat"},         {"cushion", "seat"},       {"backrest", "back surface"},
-      {"back", "back surface"}, {"arm", "arm"},            {"arms", "arm"},
-      {"armrest", "arm"},       {"armrests", "arm"},       {"pillow", "pillow"},
-      {"pillows", "pillow"},    {"mattress", "mattress"},  {"top", "top"},
-      {"tabletop", "top"},      {"surface", "surface"},    {"board", "board"},
-      {"keyboard", "keyboard"}, {"keys", "keyboard"},      {"screen", "screen"},
-      {"display", "screen"},    {"monitor", "screen"},     {"lid", "lid"},
-      {"edge", "edge"},
-      {"body", "body"},         {"point", "point"}};
+      {"seat", "seat"},         {"cushion", "seat"},      {"backrest", "back surface"},
+      {"back", "back surface"}, {"arm", "arm"},           {"arms", "arm"},
+      {"armrest", "arm"},       {"armrests", "arm"},      {"pillow", "pillow"},
+      {"pillows", "pillow"},    {"mattress", "mattress"}, {"top", "top"},
+      {"tabletop", "top"},      {"surface", "surface"},   {"board", "board"},
+      {"keyboard", "keyboard"}, {"keys", "keyboard"},     {"screen", "screen"},
+      {"display", "screen"},    {"monitor", "screen"},    {"lid", "lid"},
+      {"edge", "edge"},         {"body", "body"},         {"point", "point"}};
   return *words;
 }
 
@@ -228,14 +242,15 @@ const std::set<std::string>& Relations() {
 
 const std::set<std::string>& OtherWords() {
   static const auto* words = new std::set<std::string>{
-      "then", "and", "sit", "lie", "rest", "stand", "up", "go", "move", "touch", "reach",
-      "grab", "put", "stack", "cross", "lean", "raise", "turn", "keep", "with", "while", "your",
-      "hand", "hands", "elbow", "elbows", "knee", "knees", "other_knee", "foot", "feet", "leg",
-      "legs", "stomach", "head", "shoulder", "side", "left", "right", "both", "forward",
-      "front", "in", "at", "to", "of", "it", "them", "that", "which", "is", "are", "its",
-      "away", "from", "off", "big", "small", "tall", "short", "far", "nearby", "middle",
-      "centre", "center", "there", "yours", "own", "one", "edge", "each", "against", "dont",
-      "lean", "place", "using", "either", "s", "geton"};
+      "then",   "and",        "sit",   "lie",   "rest",    "stand", "up",      "go",     "move",
+      "touch",  "reach",      "grab",  "put",   "stack",   "cross", "lean",    "raise",  "turn",
+      "keep",   "with",       "while", "your",  "hand",    "hands", "elbow",   "elbows", "knee",
+      "knees",  "other_knee", "foot",  "feet",  "leg",     "legs",  "stomach", "head",   "shoulder",
+      "side",   "left",       "right", "both",  "forward", "front", "in",      "at",     "to",
+      "of",     "it",         "them",  "that",  "which",   "is",    "are",     "its",    "away",
+      "from",   "off",        "big",   "small", "tall",    "short", "far",     "nearby", "middle",
+      "centre", "center",     "there", "yours", "own",     "one",   "edge",    "each",   "against",
+      "dont",   "lean",       "place", "using", "either",  "s",     "geton"};
   return *words;
 }
 
@@ -245,9 +260,9 @@ bool Known(const std::string& w) {
 }
 
 bool IsBodyWord(const std::string& w) {
-  static const std::set<std::string> kWords = {
-      "hand", "hands", "elbow", "elbows", "knee",     "knees", "other_knee", "foot",
-      "feet", "leg",   "legs",  "stomach", "shoulder", "your"};
+  static const std::set<std::string> kWords = {"hand",  "hands",      "elbow",    "elbows", "knee",
+                                               "knees", "other_knee", "foot",     "feet",   "leg",
+                                               "legs",  "stomach",    "shoulder", "your"};
   return kWords.count(w) > 0;
 }
 
@@ -255,8 +270,8 @@ bool IsBodyWord(const std::string& w) {
 
 core::StatusOr<Tokens> Tokenize(std::string_view command) {
   if (command.size() > kMaxCommandBytes) {
-    return Invalid("the command is " + std::to_string(command.size()) +
-                   " bytes long; at most " + std::to_string(kMaxCommandBytes) +
+    return Invalid("the command is " + std::to_string(command.size()) + " bytes long; at most " +
+                   std::to_string(kMaxCommandBytes) +
                    " are accepted (split it into several commands)");
   }
   Tokens out;
@@ -484,8 +499,8 @@ struct NounPhrase {
   std::string text;  // the words, for messages
 
   bool Empty() const {
-    return !pronoun && id.empty() && color.empty() && !has_type && part.empty() && relations.empty() &&
-           select == Select::kNone;
+    return !pronoun && id.empty() && color.empty() && !has_type && part.empty() &&
+           relations.empty() && select == Select::kNone;
   }
 };
 
@@ -586,8 +601,8 @@ core::StatusOr<NounPhrase> ParseNounPhrase(const Tokens& t, size_t b, size_t e, 
     }
   }
   // head noun: an id, a type or a part, possibly "part of <np>" or "<type>s part"
-  if (i < e && std::any_of(t[i].begin(), t[i].end(), [](char ch) { return std::isdigit(
-                                                                       static_cast<unsigned char>(ch)); })) {
+  if (i < e && std::any_of(t[i].begin(), t[i].end(),
+                           [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); })) {
     np.id = t[i++];
     if (i < e && PartWords().count(t[i])) np.part = PartWords().at(t[i++]);
   } else if (i < e && TypeWords().count(t[i])) {
@@ -728,8 +743,8 @@ class Session {
   std::vector<StepDraft> steps_;
 };
 
-ContactPair Pair(const CatalogObject& o, const std::string& part, BodyJoint joint,
-                 ContactType type, Direction dir) {
+ContactPair Pair(const CatalogObject& o, const std::string& part, BodyJoint joint, ContactType type,
+                 Direction dir) {
   ContactPair p;
   p.object = o.id;
   p.part = part;
@@ -745,7 +760,6 @@ std::string NounOf(const NounPhrase& np) {
   if (!np.part.empty()) return s + "object with a " + np.part;
   return s + "object";
 }
-
 
 core::StatusOr<std::vector<const CatalogObject*>> Session::Candidates(const NounPhrase& np,
                                                                       const std::string& clause) {
@@ -808,8 +822,8 @@ core::StatusOr<std::vector<const CatalogObject*>> Session::Candidates(const Noun
     if (kept.empty()) {
       std::vector<std::string> ids;
       for (const CatalogObject* o : c) ids.push_back(Describe(*o));
-      return Invalid("no " + NounOf(np) + " is " + RelText(r.rel) + " " + Describe(*ref) +
-                     " (\"" + clause + "\"); candidates: " + core::JoinNames(ids));
+      return Invalid("no " + NounOf(np) + " is " + RelText(r.rel) + " " + Describe(*ref) + " (\"" +
+                     clause + "\"); candidates: " + core::JoinNames(ids));
     }
     c = kept;
   }
@@ -963,8 +977,8 @@ absl::Status Session::AddSit(const CatalogObject& o) {
     for (const CatalogObject& x : scene_.objects) {
       if (HasPart(x, "seat surface") || HasPart(x, "mattress")) seats.push_back(Describe(x));
     }
-    return Invalid("cannot sit on " + Describe(o) + ": it has no seat (its parts: " +
-                   PartsText(o) + "); objects to sit on: " +
+    return Invalid("cannot sit on " + Describe(o) + ": it has no seat (its parts: " + PartsText(o) +
+                   "); objects to sit on: " +
                    (seats.empty() ? std::string("none in this scene") : core::JoinNames(seats)));
   }
   d.base_pairs = d.step.pairs.size();
@@ -986,7 +1000,8 @@ absl::Status Session::AddLie(const CatalogObject& o) {
   d.object = &o;
   d.step.pairs.push_back(
       Pair(o, "mattress", BodyJoint::kPelvis, ContactType::kContact, Direction::kUp));
-  d.step.pairs.push_back(Pair(o, "pillow", BodyJoint::kHead, ContactType::kContact, Direction::kUp));
+  d.step.pairs.push_back(
+      Pair(o, "pillow", BodyJoint::kHead, ContactType::kContact, Direction::kUp));
   d.base_pairs = 2;
   d.text = "lie on " + Describe(o);
   Push(std::move(d));
@@ -1084,7 +1099,8 @@ absl::Status Session::AddVariant(const Variant& v, const std::string& clause) {
       break;
     case VariantKind::kHandsOnKnees:
       for (const std::string& s : Sides(v.side)) {
-        pairs.push_back(Pair(o, s + " knee", SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
+        pairs.push_back(Pair(o, s + " knee",
+                             SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
                              ContactType::kContact, Direction::kUp));
       }
       break;
@@ -1102,14 +1118,15 @@ absl::Status Session::AddVariant(const Variant& v, const std::string& clause) {
     case VariantKind::kLeanForward:
     case VariantKind::kLeanBack:
       SH_RETURN_IF_ERROR(need("back surface"));
-      pairs.push_back(Pair(o, "back surface", BodyJoint::kTorso,
-                           v.kind == VariantKind::kLeanBack ? ContactType::kContact
-                                                            : ContactType::kNotContact,
-                           Direction::kNone));
+      pairs.push_back(
+          Pair(o, "back surface", BodyJoint::kTorso,
+               v.kind == VariantKind::kLeanBack ? ContactType::kContact : ContactType::kNotContact,
+               Direction::kNone));
       break;
     case VariantKind::kKneesUp:
       for (const std::string& s : Sides(v.side)) {
-        pairs.push_back(Pair(o, "mattress", SideJoint(s, BodyJoint::kLeftKnee, BodyJoint::kRightKnee),
+        pairs.push_back(Pair(o, "mattress",
+                             SideJoint(s, BodyJoint::kLeftKnee, BodyJoint::kRightKnee),
                              ContactType::kNotContact, Direction::kNone));
       }
       break;
@@ -1184,8 +1201,8 @@ absl::Status Session::AddVariant(const Variant& v, const std::string& clause) {
 
 bool Has(const Tokens& t, size_t b, size_t e, const std::string& w) {
   return std::find(t.begin() + static_cast<long>(std::min(b, t.size())),
-                   t.begin() + static_cast<long>(std::min(e, t.size())), w) !=
-         t.begin() + static_cast<long>(std::min(e, t.size()));
+                   t.begin() + static_cast<long>(std::min(e, t.size())),
+                   w) != t.begin() + static_cast<long>(std::min(e, t.size()));
 }
 
 // index of the first of `words` in [b, e), or e
@@ -1229,7 +1246,7 @@ core::StatusOr<std::optional<Variant>> Session::ParseVariant(const Tokens& t, si
   Variant v{VariantKind::kLeanBack, "both", ""};
   if (Has(t, b, e, "lean")) {
     v.kind = (Has(t, b, e, "forward") || Has(t, b, e, "front_of")) ? VariantKind::kLeanForward
-                                                                    : VariantKind::kLeanBack;
+                                                                   : VariantKind::kLeanBack;
     if (v.kind == VariantKind::kLeanBack && !Has(t, b, e, "back") && !Has(t, b, e, "against") &&
         !Has(t, b, e, "backrest")) {
       return Invalid("\"" + c + "\": lean which way? say \"lean forward\" or \"lean back\"");
@@ -1244,7 +1261,8 @@ core::StatusOr<std::optional<Variant>> Session::ParseVariant(const Tokens& t, si
     if (fs.empty() || fs == "both") fs = "right";
     if (ks.empty() || ks == "both") ks = fs == "left" ? "right" : "left";
     if (ks == fs) {
-      return Invalid("\"" + c + "\": a foot cannot rest on its own knee; say e.g. \"right foot "
+      return Invalid("\"" + c +
+                     "\": a foot cannot rest on its own knee; say e.g. \"right foot "
                      "on the left knee\"");
     }
     v.side = fs;
@@ -1296,7 +1314,8 @@ core::StatusOr<std::optional<Variant>> Session::ParseVariant(const Tokens& t, si
   if (Has(t, b, e, "side") && foot == e && hand == e) {
     std::string s = SideBefore(t, b, Find(t, b, e, {"side"}));
     if (s != "left" && s != "right") {
-      return Invalid("\"" + c + "\": on which side? say \"on your left side\" or \"on your "
+      return Invalid("\"" + c +
+                     "\": on which side? say \"on your left side\" or \"on your "
                      "right side\"");
     }
     v.kind = VariantKind::kOnSide;
@@ -1366,10 +1385,9 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, bool lie, bool rest,
                           t[i] == "to" || t[i] == "up")) {
     ++i;
   }
-  static const std::set<std::string> kStop = {"with", "while", "your", "lean", "hand",
-                                              "hands", "knees", "knee", "head", "elbows",
-                                              "elbow", "foot", "feet", "legs", "leg",
-                                              "cross", "keep", "raise", "and", "facing"};
+  static const std::set<std::string> kStop = {
+      "with",  "while", "your", "lean", "hand", "hands", "knees", "knee",  "head", "elbows",
+      "elbow", "foot",  "feet", "legs", "leg",  "cross", "keep",  "raise", "and",  "facing"};
   size_t j = Find(t, i, t.size(), kStop);
   // "lie on the bed on your left side": a trailing "on" before "your" belongs to the pose
   size_t np_end = j;
@@ -1379,10 +1397,10 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, bool lie, bool rest,
   if (np_end > i) {
     SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, np_end, 0, c));
     SH_ASSIGN_OR_RETURN(o, Resolve(np, c, part));
-  } else if (on_ != nullptr &&
-             (HasPart(*on_, part) || (!lie && HasPart(*on_, "mattress")))) {
+  } else if (on_ != nullptr && (HasPart(*on_, part) || (!lie && HasPart(*on_, "mattress")))) {
     o = on_;
-  } else if (focus_ != nullptr && (HasPart(*focus_, part) || (!lie && HasPart(*focus_, "mattress")))) {
+  } else if (focus_ != nullptr &&
+             (HasPart(*focus_, part) || (!lie && HasPart(*focus_, "mattress")))) {
     o = focus_;
   } else {
     std::vector<const CatalogObject*> fit;
@@ -1464,8 +1482,8 @@ absl::Status Session::Go(const Tokens& t, size_t b, const std::string& c) {
   } else if (i < t.size() && t[i] == "behind") {
     side = Direction::kBack;
     ++i;
-  } else if (i + 2 < t.size() && (t[i] == "left" || t[i] == "right" || t[i] == "front" ||
-                                  t[i] == "back") &&
+  } else if (i + 2 < t.size() &&
+             (t[i] == "left" || t[i] == "right" || t[i] == "front" || t[i] == "back") &&
              (t[i + 1] == "side" || (t[i] == "front" && t[i + 1] == "of")) && t[i + 2] == "of") {
     side = t[i] == "left"    ? Direction::kLeft
            : t[i] == "right" ? Direction::kRight
@@ -1483,24 +1501,25 @@ absl::Status Session::Go(const Tokens& t, size_t b, const std::string& c) {
     ++i;
   }
   if (i >= t.size()) {
-    return Invalid("\"" + c + "\": go where? name an object; the scene has: " +
-                   DescribeSceneObjects(scene_));
+    return Invalid("\"" + c +
+                   "\": go where? name an object; the scene has: " + DescribeSceneObjects(scene_));
   }
   SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, t.size(), 0, c));
   SH_ASSIGN_OR_RETURN(const CatalogObject* o, Resolve(np, c));
   focus_ = o;
   EnsureFree(nullptr);
   std::string text = "get close to " + Describe(*o);
-  if (side != Direction::kFront) text += " (" + std::string(plan::DirectionName(side)) + " side)";
-  else text += " (front)";
+  if (side != Direction::kFront)
+    text += " (" + std::string(plan::DirectionName(side)) + " side)";
+  else
+    text += " (front)";
   AddGetClose(*o, side, text);
   return absl::OkStatus();
 }
 
 absl::Status Session::StandUp(const std::string& c) {
   if (posture_ == Posture::kStand || on_ == nullptr) {
-    return Invalid("\"" + c +
-                   "\": the human is already standing; say first what to sit or lie on");
+    return Invalid("\"" + c + "\": the human is already standing; say first what to sit or lie on");
   }
   EnsureFree(nullptr);
   return absl::OkStatus();
@@ -1516,9 +1535,9 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c) {
     if (side.empty()) side = t[hand] == "hands" ? "both" : "right";
   }
   // object words: everything after the last verb/preposition that is not the hand phrase
-  static const std::set<std::string> kLead = {"touch", "reach", "grab", "put", "rest", "on",
-                                              "onto",  "to",    "at",   "for", "with", "your",
-                                              "left",  "right", "both", "hand", "hands", "lie",
+  static const std::set<std::string> kLead = {"touch", "reach", "grab",  "put",    "rest",  "on",
+                                              "onto",  "to",    "at",    "for",    "with",  "your",
+                                              "left",  "right", "both",  "hand",   "hands", "lie",
                                               "in",    "keep",  "using", "either", "each"};
   // the object is the span that follows the first preposition after the verb, up to "with"
   size_t b = 0;
@@ -1645,7 +1664,8 @@ absl::Status Session::Tabletop(const Tokens& t, size_t b, const std::string& c) 
     }
   }
   if (dest == e || dest == b) {
-    return Invalid("\"" + c + "\": put what where? say e.g. \"put the red box on the blue "
+    return Invalid("\"" + c +
+                   "\": put what where? say e.g. \"put the red box on the blue "
                    "cylinder\" (relations: on, on top of, next to, left of, right of, in front "
                    "of, behind)");
   }
@@ -1662,9 +1682,9 @@ absl::Status Session::Tabletop(const Tokens& t, size_t b, const std::string& c) 
     for (const CatalogObject& o : scene_.objects) {
       if (o.movable) movable.push_back(Describe(o));
     }
-    return Invalid("\"" + c + "\": " + Describe(*a) + " cannot be moved; movable objects: " +
-                   (movable.empty() ? std::string("none in this scene")
-                                    : core::JoinNames(movable)));
+    return Invalid(
+        "\"" + c + "\": " + Describe(*a) + " cannot be moved; movable objects: " +
+        (movable.empty() ? std::string("none in this scene") : core::JoinNames(movable)));
   }
   if (a == ref) {
     return Invalid("\"" + c + "\": cannot put " + Describe(*a) + " " +
@@ -1738,8 +1758,8 @@ absl::Status Session::Clause(const Tokens& t) {
   if (i >= t.size()) return absl::OkStatus();
   const std::string& v = t[i];
   auto next = [&](size_t k) { return k < t.size() ? t[k] : std::string(); };
-  if (v == "rest" && (IsBodyWord(next(i + 1)) || next(i + 1) == "left" ||
-                      next(i + 1) == "right" || next(i + 1) == "both")) {
+  if (v == "rest" && (IsBodyWord(next(i + 1)) || next(i + 1) == "left" || next(i + 1) == "right" ||
+                      next(i + 1) == "both")) {
     SH_ASSIGN_OR_RETURN(std::optional<Variant> var, ParseVariant(t, i, t.size(), c));
     if (var) return AddVariant(*var, c);
     return Reach(t, c);
@@ -1755,12 +1775,13 @@ absl::Status Session::Clause(const Tokens& t) {
   }
   if (v == "stand" && next(i + 1) == "up") {
     if (i + 2 < t.size() && t[i + 2] != "then") {
-      return Invalid("did not understand '" + Join(t, i + 2, t.size()) + "' after 'stand up' in \"" +
-                     c + "\"");
+      return Invalid("did not understand '" + Join(t, i + 2, t.size()) +
+                     "' after 'stand up' in \"" + c + "\"");
     }
     return StandUp(c);
   }
-  if (v == "stand" || v == "go" || (v == "move" && (next(i + 1) == "to" || next(i + 1) == "near"))) {
+  if (v == "stand" || v == "go" ||
+      (v == "move" && (next(i + 1) == "to" || next(i + 1) == "near"))) {
     return Go(t, i + 1, c);
   }
   if (v == "put" || v == "stack" || v == "move" || v == "rest" || v == "keep" || v == "place") {
@@ -1800,9 +1821,10 @@ absl::Status Session::Clause(const Tokens& t) {
 
 core::StatusOr<PlanResult> Session::Finish() {
   if (steps_.empty()) {
-    return Invalid("the command asks for nothing to do; say e.g. \"sit on the chair\". The scene "
-                   "has: " +
-                   DescribeSceneObjects(scene_));
+    return Invalid(
+        "the command asks for nothing to do; say e.g. \"sit on the chair\". The scene "
+        "has: " +
+        DescribeSceneObjects(scene_));
   }
   PlanResult out;
   for (StepDraft& d : steps_) {

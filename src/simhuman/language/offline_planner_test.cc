@@ -39,8 +39,8 @@ std::string Compact(const plan::ContactChain& chain) {
     for (const plan::ContactPair& p : s.pairs) {
       if (!step.empty()) step += ", ";
       std::string joint = p.subject_object ? "@" + *p.subject_object + ":" + p.subject_part
-                          : p.joint      ? std::string(core::BodyJointName(*p.joint))
-                                         : "none";
+                          : p.joint        ? std::string(core::BodyJointName(*p.joint))
+                                           : "none";
       step += p.object + "|" + p.part + "|" + joint + "|" +
               (p.IsGetClose() ? "none" : std::string(plan::ContactTypeName(p.type))) + "|" +
               std::string(plan::DirectionName(p.direction));
@@ -70,8 +70,8 @@ const std::string kCorpus = std::string(SIMHUMAN_SOURCE_DIR) + "/tests/data/lang
 TEST(OfflinePlannerTest, Name) { EXPECT_EQ(OfflinePlanner().name(), "offline"); }
 
 TEST(OfflinePlannerTest, SitSynonyms) {
-  for (const char* c : {"sit on the chair", "take a seat", "have a seat on the chair",
-                        "Sit down.", "be seated in the chair", "rest on the chair"}) {
+  for (const char* c : {"sit on the chair", "take a seat", "have a seat on the chair", "Sit down.",
+                        "be seated in the chair", "rest on the chair"}) {
     EXPECT_EQ(PlanText("sit_demo", c), "chair000|seat surface|pelvis|contact|up") << c;
   }
 }
@@ -89,8 +89,9 @@ TEST(OfflinePlannerTest, SitVariantsFollowTable8) {
             sit + ", chair000|back surface|torso|contact|none");
   EXPECT_EQ(PlanText("sit_demo", "sit on the chair leaning forward"),
             sit + ", chair000|back surface|torso|not contact|none");
-  EXPECT_EQ(PlanText("sit_demo", "sit down with your hands on your knees"),
-            sit + ", chair000|left knee|left hand|contact|up, chair000|right knee|right hand|contact|up");
+  EXPECT_EQ(
+      PlanText("sit_demo", "sit down with your hands on your knees"),
+      sit + ", chair000|left knee|left hand|contact|up, chair000|right knee|right hand|contact|up");
   EXPECT_EQ(PlanText("sit_demo", "sit down, left hand on your stomach"),
             sit + ", chair000|pelvis|left hand|contact|none");
   EXPECT_EQ(PlanText("sit_demo", "sit down, then cross your right foot over your left knee"),
@@ -166,7 +167,8 @@ TEST(OfflinePlannerTest, Reach) {
 TEST(OfflinePlannerTest, SpatialReferences) {
   const std::string scene = kCorpus + "lounge_pair.json";
   const std::string red = "chair001|none|none|none|front / chair001|seat surface|pelvis|contact|up";
-  const std::string blue = "chair002|none|none|none|front / chair002|seat surface|pelvis|contact|up";
+  const std::string blue =
+      "chair002|none|none|none|front / chair002|seat surface|pelvis|contact|up";
   EXPECT_EQ(PlanText(scene, "sit on the chair next to the table"), red);
   EXPECT_EQ(PlanText(scene, "sit on the left chair"), red);
   EXPECT_EQ(PlanText(scene, "sit on the chair nearest the bed"), blue);
@@ -189,10 +191,11 @@ TEST(OfflinePlannerTest, AmbiguityIsAQuestion) {
 }
 
 TEST(OfflinePlannerTest, TabletopCommandOfTheIssue) {
-  EXPECT_EQ(PlanText("tabletop_demo",
-                     "put the red box on top of the blue cylinder that is left of the green sphere"),
-            "box001|body|right hand|contact|none / box001|body|right hand|contact|none, "
-            "cylinder005|top|@box001:body|contact|up");
+  EXPECT_EQ(
+      PlanText("tabletop_demo",
+               "put the red box on top of the blue cylinder that is left of the green sphere"),
+      "box001|body|right hand|contact|none / box001|body|right hand|contact|none, "
+      "cylinder005|top|@box001:body|contact|up");
   EXPECT_EQ(PlanText("tabletop_demo", "place the green box left of the blue box"),
             "box002|body|right hand|contact|none / box002|body|right hand|contact|none, "
             "box003|body|@box002:body|contact|left");

@@ -56,9 +56,10 @@ TEST_F(RobustnessTest, RandomBytesReturnAStatus) {
 }
 
 TEST_F(RobustnessTest, RandomVocabularyReturnsAStatus) {
-  const char* words[] = {"sit", "on", "the", "chair", "then", "lie", "bed", "it", "and",
-                         "put", "red", "box", "left", "of", "hands", "knees", ",", "up",
-                         "stand", "go", "to", "sofa", "armrests", "with", "your", "touch"};
+  const char* words[] = {"sit",   "on",       "the",  "chair", "then",  "lie",  "bed",
+                         "it",    "and",      "put",  "red",   "box",   "left", "of",
+                         "hands", "knees",    ",",    "up",    "stand", "go",   "to",
+                         "sofa",  "armrests", "with", "your",  "touch"};
   std::mt19937 rng(kSeed);
   for (int i = 0; i < kRandomCommands; ++i) {
     std::string s;

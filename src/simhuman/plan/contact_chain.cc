@@ -467,8 +467,7 @@ nlohmann::json ContactChainToJson(const ContactChain& chain) {
         jp["subject_object"] = *p.subject_object;
         jp["subject_part"] = p.subject_part;
       } else {
-        jp["joint"] =
-            p.joint ? std::string(core::BodyJointName(*p.joint)) : std::string(kNoneName);
+        jp["joint"] = p.joint ? std::string(core::BodyJointName(*p.joint)) : std::string(kNoneName);
       }
       if (!p.IsGetClose()) jp["contact"] = std::string(ContactTypeName(p.type));
       jp["direction"] = std::string(DirectionName(p.direction));

@@ -99,14 +99,16 @@ struct ContactChain {
 
 /// JSON pointer of one field of a pair, for error messages: "<where>/part" in the simhuman
 /// form, "<where>/1" in the tuple form. `field` is one of "object", "part", "joint", "contact",
-/// "direction", "agent", "subject_object", "subject_part". Falls back to "/steps/<step>/pairs/<pair>/<field>" when the pair has no
-/// `where`. A tuple pair has no agent field: its own pointer is returned.
+/// "direction", "agent", "subject_object", "subject_part". Falls back to
+/// "/steps/<step>/pairs/<pair>/<field>" when the pair has no `where`. A tuple pair has no agent
+/// field: its own pointer is returned.
 std::string FieldPointer(const ContactChain& chain, int step, int pair, std::string_view field);
 
 /// Structural checks of one pair that need no scene: a get-close pair has part "none", no
 /// joint, and a side direction; any other pair has a part that is not "none", a joint, and a
 /// part that is not the joint itself; an object-object pair has no joint, a subject part, a part
-/// that is not "none" and a subject other than its object; agent >= 0. Errors are prefixed with the field's pointer.
+/// that is not "none" and a subject other than its object; agent >= 0. Errors are prefixed with the
+/// field's pointer.
 absl::Status CheckPairShape(const ContactChain& chain, int step, int pair);
 
 /// Parses a chain from JSON in either accepted form (simhuman object form, or UniHSI tuples as

@@ -72,11 +72,11 @@ absl::StatusOr<std::string> GroundObjectPart(const ContactChain& chain, int s, i
                      "): it matches " + core::JoinNames(names) + "; name one of them");
   }
   std::vector<std::string> names = object.PartNames();
-  return Error(chain, FieldPointer(chain, s, p, field),
-               "unknown part " + Quote(name) + " of " + object.id + " (" + object.type +
-                   "); valid parts: " +
-                   (names.empty() ? std::string("(none)") : core::JoinNames(names)) +
-                   " (an object-object pair relates object parts, not body joints)");
+  return Error(
+      chain, FieldPointer(chain, s, p, field),
+      "unknown part " + Quote(name) + " of " + object.id + " (" + object.type +
+          "); valid parts: " + (names.empty() ? std::string("(none)") : core::JoinNames(names)) +
+          " (an object-object pair relates object parts, not body joints)");
 }
 
 // an object-object pair: the subject must be a movable object of the scene; both parts must
@@ -89,9 +89,9 @@ absl::Status GroundObjectPair(ContactChain& chain, int s, int p, const core::Sce
   for (const core::CatalogObject& o : scene.objects) {
     if (o.movable) movable.push_back(o.id);
   }
-  const std::string valid_movable =
-      movable.empty() ? std::string("the scene has no movable objects")
-                      : "movable objects: " + core::JoinNames(movable);
+  const std::string valid_movable = movable.empty()
+                                        ? std::string("the scene has no movable objects")
+                                        : "movable objects: " + core::JoinNames(movable);
   if (subject == nullptr) {
     return Error(chain, FieldPointer(chain, s, p, "subject_object"),
                  "unknown object " + Quote(*pair.subject_object) + "; " + valid_movable);

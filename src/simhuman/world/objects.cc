@@ -376,11 +376,8 @@ const std::vector<TypeInfo>& Types() {
                    {"height", 0.10, 0.06, 0.15, 0.02, 2.0, "size along z"}},
                   BuildCylinder,
                   {}});
-    t->push_back({"sphere",
-                  "green",
-                  {{"radius", 0.04, 0.03, 0.06, 0.01, 1.0, "radius"}},
-                  BuildSphere,
-                  {}});
+    t->push_back(
+        {"sphere", "green", {{"radius", 0.04, 0.03, 0.06, 0.01, 1.0, "radius"}}, BuildSphere, {}});
     return t;
   }();
   return *types;
