@@ -17,6 +17,10 @@
 /// - implied steps: a get-close step before interacting with an object more than
 ///   kNearEnoughM from the human's planned position, a stand-up step before leaving a seat.
 ///
+/// It plans for the first human of the scene (agent 0; the others keep still), from
+/// PlanContext::agents[0] (or a standing human at the origin facing +x when the list is empty).
+/// "Left", "right", "in front of" and "behind" are seen from that human's start pose.
+///
 /// Status codes follow Planner (planner.h): kFailedPrecondition with a question ending in '?'
 /// when a reference matches several objects; kInvalidArgument for unknown words, impossible
 /// requests and objects the scene lacks (the message lists the scene's objects and parts).
