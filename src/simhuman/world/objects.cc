@@ -534,8 +534,10 @@ core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
     keys.push_back(p.name);
   }
   for (const auto& [key, value] : spec.size) {
+    // clang before 16 cannot capture a structured binding
+    const std::string& wanted = key;
     auto it = std::find_if(type->params.begin(), type->params.end(),
-                           [&](const SizeParam& p) { return p.name == key; });
+                           [&](const SizeParam& p) { return p.name == wanted; });
     if (it == type->params.end()) {
       return Invalid(spec, "unknown size key '" + key + "' for type " + type->name +
                                "; valid keys are: " + core::JoinNames(keys));
