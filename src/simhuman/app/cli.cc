@@ -9,6 +9,8 @@
 
 #include "simhuman/app/common.h"
 #include "simhuman/app/eval_command.h"
+#include "simhuman/app/plan_command.h"
+#include "simhuman/app/planner_factory.h"
 #include "simhuman/app/run_command.h"
 #include "simhuman/core/version.h"
 #include "simhuman/eval/suites.h"
@@ -75,7 +77,15 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       ->add_option("--scene", run.scene,
                    "Built-in scene name (see 'simhuman scenes') or scene JSON file")
       ->required();
-  run_cmd->add_option("--plan", run.plan, "Chain-of-Contacts plan JSON file (required)");
+  run_cmd->add_option("--plan", run.plan,
+                      "Chain-of-Contacts plan JSON file (this or --command is required)");
+  run_cmd->add_option("--command", run.command,
+                      "Text command to plan and run instead of --plan, e.g. \"sit on the chair\"");
+  run_cmd
+      ->add_option("--planner", run.planner,
+                   "Planner for --command: " + core::JoinNames(PlannerNames()))
+      ->capture_default_str();
+  AddLlmFlags(*run_cmd, run.llm);
   run_cmd->add_option("--seed", run.seed, "Random seed of the controllers")
       ->check(SeedValidator())
       ->capture_default_str();
@@ -89,7 +99,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       ->capture_default_str();
 
   EvalFlags ev;
-  std::string suites = core::JoinNames(eval::SuiteNames());
+  std::string suites = core::JoinNames(eval::SuiteNames()) + ", " + kLanguageSuite;
   CLI::App* eval_cmd = app.add_subcommand("eval", "Run a benchmark suite of random episodes");
   eval_cmd->add_option("--suite", ev.suite, "Suite: " + suites)->required();
   eval_cmd->add_option("--episodes", ev.episodes, "Number of episodes")->capture_default_str();
@@ -101,10 +111,30 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       eval_cmd->add_option("--preset", ev.preset, "MPC preset: fast or quality")
           ->capture_default_str();
   eval_cmd->add_option("--config", ev.config, "MPC settings JSON file (keys of MpcConfig)");
+  eval_cmd->add_option("--corpus", ev.corpus,
+                       "language suite: command corpus (JSON lines; default: the one in the "
+                       "sources)");
+  eval_cmd->add_option("--planner", ev.planner, "language suite: planner")->capture_default_str();
+  AddLlmFlags(*eval_cmd, ev.llm);
   eval_cmd
       ->add_option("--video-every", ev.video_every,
                    "Render every K-th episode's contact sheet to DIR/ep<i>.png (0: none)")
       ->capture_default_str();
+
+  PlanFlags pl;
+  CLI::App* plan_cmd =
+      app.add_subcommand("plan", "Turn a text command into a Chain-of-Contacts plan and print it");
+  plan_cmd
+      ->add_option("--scene", pl.scene,
+                   "Built-in scene name (see 'simhuman scenes') or scene JSON file")
+      ->required();
+  plan_cmd->add_option("--command", pl.command, "The command, e.g. \"sit on the sofa\"")
+      ->required();
+  plan_cmd->add_flag("--explain", pl.explain, "Also print one line per step in words");
+  plan_cmd->add_option("--planner", pl.planner, "Planner: " + core::JoinNames(PlannerNames()))
+      ->capture_default_str();
+  plan_cmd->add_option("--out", pl.out, "Also write the plan JSON to this file");
+  AddLlmFlags(*plan_cmd, pl.llm);
 
   app.add_subcommand("scenes", "List the built-in scenes and their objects");
 
@@ -140,8 +170,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     ev.preset_given = eval_preset->count() > 0;
     return EvalCommand(ev, out, err);
   }
+  if (plan_cmd->parsed()) return PlanCommand(pl, out, err);
   if (app.got_subcommand("scenes")) return ScenesCommand(out, err);
-  err << "simhuman: error: a command is required; valid commands are: run, eval, scenes (or "
+  err << "simhuman: error: a command is required; valid commands are: run, plan, eval, scenes (or "
          "--version, --help)"
       << std::endl;
   return kExitBadInput;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "simhuman/app/common.h"
+#include "simhuman/app/plan_command.h"
 
 namespace simhuman::app {
 namespace {
@@ -68,7 +69,7 @@ TEST(CliTest, HelpExitsZero) {
   EXPECT_NE(sub.out.find("--scene"), std::string::npos) << sub.out;
 }
 
-TEST(CliTest, NoCommandIsUsageError) { ExpectBadInput(Cli({}), {"run, eval, scenes"}); }
+TEST(CliTest, NoCommandIsUsageError) { ExpectBadInput(Cli({}), {"run, plan, eval, scenes"}); }
 
 TEST(CliTest, UnknownCommandAndFlagAreUsageErrors) {
   ExpectBadInput(Cli({"dance"}), {"dance", "--help"});
@@ -88,8 +89,51 @@ TEST(CliTest, ScenesListsBuiltinsWithObjects) {
 TEST(CliTest, RunRequiresSceneAndPlan) {
   ExpectBadInput(Cli({"run", "--plan", kData + "sit_only.json"}), {"--scene"});
   std::string out = OutDir("no_plan");
-  ExpectBadInput(RunSitDemo({}, out), {"--plan FILE is required"});
+  ExpectBadInput(RunSitDemo({}, out), {"exactly one of --plan FILE", "--command TEXT"});
+  ExpectBadInput(RunSitDemo({"--plan", kData + "sit_only.json", "--command", "sit"}, out),
+                 {"exactly one of"});
+  // a command that cannot be planned fails before anything is simulated or written
+  ExpectBadInput(RunSitDemo({"--command", "lie on the chair"}, out),
+                 {"--command", "cannot lie on chair000"});
+  ExpectBadInput(RunSitDemo({"--command", "sit", "--planner", "oracle"}, out), {"--planner"});
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliTest, PlanPrintsTheChainAndExplains) {
+  std::string out = OutDir("plan") + ".json";
+  CliRun r = Cli({"plan", "--scene", "sit_demo", "--command", "sit on the chair, then stand up",
+                  "--explain", "--out", out});
+  EXPECT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("\"seat surface\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("step 1: sit on chair000 (brown chair)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("step 2: stand up in front of chair000"), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  std::filesystem::remove(out);
+}
+
+TEST(CliTest, PlanTabletopCommandOfTheIssue) {
+  CliRun r = Cli({"plan", "--scene", "tabletop_demo", "--command",
+                  "put the red box on top of the blue cylinder that is left of the green sphere"});
+  EXPECT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("\"subject_object\": \"box001\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"object\": \"cylinder005\""), std::string::npos) << r.out;
+}
+
+TEST(CliTest, PlanErrorsAndQuestions) {
+  ExpectBadInput(Cli({"plan", "--scene", "sit_demo", "--command", "lie on the chair"}),
+                 {"cannot lie on chair000", "mattress"});
+  ExpectBadInput(Cli({"plan", "--scene", "sit_demo", "--command", "juggle"}), {"'juggle'"});
+  ExpectBadInput(Cli({"plan", "--scene", "sit_demo", "--command", "sit", "--planner", "oracle"}),
+                 {"--planner", "offline", "llm"});
+  ExpectBadInput(Cli({"plan", "--scene", "sit_demo", "--command", "sit", "--planner", "llm"}),
+                 {"--llm-model"});
+  ExpectBadInput(Cli({"plan", "--scene", "sit_demo", "--command", "sit", "--planner", "llm",
+                      "--llm-model", "m", "--llm-timeout", "-1"}),
+                 {"--llm-timeout"});
+  CliRun q = Cli({"plan", "--scene", "tabletop_demo", "--command", "put the box on the table"});
+  EXPECT_EQ(q.code, kExitAmbiguous);
+  EXPECT_NE(q.err.find("Which box:"), std::string::npos) << q.err;
+  EXPECT_NE(q.err.find("?"), std::string::npos) << q.err;
 }
 
 TEST(CliTest, RunUnknownSceneListsBuiltins) {

@@ -7,7 +7,10 @@
 #include <optional>
 
 #include "simhuman/app/common.h"
+#include "simhuman/app/planner_factory.h"
+#include "simhuman/eval/episode.h"
 #include "simhuman/eval/eval_runner.h"
+#include "simhuman/eval/language_suite.h"
 
 namespace simhuman::app {
 namespace {
@@ -79,15 +82,53 @@ void PrintSummary(std::ostream& out, const eval::Summary& s) {
       << std::endl;
 }
 
+// the language suite: the command corpus through a planner
+int LanguageEval(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
+  core::StatusOr<std::unique_ptr<language::Planner>> planner =
+      MakePlanner(flags.planner, flags.llm);
+  if (!planner.ok()) return ReportError(err, kCommand, planner.status());
+  const std::string corpus =
+      flags.corpus.empty() ? eval::DefaultLanguageCorpusPath() : flags.corpus;
+  core::StatusOr<std::vector<eval::LanguageCase>> cases = eval::LoadLanguageCorpus(corpus);
+  if (!cases.ok()) return ReportError(err, kCommand, cases.status());
+  const std::string dir = flags.out.empty() ? "out/eval_language" : flags.out;
+  absl::Status made = MakeOutputDir(dir);
+  if (!made.ok()) return ReportError(err, kCommand, made);
+  core::StatusOr<eval::LanguageSummary> s = eval::RunLanguageCorpus(
+      *cases, std::filesystem::path(corpus).parent_path().string(), **planner);
+  if (!s.ok()) return ReportError(err, kCommand, s.status());
+  for (const eval::LanguageCaseResult& r : s->results) {
+    if (r.pass) continue;
+    out << "FAIL line " << r.c.line << " [" << r.c.scene << "] \"" << r.c.command << "\" -> "
+        << r.got << std::endl;
+  }
+  out << Row("language suite (%s planner, %s)\n", flags.planner.c_str(), corpus.c_str());
+  out << Row("  exact plans        %4d/%-4d %6.1f%%\n", s->plan_exact, s->plan_cases,
+             100 * s->exact_rate());
+  out << Row("  ambiguous refused  %4d/%-4d %6.1f%%\n", s->ambiguous_refused, s->ambiguous_cases,
+             100 * s->refused_rate());
+  out << Row("  errors reported    %4d/%-4d %6.1f%%\n", s->error_correct, s->error_cases,
+             100 * s->error_rate());
+  out << Row("  latency median %.1f us, p99 %.1f us, max %.1f us\n", s->median_latency_us,
+             s->p99_latency_us, s->max_latency_us);
+  const std::string path = (std::filesystem::path(dir) / "summary.json").string();
+  absl::Status st = eval::WriteJsonFile(path, eval::LanguageSummaryJson(*s, flags.planner, corpus));
+  if (!st.ok()) return ReportError(err, kCommand, absl::InternalError(st.message()));
+  out << "wrote " << path << std::endl;
+  return kExitOk;
+}
+
 }  // namespace
 
 int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
+  if (flags.suite == kLanguageSuite) return LanguageEval(flags, out, err);
   std::optional<eval::Suite> suite = eval::ParseSuite(flags.suite);
   if (!suite) {
     return ReportError(
         err, kCommand,
         absl::InvalidArgumentError("--suite: unknown suite '" + flags.suite +
-                                   "'; valid suites are: " + core::JoinNames(eval::SuiteNames())));
+                                   "'; valid suites are: " + core::JoinNames(eval::SuiteNames()) +
+                                   ", " + kLanguageSuite));
   }
   if (flags.episodes < 1) {
     return ReportError(err, kCommand,

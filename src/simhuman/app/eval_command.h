@@ -5,24 +5,34 @@
 #include <ostream>
 #include <string>
 
+#include "simhuman/app/llm_flags.h"
+
 namespace simhuman::app {
 
 /// The flags of `simhuman eval`.
 struct EvalFlags {
-  std::string suite;  ///< one of eval::SuiteNames()
+  std::string suite;  ///< one of eval::SuiteNames(), or "language"
   int episodes = 10;
   uint64_t seed = 1;
   std::string out;  ///< output folder; empty: out/eval_<suite>
   std::string preset = "fast";
   bool preset_given = false;
-  std::string config;   ///< MpcConfig JSON file; empty: the preset
-  int video_every = 0;  ///< contact sheet of every K-th episode; 0: none
+  std::string config;               ///< MpcConfig JSON file; empty: the preset
+  int video_every = 0;              ///< contact sheet of every K-th episode; 0: none
+  std::string corpus;               ///< language suite: corpus file; empty: the one in the sources
+  std::string planner = "offline";  ///< language suite: the planner
+  LlmFlags llm;                     ///< --llm-* flags (with --planner llm)
 };
+
+/// The suite name of the language benchmark (no episodes: a corpus of commands).
+inline constexpr char kLanguageSuite[] = "language";
 
 /// Runs the suite: a table row per finished episode and a summary table on `out`, files as
 /// eval::RunEval() writes them. kExitOk when every episode ran, kExitBadInput for bad flags
 /// or files, kExitInternal when an episode could not be set up or a file not written (what
-/// finished stays written).
+/// finished stays written). The "language" suite instead runs the command corpus through
+/// --planner and writes DIR/summary.json (eval::LanguageSummaryJson); episode flags are
+/// ignored there.
 int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err);
 
 }  // namespace simhuman::app

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "simhuman/app/common.h"
+#include "simhuman/app/plan_command.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/reachability.h"
 #include "simhuman/eval/replay.h"
@@ -45,12 +46,12 @@ void PrintProgress(std::ostream& out, const plan::ContactChain& chain,
 
 int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   // flags that need no files
-  if (flags.plan.empty()) {
+  if (flags.plan.empty() == flags.command.empty()) {
     return ReportError(err, kCommand,
                        absl::InvalidArgumentError(
-                           "--plan FILE is required (a Chain-of-Contacts plan, e.g. "
-                           "assets/plans/sit_then_stand.json; plans from text commands come "
-                           "later)"));
+                           "exactly one of --plan FILE (a Chain-of-Contacts plan, e.g. "
+                           "assets/plans/sit_then_stand.json) and --command TEXT (e.g. \"sit on "
+                           "the chair\") is required"));
   }
   if (!std::isfinite(flags.settle_s) || flags.settle_s < 0) {
     return ReportError(err, kCommand,
@@ -67,7 +68,22 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   if (!scene.ok()) return ReportError(err, kCommand, scene.status());
   core::StatusOr<core::SceneCatalog> catalog = world::BuildCatalog(*scene);
   if (!catalog.ok()) return ReportError(err, kCommand, catalog.status());
-  core::StatusOr<plan::ContactChain> chain = plan::LoadAndGroundFile(flags.plan, *catalog);
+  core::StatusOr<plan::ContactChain> chain = absl::UnknownError("no plan");
+  if (!flags.command.empty()) {
+    core::StatusOr<language::PlanResult> planned =
+        PlanCommandText(flags.planner, flags.llm, flags.command, *scene, *catalog);
+    if (!planned.ok()) {
+      // an ambiguous command (a clarifying question) is bad input too
+      const int code = ReportError(err, kCommand, core::Annotate(planned.status(), "--command"));
+      return absl::IsFailedPrecondition(planned.status()) ? kExitBadInput : code;
+    }
+    chain = std::move(planned->chain);
+    for (size_t i = 0; i < planned->explanation.size(); ++i) {
+      out << "plan step " << i + 1 << ": " << planned->explanation[i] << std::endl;
+    }
+  } else {
+    chain = plan::LoadAndGroundFile(flags.plan, *catalog);
+  }
   if (!chain.ok()) {
     absl::Status st = chain.status();
     // a missing file's message does not say which flag named it
@@ -90,7 +106,8 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   if (!controllers.ok()) return ReportError(err, kCommand, controllers.status());
 
   out << "simhuman run: scene " << scene->name << " (" << Plural(scene->objects.size(), "object")
-      << ", " << Plural(scene->humans.size(), "human") << "), plan " << flags.plan << " ("
+      << ", " << Plural(scene->humans.size(), "human") << "), plan "
+      << (flags.plan.empty() ? "from --command" : flags.plan) << " ("
       << Plural(chain->steps.size(), "step") << "), preset " << config->preset << ", seed "
       << flags.seed << std::endl;
 
@@ -109,6 +126,7 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   j["scene"] = scene->name;
   j["scene_arg"] = flags.scene;
   j["plan"] = flags.plan;
+  if (!flags.command.empty()) j["command"] = flags.command;
   j["config"] = config->ToJson();
   j["settle_s"] = flags.settle_s;
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();

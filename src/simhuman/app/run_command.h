@@ -6,12 +6,17 @@
 #include <ostream>
 #include <string>
 
+#include "simhuman/app/llm_flags.h"
+
 namespace simhuman::app {
 
 /// The flags of `simhuman run`.
 struct RunFlags {
-  std::string scene;  ///< built-in scene name or scene JSON file
-  std::string plan;   ///< plan file (required for now)
+  std::string scene;                ///< built-in scene name or scene JSON file
+  std::string plan;                 ///< plan file (this or `command`)
+  std::string command;              ///< text command planned with `planner` (or `plan`)
+  std::string planner = "offline";  ///< one of PlannerNames()
+  LlmFlags llm;                     ///< --llm-* flags (with --planner llm)
   uint64_t seed = 1;
   std::string preset = "fast";
   bool preset_given = false;  ///< --preset was on the command line

@@ -72,6 +72,9 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
       continue;
     }
     if (pair.type == plan::ContactType::kNotCare) continue;
+    // object-object goals (tabletop) are evaluated, not driven: the controller has no
+    // manipulation skill yet, so it only works on the hand pairs of such a step
+    if (pair.IsObjectPair()) continue;
     ContactTerm t;
     t.joint = *pair.joint;
     t.type = pair.type;

@@ -77,6 +77,8 @@ std::string StepText(const plan::ContactStep& step) {
       s = "get close to " + p.object + " (" + std::string(plan::DirectionName(p.direction)) + ")";
     } else if (p.type == plan::ContactType::kNotCare) {
       continue;
+    } else if (p.IsObjectPair()) {
+      s = *p.subject_object + " " + p.subject_part + " on " + p.object + " " + p.part;
     } else {
       std::string joint = p.joint ? std::string(core::BodyJointName(*p.joint)) : "?";
       std::string target = p.part_joint ? p.part : p.object + " " + p.part;

@@ -56,6 +56,7 @@ absl::Status CheckWithinReach(const plan::ContactChain& chain, const core::Scene
         continue;
       }
       if (pair.type != plan::ContactType::kContact || pair.part_joint) continue;
+      if (pair.IsObjectPair()) continue;  // object on object: no body point to reach with
       if (approached.count(key)) continue;
       const core::CatalogObject* object = scene.Find(pair.object);
       const core::CatalogPart* part = object ? object->FindPart(pair.part) : nullptr;

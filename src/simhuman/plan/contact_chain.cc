@@ -148,13 +148,34 @@ class Parser {
   }
 
   absl::Status ParseObjectPair(const nlohmann::json& j, const std::string& where) {
-    SH_RETURN_IF_ERROR(Wrap(
-        core::CheckKeys(j, {"object", "part", "joint", "contact", "direction", "agent"}, where)));
+    SH_RETURN_IF_ERROR(Wrap(core::CheckKeys(j,
+                                            {"object", "part", "joint", "contact", "direction",
+                                             "agent", "subject_object", "subject_part"},
+                                            where)));
     ContactPair pair;
     pair.where = where;
     SH_ASSIGN_OR_RETURN(pair.object, Wrap(core::GetString(j, "object", where)));
     SH_ASSIGN_OR_RETURN(std::string part, Wrap(core::GetString(j, "part", where)));
-    SH_ASSIGN_OR_RETURN(std::string joint, Wrap(core::GetString(j, "joint", where)));
+    std::string joint(kNoneName);
+    if (j.contains("subject_object") || j.contains("subject_part")) {
+      // an object-object pair: a part of a movable object instead of a body joint
+      if (j.contains("joint")) {
+        return Error(Join(where, "joint"),
+                     "an object-object pair (with 'subject_object') takes no 'joint'; remove one "
+                     "of them");
+      }
+      if (!j.contains("subject_object")) {
+        return Error(where, "'subject_part' needs 'subject_object' (the movable object's id)");
+      }
+      if (!j.contains("subject_part")) {
+        return Error(where, "'subject_object' needs 'subject_part' (a part of that object)");
+      }
+      SH_ASSIGN_OR_RETURN(std::string subject, Wrap(core::GetString(j, "subject_object", where)));
+      SH_ASSIGN_OR_RETURN(pair.subject_part, Wrap(core::GetString(j, "subject_part", where)));
+      pair.subject_object = subject;
+    } else {
+      SH_ASSIGN_OR_RETURN(joint, Wrap(core::GetString(j, "joint", where)));
+    }
     std::optional<std::string> contact;
     if (j.contains("contact")) {
       SH_ASSIGN_OR_RETURN(contact, Wrap(core::GetString(j, "contact", where)));
@@ -252,7 +273,7 @@ class Parser {
         return Error(field("joint"), "unknown joint " + Quote(joint) + "; " + ValidJointsText());
       }
     }
-    const bool get_close = IsNone(part) && IsNone(joint);
+    const bool get_close = IsNone(part) && IsNone(joint) && !pair.subject_object;
 
     // contact type: required except for get-close pairs, which take "none" (tuple form) or
     // nothing (simhuman form)
@@ -341,7 +362,9 @@ bool IsSideDirection(Direction direction) {
          direction == Direction::kLeft || direction == Direction::kRight;
 }
 
-bool ContactPair::IsGetClose() const { return !joint.has_value() && part == kNoneName; }
+bool ContactPair::IsGetClose() const {
+  return !joint.has_value() && !subject_object && part == kNoneName;
+}
 
 std::string FieldPointer(const ContactChain& chain, int step, int pair, std::string_view field) {
   const ContactPair& p = chain.steps.at(step).pairs.at(pair);
@@ -368,6 +391,25 @@ absl::Status CheckPairShape(const ContactChain& chain, int step, int pair) {
   if (p.agent < 0)
     return error("agent", "agent index must be >= 0, got " + std::to_string(p.agent));
   const bool part_none = IsNone(p.part);
+  if (p.subject_object) {
+    if (p.joint) {
+      return error("joint", "an object-object pair (with 'subject_object') takes no joint");
+    }
+    if (p.subject_object->empty() || IsNone(*p.subject_object)) {
+      return error("subject_object", "an object-object pair needs the id of a movable object");
+    }
+    if (p.subject_part.empty() || IsNone(p.subject_part)) {
+      return error("subject_part",
+                   "an object-object pair needs a part of " + Quote(*p.subject_object));
+    }
+    if (part_none || p.part.empty()) {
+      return error("part", "an object-object pair needs a part of " + Quote(p.object));
+    }
+    if (*p.subject_object == p.object) {
+      return error("subject_object", "object " + Quote(p.object) + " cannot be placed on itself");
+    }
+    return absl::OkStatus();
+  }
   if (part_none && p.joint) {
     return error("part", "part is 'none' but joint is " + Quote(core::BodyJointName(*p.joint)) +
                              ": a get-close pair has part, joint and contact all 'none'; any "
@@ -421,7 +463,12 @@ nlohmann::json ContactChainToJson(const ContactChain& chain) {
       nlohmann::json jp = nlohmann::json::object();
       jp["object"] = p.object;
       jp["part"] = p.part;
-      jp["joint"] = p.joint ? std::string(core::BodyJointName(*p.joint)) : std::string(kNoneName);
+      if (p.subject_object) {
+        jp["subject_object"] = *p.subject_object;
+        jp["subject_part"] = p.subject_part;
+      } else {
+        jp["joint"] = p.joint ? std::string(core::BodyJointName(*p.joint)) : std::string(kNoneName);
+      }
       if (!p.IsGetClose()) jp["contact"] = std::string(ContactTypeName(p.type));
       jp["direction"] = std::string(DirectionName(p.direction));
       if (p.agent != 0) jp["agent"] = p.agent;

@@ -65,9 +65,16 @@ struct ContactPair {
   /// JSON pointer of this pair in its source ("/steps/1/pairs/0" or "/0/1"); empty when the pair
   /// was built in code. Used to name the culprit in validation errors.
   std::string where;
+  /// Object-object pairs (tabletop goals, "the red box on top of the blue cylinder"): the id of
+  /// a movable object whose part `subject_part` must touch `part` of `object` from `direction`,
+  /// in place of a body joint (`joint` is then nullopt). Only in the simhuman JSON form.
+  std::optional<std::string> subject_object;
+  std::string subject_part;  // part of subject_object (canonical after grounding)
 
-  /// True for "get close to the object" pairs: part is "none" and there is no joint.
+  /// True for "get close to the object" pairs: part is "none", no joint and no subject.
   bool IsGetClose() const;
+  /// True for object-object pairs (subject_object set).
+  bool IsObjectPair() const { return subject_object.has_value(); }
 };
 
 /// One step: all pairs must be satisfied at the same time for the step to complete.
@@ -92,13 +99,16 @@ struct ContactChain {
 
 /// JSON pointer of one field of a pair, for error messages: "<where>/part" in the simhuman
 /// form, "<where>/1" in the tuple form. `field` is one of "object", "part", "joint", "contact",
-/// "direction", "agent". Falls back to "/steps/<step>/pairs/<pair>/<field>" when the pair has no
-/// `where`. A tuple pair has no agent field: its own pointer is returned.
+/// "direction", "agent", "subject_object", "subject_part". Falls back to
+/// "/steps/<step>/pairs/<pair>/<field>" when the pair has no `where`. A tuple pair has no agent
+/// field: its own pointer is returned.
 std::string FieldPointer(const ContactChain& chain, int step, int pair, std::string_view field);
 
 /// Structural checks of one pair that need no scene: a get-close pair has part "none", no
 /// joint, and a side direction; any other pair has a part that is not "none", a joint, and a
-/// part that is not the joint itself; agent >= 0. Errors are prefixed with the field's pointer.
+/// part that is not the joint itself; an object-object pair has no joint, a subject part, a part
+/// that is not "none" and a subject other than its object; agent >= 0. Errors are prefixed with the
+/// field's pointer.
 absl::Status CheckPairShape(const ContactChain& chain, int step, int pair);
 
 /// Parses a chain from JSON in either accepted form (simhuman object form, or UniHSI tuples as
@@ -115,7 +125,8 @@ absl::StatusOr<ContactChain> ParseContactChain(std::string_view text, std::strin
 absl::StatusOr<ContactChain> LoadContactChainFile(const std::string& path);
 
 /// Writes the simhuman object form. "label" is written only when non-empty and "agent" only
-/// when non-zero; get-close pairs are written without "contact". Parsing the result gives back
+/// when non-zero; get-close pairs are written without "contact"; object-object pairs with
+/// "subject_object" and "subject_part" instead of "joint". Parsing the result gives back
 /// the same steps and pairs (the `where`, `source` and `part_joint` fields are not written:
 /// part_joint is recomputed by grounding from `part`).
 nlohmann::json ContactChainToJson(const ContactChain& chain);

@@ -11,6 +11,8 @@ namespace {
 
 // slack when comparing differences of accumulated tick times against hold_s
 constexpr double kTimeSlackS = 1e-9;
+// alternating-projection rounds when measuring the distance between two parts
+constexpr int kObjectPairIterations = 8;
 
 absl::Status CheckField(bool ok, const char* name, double value, const char* rule) {
   if (ok && std::isfinite(value)) return absl::OkStatus();
@@ -45,7 +47,79 @@ PairEval EvaluateGetClose(const ContactPair& pair, const core::CatalogObject& ob
   return e;
 }
 
+// the part of `object` called `name` (canonical first, then FindPart's rule)
+const core::CatalogPart* PartNamed(const core::CatalogObject& object, const std::string& name) {
+  for (const core::CatalogPart& candidate : object.parts) {
+    if (candidate.name == name) return &candidate;
+  }
+  return object.FindPart(name);
+}
+
+// centre of the world bounds of a part's shapes (a starting point for the closest-point search)
+Eigen::Vector3d PartCentre(const core::CatalogPart& part, const core::Pose& pose) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const core::Shape& shape : part.shapes) sum += pose.Apply(shape.pose.pos);
+  return sum / static_cast<double>(std::max<size_t>(part.shapes.size(), 1));
+}
+
 }  // namespace
+
+PairEval EvaluateObjectPair(const ContactPair& pair, const core::SceneCatalog& scene,
+                            const PairParams& params) {
+  SH_CHECK(pair.IsObjectPair(), "EvaluateObjectPair: not an object-object pair");
+  const core::CatalogObject* object = scene.Find(pair.object);
+  const core::CatalogObject* subject = scene.Find(*pair.subject_object);
+  SH_CHECK(object != nullptr && subject != nullptr,
+           "EvaluateObjectPair: object not in the scene (validate the plan first)");
+  const core::CatalogPart* part = PartNamed(*object, pair.part);
+  const core::CatalogPart* subject_part = PartNamed(*subject, pair.subject_part);
+  SH_CHECK(part != nullptr && subject_part != nullptr,
+           "EvaluateObjectPair: part not in the object (validate the plan first)");
+  // closest points of the two parts by alternating projection (exact for convex parts, a
+  // close upper bound otherwise)
+  Eigen::Vector3d on_subject = PartCentre(*subject_part, subject->pose);
+  Eigen::Vector3d on_object = core::NearestPointOnShapes(part->shapes, object->pose, on_subject);
+  for (int i = 0; i < kObjectPairIterations; ++i) {
+    on_subject = core::NearestPointOnShapes(subject_part->shapes, subject->pose, on_object);
+    on_object = core::NearestPointOnShapes(part->shapes, object->pose, on_subject);
+  }
+  PairEval e;
+  e.target_world = on_object;
+  e.d_vec = on_object - on_subject;
+  e.distance_m = e.d_vec.norm();
+  // where the subject lies relative to the object part: the subject's centre seen from the
+  // object part's nearest point (the closest points coincide once the parts touch)
+  const Eigen::Vector3d d_hat = DirectionVector(pair.direction, object->pose);
+  const Eigen::Vector3d centre = PartCentre(*subject_part, subject->pose);
+  const Eigen::Vector3d from = core::NearestPointOnShapes(part->shapes, object->pose, centre);
+  const Eigen::Vector3d rel = centre - from;
+  if (pair.direction == Direction::kNone || rel.norm() < params.direction_epsilon_m) {
+    e.direction_dot = 1.0;
+  } else {
+    e.direction_dot = std::clamp(rel.normalized().dot(d_hat), -1.0, 1.0);
+  }
+  const double decay = std::exp(-params.w_dk_per_m * e.distance_m);
+  switch (pair.type) {
+    case ContactType::kContact:
+      e.satisfied =
+          e.distance_m < params.contact_threshold_m && e.direction_dot > params.direction_dot_min;
+      e.reward = Clamp01(params.w_dis * decay + params.w_dir * std::min(e.direction_dot, 0.0));
+      e.has_error = true;
+      e.error_m = e.distance_m;
+      break;
+    case ContactType::kNotContact:
+      e.satisfied = e.distance_m > params.contact_threshold_m;
+      e.reward = Clamp01(1.0 - decay);
+      e.has_error = true;
+      e.error_m = std::max(params.not_contact_error_m - e.distance_m, 0.0);
+      break;
+    case ContactType::kNotCare:
+      e.satisfied = true;
+      e.reward = 1.0;
+      break;
+  }
+  return e;
+}
 
 absl::Status PairParams::Validate() const {
   SH_RETURN_IF_ERROR(
@@ -141,6 +215,7 @@ PairEval EvaluatePair(const ContactPair& pair, const core::SceneCatalog& scene,
   SH_CHECK(object != nullptr, "EvaluatePair: object not in the scene (validate the plan first)");
   const BodyPoints& body = agents[pair.agent];
   if (pair.IsGetClose()) return EvaluateGetClose(pair, *object, body, params);
+  if (pair.IsObjectPair()) return EvaluateObjectPair(pair, scene, params);
   SH_CHECK(pair.joint.has_value(), "EvaluatePair: pair without a joint");
 
   PairEval e;

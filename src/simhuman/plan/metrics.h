@@ -130,6 +130,7 @@ struct PairEval {
 ///                R = clamp(w_dis exp(-w_dk ||d||) + w_dir min(dot, 0), 0, 1);
 /// - not contact: satisfied iff ||d|| > contact_threshold_m; R = 1 - exp(-w_dk ||d||);
 /// - not care:    satisfied, R = 1;
+/// - object pair: see EvaluateObjectPair() (body points are not used);
 /// - get close:   satisfied iff the pelvis (horizontal) is within get_close_radius_m of the stand
 ///                point and the facing is within get_close_facing_tol_rad;
 ///                R = clamp(w_dis exp(-w_dk dist) + w_dir min(cos(facing error), 0), 0, 1).
@@ -137,6 +138,17 @@ struct PairEval {
 /// and agents.size() > pair.agent; aborts (SH_CHECK) otherwise, as that is a programming error.
 PairEval EvaluatePair(const ContactPair& pair, const core::SceneCatalog& scene,
                       const std::vector<BodyPoints>& agents, const PairParams& params);
+
+/// Evaluates an object-object pair (ContactPair::IsObjectPair(), a tabletop goal such as "the
+/// red box on top of the blue cylinder"): distance ||d|| between the closest points of the
+/// subject part and the object part (alternating projection; exact for convex parts);
+/// direction agreement dot = unit(c - n) . DirectionVector(direction, object pose), where c is
+/// the centre of the subject part and n its nearest point on the object part (so "up" means the
+/// subject rests above the part), 1 for kNone or when ||c - n|| < direction_epsilon_m. Success
+/// and reward as for a joint pair (contact: ||d|| < contact_threshold_m and dot >
+/// direction_dot_min). Requires a grounded pair; aborts (SH_CHECK) otherwise.
+PairEval EvaluateObjectPair(const ContactPair& pair, const core::SceneCatalog& scene,
+                            const PairParams& params);
 
 /// Eq. 9: w_k = (1 - R_k) / (n - sum_k R_k + eps). The weights sum to (n - sum R) / (n - sum R +
 /// eps) < 1; all are 0 when every R_k is 1.

@@ -57,6 +57,57 @@ std::string StepPointer(const ContactChain& chain, int s) {
   return "/steps/" + std::to_string(s);
 }
 
+// grounds `name` to one canonical part of `object`; `field` names the pair field in errors
+absl::StatusOr<std::string> GroundObjectPart(const ContactChain& chain, int s, int p,
+                                             std::string_view field,
+                                             const core::CatalogObject& object,
+                                             const std::string& name) {
+  std::vector<const core::CatalogPart*> parts = LookupPart(object, name);
+  if (parts.size() == 1) return parts[0]->name;
+  if (parts.size() > 1) {
+    std::vector<std::string> names;
+    for (const core::CatalogPart* part : parts) names.push_back(part->name);
+    return Error(chain, FieldPointer(chain, s, p, field),
+                 "ambiguous part " + Quote(name) + " of " + object.id + " (" + object.type +
+                     "): it matches " + core::JoinNames(names) + "; name one of them");
+  }
+  std::vector<std::string> names = object.PartNames();
+  return Error(
+      chain, FieldPointer(chain, s, p, field),
+      "unknown part " + Quote(name) + " of " + object.id + " (" + object.type +
+          "); valid parts: " + (names.empty() ? std::string("(none)") : core::JoinNames(names)) +
+          " (an object-object pair relates object parts, not body joints)");
+}
+
+// an object-object pair: the subject must be a movable object of the scene; both parts must
+// be object parts
+absl::Status GroundObjectPair(ContactChain& chain, int s, int p, const core::SceneCatalog& scene,
+                              const core::CatalogObject& object) {
+  ContactPair& pair = chain.steps[s].pairs[p];
+  const core::CatalogObject* subject = scene.Find(*pair.subject_object);
+  std::vector<std::string> movable;
+  for (const core::CatalogObject& o : scene.objects) {
+    if (o.movable) movable.push_back(o.id);
+  }
+  const std::string valid_movable = movable.empty()
+                                        ? std::string("the scene has no movable objects")
+                                        : "movable objects: " + core::JoinNames(movable);
+  if (subject == nullptr) {
+    return Error(chain, FieldPointer(chain, s, p, "subject_object"),
+                 "unknown object " + Quote(*pair.subject_object) + "; " + valid_movable);
+  }
+  if (!subject->movable) {
+    return Error(chain, FieldPointer(chain, s, p, "subject_object"),
+                 subject->id + " (" + subject->type + ") is not movable; " + valid_movable);
+  }
+  SH_ASSIGN_OR_RETURN(std::string subject_part,
+                      GroundObjectPart(chain, s, p, "subject_part", *subject, pair.subject_part));
+  SH_ASSIGN_OR_RETURN(std::string part, GroundObjectPart(chain, s, p, "part", object, pair.part));
+  pair.subject_part = subject_part;
+  pair.part = part;
+  return absl::OkStatus();
+}
+
 absl::Status GroundPair(ContactChain& chain, int s, int p, const core::SceneCatalog& scene) {
   SH_RETURN_IF_ERROR(CheckPairShape(chain, s, p));
   ContactPair& pair = chain.steps[s].pairs[p];
@@ -76,6 +127,7 @@ absl::Status GroundPair(ContactChain& chain, int s, int p, const core::SceneCata
   }
   pair.part_joint.reset();
   if (pair.IsGetClose()) return absl::OkStatus();
+  if (pair.IsObjectPair()) return GroundObjectPair(chain, s, p, scene, *object);
 
   std::vector<const core::CatalogPart*> parts = LookupPart(*object, pair.part);
   if (parts.size() > 1) {

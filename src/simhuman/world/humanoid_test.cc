@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "simhuman/world/health.h"
+#include "simhuman/world/scene.h"
 #include "simhuman/world/sim_world.h"
 
 namespace simhuman::world {
@@ -98,6 +99,40 @@ TEST(ModelBuilderTest, RejectsBadPlacements) {
   EXPECT_FALSE(SimWorld::Create(cat, {}).ok());
   EXPECT_FALSE(SimWorld::Create(cat, {{std::nan(""), 0, 0, 1.0}}).ok());
   EXPECT_FALSE(SimWorld::Create(cat, {{0, 0, 0, 5.0}}).ok());
+}
+
+}  // namespace
+}  // namespace simhuman::world
+
+namespace simhuman::world {
+namespace {
+
+// the movable cylinder and sphere of tabletop_demo stay where they are put on the table
+TEST(TabletopDemoTest, CylinderAndSphereRestOnTheTable) {
+  constexpr double kSettleS = 1.0;
+  constexpr double kDriftTolM = 0.01;
+  core::StatusOr<SceneSpec> spec = LoadScene("tabletop_demo");
+  ASSERT_TRUE(spec.ok());
+  core::StatusOr<core::SceneCatalog> cat = BuildCatalog(*spec);
+  ASSERT_TRUE(cat.ok());
+  // the human stands well away so that nothing but gravity acts on the objects
+  auto w = SimWorld::Create(*cat, {{-3.0, 0, 0, 1.0}});
+  ASSERT_TRUE(w.ok()) << w.status();
+  const mjModel* m = (*w)->model();
+  std::vector<std::pair<int, Eigen::Vector3d>> start;
+  for (const char* id : {"cylinder005", "sphere006", "box001"}) {
+    int body = mj_name2id(m, mjOBJ_BODY, ("obj/" + std::string(id)).c_str());
+    ASSERT_GE(body, 0) << id;
+    start.push_back({body, Eigen::Vector3d::Zero()});
+  }
+  mj_forward(m, (*w)->data());
+  for (auto& [body, pos] : start)
+    pos = Eigen::Map<const Eigen::Vector3d>((*w)->data()->xpos + 3 * body);
+  for (int i = 0; i < static_cast<int>(kSettleS / m->opt.timestep); ++i) (*w)->Step();
+  for (const auto& [body, pos] : start) {
+    Eigen::Vector3d now = Eigen::Map<const Eigen::Vector3d>((*w)->data()->xpos + 3 * body);
+    EXPECT_LT((now - pos).norm(), kDriftTolM) << mj_id2name(m, mjOBJ_BODY, body);
+  }
 }
 
 }  // namespace

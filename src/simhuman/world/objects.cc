@@ -240,6 +240,25 @@ void BuildBox(const Sizes& s, Assembly& a) {
                    {top, bottom, front, back, left, right, core_solid});
 }
 
+// a vertical cylinder: a top slab (the surface things are stacked on) over the rest
+void BuildCylinder(const Sizes& s, Assembly& a) {
+  double r = s.at("radius"), h = s.at("height");
+  double t = std::min(kBoxFaceThickness, 0.25 * h);
+  core::Shape top = Cylinder(0, 0, h - t, h, r);
+  core::Shape lower = Cylinder(0, 0, 0.0, h - t, r);
+  a.Part("top", {"top side", "top surface", "lid"}, {top});
+  a.Solid(lower);
+  a.PartOfExisting("body", {"cylinder", "whole", "surface", "side"}, {top, lower});
+}
+
+void BuildSphere(const Sizes& s, Assembly& a) {
+  core::Shape ball;
+  ball.kind = core::ShapeKind::kSphere;
+  ball.size = Vector3d(s.at("radius"), 0, 0);
+  ball.pose.pos = Vector3d(0, 0, s.at("radius"));
+  a.Part("body", {"sphere", "ball", "whole", "surface", "top"}, {ball});
+}
+
 struct TypeInfo {
   std::string name;
   std::string default_color;
@@ -351,6 +370,14 @@ const std::vector<TypeInfo>& Types() {
                    {"height", 0.30, 0.25, 0.50, 0.03, 1.5, "size along z"}},
                   BuildBox,
                   {}});
+    t->push_back({"cylinder",
+                  "blue",
+                  {{"radius", 0.04, 0.03, 0.06, 0.01, 1.0, "radius"},
+                   {"height", 0.10, 0.06, 0.15, 0.02, 2.0, "size along z"}},
+                  BuildCylinder,
+                  {}});
+    t->push_back(
+        {"sphere", "green", {{"radius", 0.04, 0.03, 0.06, 0.01, 1.0, "radius"}}, BuildSphere, {}});
     return t;
   }();
   return *types;
@@ -470,6 +497,7 @@ ObjectSpec RandomObjectSpec(std::string_view type, core::Rng& rng) {
   std::vector<std::string> colors = ColorNames();
   spec.color = colors[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(colors.size()) - 1))];
   if (spec.type == "box") spec.mass_kg = rng.Uniform(2.0, 10.0);
+  if (spec.type == "cylinder" || spec.type == "sphere") spec.mass_kg = rng.Uniform(0.1, 1.0);
   return spec;
 }
 
@@ -506,8 +534,10 @@ core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
     keys.push_back(p.name);
   }
   for (const auto& [key, value] : spec.size) {
+    // clang before 16 cannot capture a structured binding
+    const std::string& wanted = key;
     auto it = std::find_if(type->params.begin(), type->params.end(),
-                           [&](const SizeParam& p) { return p.name == key; });
+                           [&](const SizeParam& p) { return p.name == wanted; });
     if (it == type->params.end()) {
       return Invalid(spec, "unknown size key '" + key + "' for type " + type->name +
                                "; valid keys are: " + core::JoinNames(keys));
@@ -550,9 +580,16 @@ core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
   if (spec.mass_kg) {
     obj.movable = true;
     obj.mass_kg = *spec.mass_kg;
-  } else if (type->name == "box") {
-    double volume =
-        sizes.at("depth") * sizes.at("width") * sizes.at("height") * std::pow(spec.scale, 3);
+  } else if (type->name == "box" || type->name == "cylinder" || type->name == "sphere") {
+    double volume = 0.0;
+    if (type->name == "box") {
+      volume = sizes.at("depth") * sizes.at("width") * sizes.at("height");
+    } else if (type->name == "cylinder") {
+      volume = M_PI * sizes.at("radius") * sizes.at("radius") * sizes.at("height");
+    } else {
+      volume = 4.0 / 3.0 * M_PI * std::pow(sizes.at("radius"), 3);
+    }
+    volume *= std::pow(spec.scale, 3);
     obj.movable = true;
     obj.mass_kg = std::clamp(kBoxDensityKgM3 * volume, kBoxMinMassKg, kBoxMaxMassKg);
   }

@@ -17,6 +17,8 @@
 ///    the -x edge and faces +x.
 ///  - box: origin under the centre of the box; "front side" is the +x face, "left side" the
 ///    +y face.
+///  - cylinder (upright) and sphere: origin under the centre; parts "top" and "body" (the
+///    cylinder), "body" (the sphere).
 /// Sizes are metres before `scale`; `scale` multiplies every length (and a derived box mass by
 /// scale^3).
 
@@ -57,7 +59,8 @@ struct SizeParam {
   std::string doc;  // one line for docs and error messages
 };
 
-/// Canonical type names: chair, armchair, sofa, stool, high_stool, bed, table, laptop, box.
+/// Canonical type names: chair, armchair, sofa, stool, high_stool, bed, table, laptop, marker,
+/// box, cylinder, sphere.
 std::vector<std::string> ObjectTypes();
 
 /// The canonical type for `name` (case-insensitive; ' ' and '-' read as '_', so "High stool"
@@ -82,7 +85,7 @@ ObjectSpec RandomObjectSpec(std::string_view type, core::Rng& rng);
 
 /// Builds the object: parts (canonical names plus UniHSI/PartNet style aliases) and every solid
 /// (parts and unnamed legs and frames) in `shapes`, pose from pos and yaw_rad. Only boxes,
-/// and objects given a mass_kg, are movable. Errors (InvalidArgument) name the object id and the
+/// cylinders and spheres, and objects given a mass_kg, are movable. Errors (InvalidArgument) name the object id and the
 /// culprit: an unknown type (listing valid types), an unknown size key (listing the type's
 /// keys), a non-finite or out-of-range size, scale, position, yaw or mass, an unknown colour.
 /// Thread-safe.

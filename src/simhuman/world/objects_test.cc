@@ -53,7 +53,9 @@ TEST(ObjectsTest, EveryTypeBuildsWithItsParts) {
       {"bed", {"mattress", "pillow"}},
       {"table", {"board"}},
       {"laptop", {"keyboard", "screen"}},
-      {"box", {"top", "left side", "right side", "front side", "back side", "body"}}};
+      {"box", {"top", "left side", "right side", "front side", "back side", "body"}},
+      {"cylinder", {"top", "body"}},
+      {"sphere", {"body"}}};
   ASSERT_EQ(ObjectTypes().size(), expected.size() + 1);  // + marker, tested below
   for (const std::string& type : ObjectTypes()) {
     if (type == "marker") continue;
@@ -76,14 +78,16 @@ TEST(ObjectsTest, EveryTypeBuildsWithItsParts) {
     for (const core::Shape& s : o.shapes) {
       EXPECT_TRUE(s.size.allFinite());
       EXPECT_GT(s.size.x(), 0.0);
-      EXPECT_GT(s.size.y(), 0.0);
+      if (s.kind != core::ShapeKind::kSphere) {
+        EXPECT_GT(s.size.y(), 0.0);
+      }
     }
     // standing on the floor
     auto [lo, hi] = o.LocalBounds();
     EXPECT_NEAR(lo.z(), 0.0, 1e-3);
     EXPECT_GT(hi.z(), 0.05);
     EXPECT_FALSE(o.color.empty());
-    EXPECT_EQ(o.movable, type == "box");
+    EXPECT_EQ(o.movable, type == "box" || type == "cylinder" || type == "sphere");
   }
 }
 

@@ -484,6 +484,15 @@ SceneSpec TabletopDemo() {
     o.mass_kg = it.mass_kg;
     s.objects.push_back(o);
   }
+  // a blue cylinder left of a green sphere (as the human, facing +x, sees them)
+  ObjectSpec cylinder = Obj("cylinder005", "cylinder", 1.1, -0.15, 0, table_h);
+  cylinder.color = "blue";
+  cylinder.mass_kg = 0.3;
+  s.objects.push_back(cylinder);
+  ObjectSpec sphere = Obj("sphere006", "sphere", 1.1, -0.4, 0, table_h);
+  sphere.color = "green";
+  sphere.mass_kg = 0.2;
+  s.objects.push_back(sphere);
   s.humans.push_back(Human(0.2, 0.0, 0));
   return s;
 }

@@ -1,0 +1,247 @@
+#include "simhuman/language/offline_planner.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "simhuman/world/scene.h"
+
+namespace simhuman::language {
+namespace {
+
+using ::testing::HasSubstr;
+
+struct Fixture {
+  world::SceneSpec spec;
+  core::SceneCatalog catalog;
+  PlanContext context;
+};
+
+Fixture Load(const std::string& scene) {
+  Fixture f;
+  f.spec = *world::LoadScene(scene);
+  f.catalog = *world::BuildCatalog(f.spec);
+  f.context.scene = &f.catalog;
+  for (const world::HumanSpec& h : f.spec.humans) {
+    f.context.agents.push_back({h.pos_xy.x(), h.pos_xy.y(), h.yaw_rad, h.posture});
+  }
+  return f;
+}
+
+// "object|part|joint|contact|direction" per pair, steps separated by " / "
+std::string Compact(const plan::ContactChain& chain) {
+  std::string out;
+  for (const plan::ContactStep& s : chain.steps) {
+    if (!out.empty()) out += " / ";
+    std::string step;
+    for (const plan::ContactPair& p : s.pairs) {
+      if (!step.empty()) step += ", ";
+      std::string joint = p.subject_object ? "@" + *p.subject_object + ":" + p.subject_part
+                          : p.joint        ? std::string(core::BodyJointName(*p.joint))
+                                           : "none";
+      step += p.object + "|" + p.part + "|" + joint + "|" +
+              (p.IsGetClose() ? "none" : std::string(plan::ContactTypeName(p.type))) + "|" +
+              std::string(plan::DirectionName(p.direction));
+    }
+    out += step;
+  }
+  return out;
+}
+
+std::string PlanText(const std::string& scene, const std::string& command) {
+  Fixture f = Load(scene);
+  OfflinePlanner planner;
+  core::StatusOr<PlanResult> r = planner.Plan(command, f.context);
+  if (!r.ok()) return "ERROR " + std::string(r.status().ToString());
+  EXPECT_EQ(r->explanation.size(), r->chain.steps.size());
+  return Compact(r->chain);
+}
+
+core::Status PlanStatus(const std::string& scene, const std::string& command) {
+  Fixture f = Load(scene);
+  OfflinePlanner planner;
+  return planner.Plan(command, f.context).status();
+}
+
+const std::string kCorpus = std::string(SIMHUMAN_SOURCE_DIR) + "/tests/data/language/";
+
+TEST(OfflinePlannerTest, Name) { EXPECT_EQ(OfflinePlanner().name(), "offline"); }
+
+TEST(OfflinePlannerTest, SitSynonyms) {
+  for (const char* c : {"sit on the chair", "take a seat", "have a seat on the chair", "Sit down.",
+                        "be seated in the chair", "rest on the chair"}) {
+    EXPECT_EQ(PlanText("sit_demo", c), "chair000|seat surface|pelvis|contact|up") << c;
+  }
+}
+
+TEST(OfflinePlannerTest, StandUpCopiesTheExamplePlan) {
+  // as assets/plans/sit_then_stand.json
+  EXPECT_EQ(PlanText("sit_demo", "sit on the chair, then stand up"),
+            "chair000|seat surface|pelvis|contact|up / chair000|none|none|none|front");
+  EXPECT_THAT(PlanStatus("sit_demo", "stand up").message(), HasSubstr("already standing"));
+}
+
+TEST(OfflinePlannerTest, SitVariantsFollowTable8) {
+  const std::string sit = "chair000|seat surface|pelvis|contact|up";
+  EXPECT_EQ(PlanText("sit_demo", "sit on the chair and lean back"),
+            sit + ", chair000|back surface|torso|contact|none");
+  EXPECT_EQ(PlanText("sit_demo", "sit on the chair leaning forward"),
+            sit + ", chair000|back surface|torso|not contact|none");
+  EXPECT_EQ(
+      PlanText("sit_demo", "sit down with your hands on your knees"),
+      sit + ", chair000|left knee|left hand|contact|up, chair000|right knee|right hand|contact|up");
+  EXPECT_EQ(PlanText("sit_demo", "sit down, left hand on your stomach"),
+            sit + ", chair000|pelvis|left hand|contact|none");
+  EXPECT_EQ(PlanText("sit_demo", "sit down, then cross your right foot over your left knee"),
+            sit + ", chair000|left knee|right foot|contact|none");
+  EXPECT_EQ(PlanText("living_room", "sit on the sofa with your elbows on the armrests"),
+            "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up, "
+            "sofa005|left arm|left elbow|contact|up, sofa005|right arm|right elbow|contact|up");
+  EXPECT_EQ(PlanText("living_room", "sit on the sofa and keep your right hand off the armrest"),
+            "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up, "
+            "sofa005|right arm|right hand|not contact|none");
+}
+
+TEST(OfflinePlannerTest, AConflictingPoseStartsANewStep) {
+  EXPECT_EQ(PlanText("sit_demo", "sit down and lean forward, then lean back"),
+            "chair000|seat surface|pelvis|contact|up, chair000|back surface|torso|not contact|none"
+            " / chair000|seat surface|pelvis|contact|up, chair000|back surface|torso|contact|none");
+}
+
+TEST(OfflinePlannerTest, LieVariantsFollowTable9) {
+  const std::string lie = "bed003|mattress|pelvis|contact|up, bed003|pillow|head|contact|up";
+  EXPECT_EQ(PlanText("living_room", "lie down on the bed"), lie);
+  EXPECT_EQ(PlanText("living_room", "lie on the bed with your left knee up"),
+            lie + ", bed003|mattress|left knee|not contact|none");
+  EXPECT_EQ(PlanText("living_room", "lie on the bed on your right side"),
+            lie + ", bed003|mattress|left shoulder|not contact|none");
+  EXPECT_EQ(PlanText("living_room", "lie on the bed, hands on the pillow"),
+            lie + ", bed003|pillow|left hand|contact|none, bed003|pillow|right hand|contact|none");
+  EXPECT_EQ(PlanText("living_room", "lie on the bed and put your left foot on your right knee"),
+            lie + ", bed003|right knee|left foot|contact|up");
+  // head up replaces the head-on-pillow pair
+  EXPECT_EQ(PlanText("living_room", "lie on the bed with your head up"),
+            "bed003|mattress|pelvis|contact|up, bed003|pillow|head|not contact|none");
+}
+
+TEST(OfflinePlannerTest, SitOnTheBedThenLieAsTheExamplePlan) {
+  // as assets/plans/sit_then_lie.json
+  EXPECT_EQ(PlanText("living_room", "sit on the bed, then lie down"),
+            "bed003|mattress|pelvis|contact|up, bed003|pillow|head|not contact|up / "
+            "bed003|mattress|pelvis|contact|up, bed003|pillow|head|contact|up");
+}
+
+TEST(OfflinePlannerTest, ImpliedGetCloseAndStandUp) {
+  // the sofa is far from the human beside the bed; leaving it needs standing up first
+  EXPECT_EQ(PlanText("living_room", "sit on the sofa, then lie on the bed"),
+            "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up / "
+            "sofa005|none|none|none|front / bed003|none|none|none|front / "
+            "bed003|mattress|pelvis|contact|up, bed003|pillow|head|contact|up");
+  // the laptop is within reach of the chair's seat: no standing up to touch it
+  EXPECT_EQ(PlanText("office", "sit on the chair, then touch the laptop"),
+            "chair002|seat surface|pelvis|contact|up / laptop001|keyboard|right hand|contact|up");
+}
+
+TEST(OfflinePlannerTest, Pronouns) {
+  EXPECT_EQ(PlanText("living_room", "walk to the sofa and sit on it"),
+            "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up");
+  core::Status st = PlanStatus("living_room", "sit on the sofa, then lie on it");
+  EXPECT_TRUE(absl::IsInvalidArgument(st)) << st;
+  EXPECT_THAT(st.message(), HasSubstr("cannot lie on sofa005"));
+  EXPECT_THAT(PlanStatus("sit_demo", "sit on it").message(), HasSubstr("refers to nothing"));
+}
+
+TEST(OfflinePlannerTest, Reach) {
+  EXPECT_EQ(PlanText("tabletop_demo", "put your left hand on the table"),
+            "table000|board|left hand|contact|up");
+  EXPECT_EQ(PlanText("tabletop_demo", "both hands reach the table"),
+            "table000|board|left hand|contact|up, table000|board|right hand|contact|up");
+  EXPECT_EQ(PlanText("office", "touch the screen of the laptop with your right hand"),
+            "laptop001|none|none|none|front / laptop001|screen|right hand|contact|front");
+  EXPECT_EQ(PlanText("living_room", "touch the left armrest of the sofa with your left hand"),
+            "sofa005|none|none|none|front / sofa005|left arm|left hand|contact|up");
+}
+
+TEST(OfflinePlannerTest, SpatialReferences) {
+  const std::string scene = kCorpus + "lounge_pair.json";
+  const std::string red = "chair001|none|none|none|front / chair001|seat surface|pelvis|contact|up";
+  const std::string blue =
+      "chair002|none|none|none|front / chair002|seat surface|pelvis|contact|up";
+  EXPECT_EQ(PlanText(scene, "sit on the chair next to the table"), red);
+  EXPECT_EQ(PlanText(scene, "sit on the left chair"), red);
+  EXPECT_EQ(PlanText(scene, "sit on the chair nearest the bed"), blue);
+  EXPECT_EQ(PlanText(scene, "sit on the blue chair"), blue);
+  EXPECT_EQ(PlanText(scene, "sit on the farthest chair"), blue);
+  EXPECT_EQ(PlanText(scene, "sit on the chair on the left"), red);
+  EXPECT_EQ(PlanText(scene, "sit on the chair on the right"), blue);
+}
+
+TEST(OfflinePlannerTest, AmbiguityIsAQuestion) {
+  core::Status st = PlanStatus(kCorpus + "lounge_pair.json", "sit on the chair");
+  EXPECT_TRUE(absl::IsFailedPrecondition(st)) << st;
+  EXPECT_THAT(st.message(), HasSubstr("Which chair:"));
+  EXPECT_EQ(st.message().back(), '?');
+  st = PlanStatus(kCorpus + "two_red_boxes.json", "put the red box on the yellow cylinder");
+  EXPECT_TRUE(absl::IsFailedPrecondition(st)) << st;
+  EXPECT_EQ(st.message(),
+            "Which red box: the one left of the green sphere (box001) or the one behind the "
+            "yellow cylinder (box002)?");
+}
+
+TEST(OfflinePlannerTest, TabletopCommandOfTheIssue) {
+  EXPECT_EQ(
+      PlanText("tabletop_demo",
+               "put the red box on top of the blue cylinder that is left of the green sphere"),
+      "box001|body|right hand|contact|none / box001|body|right hand|contact|none, "
+      "cylinder005|top|@box001:body|contact|up");
+  EXPECT_EQ(PlanText("tabletop_demo", "place the green box left of the blue box"),
+            "box002|body|right hand|contact|none / box002|body|right hand|contact|none, "
+            "box003|body|@box002:body|contact|left");
+  // "in front of" is towards the viewer: the reference's back (-x) here
+  EXPECT_EQ(PlanText("tabletop_demo", "put the yellow box in front of the green sphere"),
+            "box004|body|right hand|contact|none / box004|body|right hand|contact|none, "
+            "sphere006|body|@box004:body|contact|back");
+}
+
+TEST(OfflinePlannerTest, GroundingErrorsSayWhatTheSceneOffers) {
+  core::Status st = PlanStatus("office", "sit on the laptop");
+  EXPECT_TRUE(absl::IsInvalidArgument(st));
+  EXPECT_THAT(st.message(), HasSubstr("keyboard, screen"));
+  EXPECT_THAT(st.message(), HasSubstr("chair002"));
+  st = PlanStatus("sit_demo", "sit on the sofa");
+  EXPECT_THAT(st.message(), HasSubstr("no sofa"));
+  EXPECT_THAT(st.message(), HasSubstr("chair000 (brown chair): seat surface, back surface"));
+  st = PlanStatus("sit_demo", "teleport to the chair");
+  EXPECT_TRUE(absl::IsInvalidArgument(st));
+  EXPECT_THAT(st.message(), HasSubstr("'teleport'"));
+  st = PlanStatus("tabletop_demo", "put the table on the red box");
+  EXPECT_THAT(st.message(), HasSubstr("cannot be moved"));
+  st = PlanStatus("tabletop_demo",
+                  "put the red box on the blue cylinder that is right of the green sphere");
+  EXPECT_TRUE(absl::IsInvalidArgument(st));
+  EXPECT_THAT(st.message(), HasSubstr("right of sphere006"));
+}
+
+TEST(OfflinePlannerTest, ExplanationHasOneLinePerStep) {
+  Fixture f = Load("living_room");
+  core::StatusOr<PlanResult> r =
+      OfflinePlanner().Plan("sit on the sofa with your hands on the armrests", f.context);
+  ASSERT_TRUE(r.ok()) << r.status();
+  ASSERT_EQ(r->explanation.size(), 2u);
+  EXPECT_EQ(r->explanation[0], "get close to sofa005 (grey sofa) (front)");
+  EXPECT_EQ(r->explanation[1], "sit on sofa005 (grey sofa), both hands on the arms");
+  EXPECT_EQ(r->chain.steps[1].label, r->explanation[1]);
+}
+
+TEST(OfflinePlannerTest, StartingSeatedStandsUpFirst) {
+  Fixture f = Load("sit_demo");
+  f.context.agents[0] = {0.0, 0.0, 0.0, "sit"};
+  core::StatusOr<PlanResult> r = OfflinePlanner().Plan("stand up", f.context);
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_EQ(Compact(r->chain), "chair000|none|none|none|front");
+}
+
+}  // namespace
+}  // namespace simhuman::language
