@@ -36,7 +36,8 @@ std::string Slurp(const std::string& path) {
 }
 
 std::string TempDir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("simhuman_it_" + name);
+  auto dir = std::filesystem::temp_directory_path() /
+             ("simhuman_it_" + std::to_string(getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   return dir.string();
 }

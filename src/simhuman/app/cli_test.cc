@@ -1,6 +1,7 @@
 #include "simhuman/app/cli.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -33,7 +34,8 @@ CliRun Cli(std::vector<std::string> args) {
 
 // a fresh, not yet existing output folder
 std::string OutDir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("simhuman_cli_test_" + name);
+  auto dir = std::filesystem::temp_directory_path() /
+             ("simhuman_cli_test_" + std::to_string(getpid()) + "_" + name);
   std::filesystem::remove_all(dir);
   return dir.string();
 }
@@ -230,7 +232,9 @@ TEST(CommonTest, PresetAndConfigResolution) {
   ASSERT_TRUE(quality.ok());
   EXPECT_EQ(quality->preset, "quality");
   // a config file without "preset" takes the flag's preset for the keys it leaves out
-  std::string path = (std::filesystem::temp_directory_path() / "simhuman_cfg_test.json").string();
+  std::string path = (std::filesystem::temp_directory_path() /
+                      ("simhuman_cfg_test_" + std::to_string(getpid()) + ".json"))
+                         .string();
   {
     std::ofstream f(path);
     f << R"({"samples": 8})";

@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -58,7 +59,9 @@ TEST(EpisodeTest, QposColumnsNameEveryEntry) {
   t.time_s = {0.0, 1.0 / 30};
   t.qpos = {std::vector<double>(m->nq, 0.5), std::vector<double>(m->nq, -0.25)};
   t.step_index = {0, 1};
-  std::string path = (std::filesystem::temp_directory_path() / "simhuman_traj_test.csv").string();
+  std::string path = (std::filesystem::temp_directory_path() /
+                      ("simhuman_traj_test_" + std::to_string(getpid()) + ".csv"))
+                         .string();
   ASSERT_TRUE(WriteTrajectoryCsv(path, m, t).ok());
   std::ifstream in(path);
   std::string header, row1, row2, extra;
