@@ -10,6 +10,7 @@
 #include "simhuman/app/common.h"
 #include "simhuman/app/eval_command.h"
 #include "simhuman/app/run_command.h"
+#include "simhuman/app/train_command.h"
 #include "simhuman/eval/suites.h"
 #include "simhuman/world/health.h"
 #include "simhuman/world/scene.h"
@@ -111,6 +112,28 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
 
   app.add_subcommand("scenes", "List the built-in scenes and their objects");
 
+  TrainFlags tf;
+  CLI::App* train_cmd = app.add_subcommand("train", "Train a policy with PPO (resumable)");
+  train_cmd->add_option("--task", tf.task, "Task: walk or reach (a toy point mass)")
+      ->capture_default_str();
+  CLI::Option* steps_opt = train_cmd->add_option("--steps", tf.steps, "Total env steps (30M, 500k)")
+                               ->capture_default_str();
+  train_cmd->add_option("--out", tf.out, "Run folder of a new run");
+  train_cmd->add_option("--resume", tf.resume, "Run folder to continue from its checkpoint");
+  train_cmd->add_option("--config", tf.config, "PPO settings JSON file (keys of PpoConfig)");
+  CLI::Option* seed_opt = train_cmd->add_option("--seed", tf.seed, "Seed of the run")
+                              ->check(SeedValidator())
+                              ->capture_default_str();
+  train_cmd->add_option("--envs", tf.envs, "Parallel environments")->check(CLI::Range(1, 4096));
+  train_cmd->add_option("--threads", tf.threads, "Worker threads")->check(CLI::Range(1, 64));
+  train_cmd->add_flag("--quiet", tf.quiet, "No progress bar");
+
+  std::string export_ckpt, export_out;
+  CLI::App* export_cmd =
+      app.add_subcommand("export-policy", "Write the small policy file of a checkpoint");
+  export_cmd->add_option("--checkpoint", export_ckpt, "checkpoint.pt or policy file")->required();
+  export_cmd->add_option("--out", export_out, "Policy file to write")->required();
+
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
   try {
@@ -144,7 +167,13 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     return EvalCommand(ev, out, err);
   }
   if (app.got_subcommand("scenes")) return ScenesCommand(out, err);
-  err << "simhuman: error: a command is required; valid commands are: run, eval, scenes (or "
+  if (train_cmd->parsed()) {
+    tf.steps_given = steps_opt->count() > 0;
+    tf.seed_given = seed_opt->count() > 0;
+    return TrainCommand(tf, out, err);
+  }
+  if (export_cmd->parsed()) return ExportPolicyCommand(export_ckpt, export_out, out, err);
+  err << "simhuman: error: a command is required; valid commands are: run, eval, scenes, train, export-policy (or "
          "--version, --help)"
       << std::endl;
   return kExitBadInput;
