@@ -93,7 +93,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       ->capture_default_str();
 
   EvalFlags ev;
-  std::string suites = core::JoinNames(eval::SuiteNames());
+  std::string suites = core::JoinNames(eval::SuiteNames()) + ", walk";
   CLI::App* eval_cmd = app.add_subcommand("eval", "Run a benchmark suite of random episodes");
   eval_cmd->add_option("--suite", ev.suite, "Suite: " + suites)->required();
   eval_cmd->add_option("--episodes", ev.episodes, "Number of episodes")->capture_default_str();
@@ -109,6 +109,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       ->add_option("--video-every", ev.video_every,
                    "Render every K-th episode's contact sheet to DIR/ep<i>.png (0: none)")
       ->capture_default_str();
+
+  eval_cmd->add_option("--policy", ev.policy,
+                       "Walking policy file (walk suite; get-close steps of other suites)");
+  eval_cmd->add_flag("--video", ev.video, "walk suite: also write MP4s of rendered episodes");
 
   app.add_subcommand("scenes", "List the built-in scenes and their objects");
 

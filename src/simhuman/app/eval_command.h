@@ -17,6 +17,10 @@ struct EvalFlags {
   bool preset_given = false;
   std::string config;   ///< MpcConfig JSON file; empty: the preset
   int video_every = 0;  ///< contact sheet of every K-th episode; 0: none
+  /// Walking policy file: required by the `walk` suite; other suites walk their get-close
+  /// steps with it when given (default assets/policies/walk.pt when that file exists).
+  std::string policy;
+  bool video = false;  ///< walk suite: also write MP4s of rendered episodes
 };
 
 /// Runs the suite: a table row per finished episode and a summary table on `out`, files as

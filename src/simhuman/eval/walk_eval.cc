@@ -4,6 +4,7 @@
 
 #include "simhuman/control/policy/policy_controller.h"
 #include "simhuman/core/rng.h"
+#include "simhuman/eval/replay.h"
 #include "simhuman/world/sim_world.h"
 
 namespace simhuman::eval {
@@ -42,10 +43,19 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(const WalkEvalOptions& options,
     double skate = 0, path = 0;
     long skate_n = 0;
     const int steps = static_cast<int>(options.time_limit_s / kWalkPhysicsDt);
+    const bool render = options.video_every > 0 && i % options.video_every == 0;
+    control::Trajectory traj;
+    traj.nq = m->nq;
+    auto record = [&] {
+      traj.time_s.push_back(d->time);
+      traj.qpos.emplace_back(d->qpos, d->qpos + m->nq);
+      traj.step_index.push_back(0);
+    };
     const int floor = mj_name2id(m, mjOBJ_GEOM, "floor");
     int lf = mj_name2id(m, mjOBJ_GEOM, "left_foot_geom"), rf = mj_name2id(m, mjOBJ_GEOM, "right_foot_geom");
     for (int k = 0; k < steps; ++k) {
       if (k % kWalkSubsteps == 0) {
+        if (render) record();
         obs.time_s = d->time;
         absl::Status st = walker->Act(obs);
         if (!st.ok()) return st;
@@ -80,6 +90,27 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(const WalkEvalOptions& options,
       }
     }
     ep.time_s = d->time;
+    if (render) {
+      record();
+      plan::ContactChain chain;
+      plan::ContactStep step;
+      char label[96];
+      std::snprintf(label, sizeof(label), "walk %.1f m to (%.1f, %.1f), face %.0f deg", ep.dist_m,
+                    tx, ty, tyaw * 180 / M_PI);
+      step.label = label;
+      chain.steps.push_back(step);
+      ReplayOptions ro;
+      std::string base = options.sheet_dir + "/ep" + std::to_string(i);
+      ro.sheet_path = base + ".png";
+      if (options.video) ro.video_path = base + ".mp4";
+      ro.sheet_frames = 16;
+      absl::Status rs = RenderReplay(*world, chain, traj, ro);
+      if (rs.ok()) {
+        ep.sheet_path = ro.sheet_path;
+      } else {
+        ep.render_error = std::string(rs.message());
+      }
+    }
     double dist, yaw_err;
     control::WalkErrors(d, *control::MakeWalkIndex(*world, 0), walker->state(), &dist, &yaw_err);
     ep.final_dist_m = dist;

@@ -20,6 +20,9 @@ struct WalkEvalOptions {
   uint64_t seed = 1;
   double min_dist_m = 1.0, max_dist_m = 10.0;
   double time_limit_s = 30.0;
+  std::string sheet_dir;  ///< where contact sheets go (ep<i>.png)
+  int video_every = 0;    ///< render every K-th episode's contact sheet; 0: none
+  bool video = false;     ///< also write ep<i>.mp4 for rendered episodes
 };
 
 struct WalkEpisode {
@@ -31,6 +34,8 @@ struct WalkEpisode {
   double final_dist_m = 0, final_yaw_err_deg = 0;
   double foot_skate_mps = 0;
   double mean_speed_mps = 0;  ///< path length / time while walking
+  std::string sheet_path;     ///< contact sheet, when rendered
+  std::string render_error;
 };
 
 struct WalkEvalSummary {
