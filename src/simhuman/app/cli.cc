@@ -89,6 +89,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   run_cmd->add_option("--config", run.config, "MPC settings JSON file (keys of MpcConfig)");
   run_cmd->add_option("--out", run.out, "Output folder")->capture_default_str();
   run_cmd->add_flag("--video", run.video, "Also render DIR/video.mp4 and DIR/contact_sheet.png");
+  run_cmd->add_option("--policy", run.policy,
+                      "Walking policy for get-close steps (default assets/policies/walk.pt if "
+                      "present)");
+  run_cmd->add_flag("--no-walk", run.no_walk, "Do get-close steps with the MPC only");
   run_cmd->add_option("--settle", run.settle_s, "Seconds to keep simulating after the last step")
       ->capture_default_str();
 

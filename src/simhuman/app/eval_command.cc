@@ -184,6 +184,7 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
   options.out_dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
   options.config = *config;
   options.video_every = flags.video_every;
+  options.walk_policy = eval::DefaultWalkPolicy(flags.policy);
   absl::Status dir = MakeOutputDir(options.out_dir);
   if (!dir.ok()) return ReportError(err, kCommand, dir);
 
