@@ -157,6 +157,12 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   t.velocity = std::exp(-((vx - e.s.cmd.vx) * (vx - e.s.cmd.vx) +
                           (vy - e.s.cmd.vy) * (vy - e.s.cmd.vy)) / 0.25);
   t.yaw_rate = std::exp(-(wz - e.s.cmd.yaw_rate) * (wz - e.s.cmd.yaw_rate) / 0.5);
+  // progress along the commanded direction (a gradient where velocity tracking has none)
+  double cmd_speed = std::hypot(e.s.cmd.vx, e.s.cmd.vy);
+  t.progress = cmd_speed > 0.05 ? std::clamp((vx * e.s.cmd.vx + vy * e.s.cmd.vy) / cmd_speed,
+                                             -0.5, cmd_speed)
+                                : 0.0;
+  t.facing = 0.5 * (1.0 + std::cos(e.s.facing_rad - yaw));
   double ref[kWalkActDim];
   control::WalkReference(params_, e.s.phase, e.s.amplitude, e.s.cmd, ref);
   double err_legs = 0, err_upper = 0;
@@ -168,6 +174,14 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   t.gait_upper = std::exp(-err_upper / 1.0);
   bool lc, rc;
   control::FootContacts(d, ix_, &lc, &rc);
+  // feet sliding while on the ground
+  t.foot_slip = 0;
+  for (int side = 0; side < 2; ++side) {
+    if (!(side == 0 ? lc : rc)) continue;
+    mjtNum vel[6];
+    mj_objectVelocity(m, d, mjOBJ_BODY, side == 0 ? a.left_foot_body : a.right_foot_body, vel, 0);
+    t.foot_slip += vel[3] * vel[3] + vel[4] * vel[4];
+  }
   int el, er;
   control::WalkExpectedContacts(params_, e.s.phase, e.s.amplitude, &el, &er);
   auto match = [](int expect, bool contact) {
@@ -192,11 +206,12 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   }
   t.action_rate = rate / kWalkActDim;
   t.power = power;
-  t.total = w_.scale * (w_.velocity * t.velocity + w_.yaw_rate * t.yaw_rate +
+  t.total = w_.scale * (w_.velocity * t.velocity + w_.progress * t.progress +
+                        w_.yaw_rate * t.yaw_rate + w_.facing * t.facing +
                         w_.gait_legs * t.gait_legs + w_.gait_upper * t.gait_upper +
                         w_.contact * t.contact + w_.upright * t.upright + w_.height * t.height +
                         w_.alive + w_.at_target * t.at_target - w_.action_rate * t.action_rate -
-                        w_.power * t.power);
+                        w_.power * t.power - w_.foot_slip * t.foot_slip);
 
   // success: inside the tolerances and stopped for 0.5 s; a new target after 1.5 s
   if (inside && speed2 < kStoppedSpeed * kStoppedSpeed) {

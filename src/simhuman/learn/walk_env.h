@@ -22,16 +22,18 @@ namespace simhuman::learn {
 
 /// Reward weights of the walking task (the sum is scaled by `scale`).
 struct WalkRewardWeights {
-  double velocity = 1.0, yaw_rate = 0.5, gait_legs = 1.0, gait_upper = 0.3, contact = 0.3,
-         upright = 0.5, height = 0.3, alive = 0.5, at_target = 1.0;
-  double action_rate = 0.02, power = 2e-5;
+  double velocity = 1.0, progress = 1.5, yaw_rate = 0.5, facing = 0.5, gait_legs = 1.0,
+         gait_upper = 0.3, contact = 0.3, upright = 0.5, height = 0.3, alive = 0.5,
+         at_target = 1.0;
+  double action_rate = 0.02, power = 2e-5, foot_slip = 0.5;
   double scale = 0.1;
 };
 
 /// Terms of the last reward (for logs and tests).
 struct WalkRewardTerms {
-  double velocity = 0, yaw_rate = 0, gait_legs = 0, gait_upper = 0, contact = 0, upright = 0,
-         height = 0, at_target = 0, action_rate = 0, power = 0, total = 0;
+  double velocity = 0, progress = 0, yaw_rate = 0, facing = 0, gait_legs = 0, gait_upper = 0,
+         contact = 0, upright = 0, height = 0, at_target = 0, action_rate = 0, power = 0,
+         foot_slip = 0, total = 0;
 };
 
 class WalkTask : public VecTask {

@@ -141,11 +141,13 @@ void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix
     s->stepping = false;
   }
   WalkCommand c;
+  s->facing_rad = s->target_yaw_rad;
   if (s->stepping) {
     // face the target while far, the requested heading when close
     double bearing = std::atan2(delta.y(), delta.x());
     double w = Clamp((dist - 0.5) / 0.7, 0.0, 1.0);
     double facing = s->target_yaw_rad + w * Wrap(bearing - s->target_yaw_rad);
+    s->facing_rad = facing;
     c.yaw_rate = Clamp(2.0 * Wrap(facing - yaw), -p.max_yaw_rate, p.max_yaw_rate);
     double speed = p.vmax_mps * Clamp((dist - 0.05) / 1.0, 0.0, 1.0);
     Eigen::Vector3d local = ToHeading(Eigen::Vector3d(delta.x(), delta.y(), 0), yaw);

@@ -54,6 +54,7 @@ struct WalkState {
   double amplitude = 0;    ///< smoothed stepping amplitude in [0, 1]
   bool stepping = false;   ///< hysteresis state: walking or standing
   WalkCommand cmd;
+  double facing_rad = 0;  ///< heading the command turns toward (bearing far, target yaw near)
   std::array<float, kWalkActDim> prev_action{};
 };
 
