@@ -14,6 +14,7 @@ struct WalkPolicyController::Impl {
   WalkState state;
   LoadedPolicy policy;
   bool fixed_target = false;
+  bool has_target = false;
   std::array<double, kWalkActDim> ctrl{};
   bool started = false;
 };
@@ -42,6 +43,7 @@ core::StatusOr<std::unique_ptr<WalkPolicyController>> WalkPolicyController::Load
 
 void WalkPolicyController::SetTarget(double x, double y, double yaw_rad) {
   impl_->fixed_target = true;
+  impl_->has_target = true;
   impl_->state.target_xy = Eigen::Vector2d(x, y);
   impl_->state.target_yaw_rad = yaw_rad;
 }
@@ -59,13 +61,14 @@ const WalkState& WalkPolicyController::state() const { return impl_->state; }
 
 absl::Status WalkPolicyController::Act(const Observation& obs) {
   Impl& m = *impl_;
-  if (!m.fixed_target) {
-    if (!obs.task || !obs.task->get_close) {
-      return absl::FailedPreconditionError("walk policy: step " + std::to_string(obs.step_index) +
-                                           " is not a get-close step and no target was set");
-    }
+  if (!m.fixed_target && obs.task && obs.task->get_close) {
     m.state.target_xy = obs.task->stand_point.head<2>();
     m.state.target_yaw_rad = obs.task->stand_yaw_rad;
+    m.has_target = true;
+  }
+  if (!m.has_target) {
+    return absl::FailedPreconditionError("walk policy: step " + std::to_string(obs.step_index) +
+                                         " is not a get-close step and no target was set");
   }
   UpdateWalkCommand(m.params, obs.data, m.ix, &m.state);
   std::array<float, kWalkObsDim> o;
@@ -110,9 +113,21 @@ absl::Status WalkThenContactController::Act(const Observation& obs) {
     step_ = obs.step_index;
     // walk only for get-close steps that start standing (not "stand up" from a seat or bed)
     const mjtNum* pelvis = obs.data->xpos + 3 * obs.world->agent(obs.agent).pelvis_body;
-    walking_ = obs.task && obs.task->get_close && obs.task->posture == Posture::kStand &&
-               pelvis[2] > 0.8 * obs.world->agent(obs.agent).scale;
-    if (walking_) walker_->Restart();
+    bool walk = obs.task && obs.task->get_close && obs.task->posture == Posture::kStand &&
+                pelvis[2] > 0.8 * obs.world->agent(obs.agent).scale;
+    if (walk) {
+      walking_ = true;
+      finishing_ = false;
+      walker_->Restart();
+    } else if (walking_) {
+      // the plan moved on (its get-close test is looser); keep walking to the stand point
+      // until stopped there, so the contact controller never takes over a moving human
+      finishing_ = true;
+      finish_deadline_s_ = obs.time_s + kMaxFinishS;
+    }
+  }
+  if (finishing_ && (walker_->Arrived(obs.data) || obs.time_s > finish_deadline_s_)) {
+    walking_ = finishing_ = false;
   }
   return active()->Act(obs);
 }

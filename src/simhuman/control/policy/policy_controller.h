@@ -55,7 +55,9 @@ class WalkPolicyController : public Controller {
 };
 
 /// Walks with the policy during get-close steps and hands over to `contact` (e.g. the MPC) for
-/// every other step. Neither controller is owned.
+/// every other step. When the plan leaves a get-close step before the walker has stopped at
+/// the stand point (the plan's get-close test is looser), walking goes on until Arrived() or
+/// kMaxFinishS, so the handover happens standing still. Neither controller is owned.
 class WalkThenContactController : public Controller {
  public:
   WalkThenContactController(WalkPolicyController* walker, Controller* contact)
@@ -66,12 +68,15 @@ class WalkThenContactController : public Controller {
   double control_period_s() const override { return active()->control_period_s(); }
   double physics_timestep_s() const override { return active()->physics_timestep_s(); }
   bool walking() const { return walking_; }
+  static constexpr double kMaxFinishS = 6.0;
 
  private:
   Controller* active() const { return walking_ ? static_cast<Controller*>(walker_) : contact_; }
   WalkPolicyController* walker_;
   Controller* contact_;
   bool walking_ = false;
+  bool finishing_ = false;
+  double finish_deadline_s_ = 0;
   int step_ = -1;
 };
 
