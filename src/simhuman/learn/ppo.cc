@@ -112,7 +112,8 @@ nlohmann::json PpoConfig::ToJson() const {
                         {"init_std", init_std},
                         {"hidden", hidden},
                         {"checkpoint_every_s", checkpoint_every_s},
-                        {"max_bad_updates", max_bad_updates}};
+                        {"max_bad_updates", max_bad_updates},
+                        {"curriculum_max_steps", curriculum_max_steps}};
 }
 
 core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
@@ -150,6 +151,7 @@ core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
     get("hidden", c.hidden);
     get("checkpoint_every_s", c.checkpoint_every_s);
     get("max_bad_updates", c.max_bad_updates);
+    get("curriculum_max_steps", c.curriculum_max_steps);
   } catch (const nlohmann::json::exception& e) {
     return absl::InvalidArgumentError(std::string("training config: ") + e.what());
   }
@@ -184,7 +186,8 @@ struct PpoTrainer::Impl {
   double best_success = -1;
   int bad_in_row = 0;
   std::deque<EpisodeStats> window;
-  int curr_count = 0, curr_success = 0;  // episodes since the last curriculum change
+  int curr_count = 0, curr_success = 0;  // episodes since the last curriculum check
+  int64_t curr_steps = 0;                 // env steps at the current level
   Clock::time_point last_ckpt = Clock::now();
 
   std::vector<torch::Tensor> Params() {
@@ -449,11 +452,15 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   auto t1 = Clock::now();
 
   // curriculum: widen when more than half of recent episodes succeed
+  m.curr_steps += static_cast<int64_t>(T) * E;
+  bool raise = m.cfg.curriculum_max_steps > 0 && m.curr_steps >= m.cfg.curriculum_max_steps;
   if (m.curr_count >= 64) {
-    if (m.curr_success > m.curr_count / 2) {
-      m.env->task().set_curriculum(std::min(1.0, m.env->task().curriculum() + 1.0 / 9.0));
-    }
+    raise = raise || m.curr_success > m.curr_count / 2;
     m.curr_count = m.curr_success = 0;
+  }
+  if (raise && m.env->task().curriculum() < 1.0) {
+    m.env->task().set_curriculum(std::min(1.0, m.env->task().curriculum() + 1.0 / 9.0));
+    m.curr_steps = 0;
   }
 
   // update

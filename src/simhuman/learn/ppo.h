@@ -47,6 +47,9 @@ struct PpoConfig {
   std::vector<int> hidden = {256, 256};
   double checkpoint_every_s = 180;
   int max_bad_updates = 5;  ///< abort after this many non-finite updates in a row
+  /// The curriculum level rises by 1/9 when more than half of >= 64 recent episodes succeed,
+  /// and at the latest after this many env steps at one level (0: only on success).
+  int64_t curriculum_max_steps = 400'000;
 
   absl::Status Validate() const;
   nlohmann::json ToJson() const;
