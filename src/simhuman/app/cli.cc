@@ -136,11 +136,13 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   train_cmd->add_option("--threads", tf.threads, "Worker threads")->check(CLI::Range(1, 64));
   train_cmd->add_flag("--quiet", tf.quiet, "No progress bar");
 
-  std::string export_ckpt, export_out;
+  std::string export_ckpt, export_out, export_eval;
   CLI::App* export_cmd =
       app.add_subcommand("export-policy", "Write the small policy file of a checkpoint");
   export_cmd->add_option("--checkpoint", export_ckpt, "checkpoint.pt or policy file")->required();
   export_cmd->add_option("--out", export_out, "Policy file to write")->required();
+  export_cmd->add_option("--eval-summary", export_eval,
+                         "summary.json of a `simhuman eval` of this policy (provenance)");
 
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
@@ -180,7 +182,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     tf.seed_given = seed_opt->count() > 0;
     return TrainCommand(tf, out, err);
   }
-  if (export_cmd->parsed()) return ExportPolicyCommand(export_ckpt, export_out, out, err);
+  if (export_cmd->parsed()) return ExportPolicyCommand(export_ckpt, export_out, export_eval, out, err);
   err << "simhuman: error: a command is required; valid commands are: run, eval, scenes, train, export-policy (or "
          "--version, --help)"
       << std::endl;

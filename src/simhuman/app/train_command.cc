@@ -3,12 +3,17 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
 
 #include "simhuman/app/common.h"
 #include "simhuman/learn/ppo.h"
+
+#ifndef SIMHUMAN_GIT_REV
+#define SIMHUMAN_GIT_REV "unknown"
+#endif
 
 namespace simhuman::app {
 namespace {
@@ -126,10 +131,53 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
 }
 
 int ExportPolicyCommand(const std::string& checkpoint, const std::string& out_path,
-                        std::ostream& out, std::ostream& err) {
+                        const std::string& eval_summary, std::ostream& out, std::ostream& err) {
   absl::Status s = learn::ExportPolicy(checkpoint, out_path);
   if (!s.ok()) return ReportError(err, "export-policy", s);
-  out << "simhuman export-policy: wrote " << out_path << std::endl;
+  namespace fs = std::filesystem;
+  fs::path run = fs::path(checkpoint).parent_path();
+  auto read_json = [](const fs::path& p) {
+    std::ifstream f(p);
+    return f ? nlohmann::json::parse(f, nullptr, false) : nlohmann::json();
+  };
+  nlohmann::ordered_json prov;
+  prov["policy"] = fs::path(out_path).filename().string();
+  prov["source_checkpoint"] = checkpoint;
+  prov["git_revision"] = SIMHUMAN_GIT_REV;
+  nlohmann::json cfg = read_json(run / "config.json");
+  prov["train_config"] = cfg;
+  if (cfg.is_object()) {
+    prov["command"] = "simhuman train --task " + cfg.value("task", std::string("?")) +
+                      " --steps " + std::to_string(cfg.value("total_steps", int64_t{0})) +
+                      " --out <run> --seed " + std::to_string(cfg.value("seed", uint64_t{0})) +
+                      " --envs " + std::to_string(cfg.value("num_envs", 0)) + " --threads " +
+                      std::to_string(cfg.value("threads", 0)) + "  (resumed with --resume <run>)";
+  }
+  // the log line of the checkpoint's step count
+  auto meta = learn::ReadCheckpointProgress(checkpoint);
+  if (meta.ok()) {
+    prov["env_steps"] = meta->first;
+    prov["train_wall_s"] = meta->second;
+  }
+  std::ifstream log(run / "log.jsonl");
+  std::string line, last;
+  while (std::getline(log, line)) {
+    nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (j.is_object() && meta.ok() && j.value("env_steps", int64_t{0}) <= meta->first) last = line;
+  }
+  if (!last.empty()) prov["train_metrics"] = nlohmann::json::parse(last);
+  if (!eval_summary.empty()) {
+    nlohmann::json e = read_json(eval_summary);
+    if (e.is_discarded() || e.is_null()) {
+      return ReportError(err, "export-policy",
+                         absl::InvalidArgumentError(eval_summary + ": cannot read the summary"));
+    }
+    prov["eval"] = e;
+  }
+  fs::path prov_path = fs::path(out_path).replace_extension(".json");
+  std::ofstream(prov_path) << prov.dump(2) << "\n";
+  out << "simhuman export-policy: wrote " << out_path << " and " << prov_path.string()
+      << std::endl;
   return kExitOk;
 }
 

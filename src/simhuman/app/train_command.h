@@ -29,8 +29,11 @@ absl::Status ParseStepCount(const std::string& text, int64_t* out);
 /// Runs or resumes training until the step target, printing a progress bar to `out`.
 int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err);
 
-/// `simhuman export-policy --checkpoint C --out F`: writes the small policy file.
+/// `simhuman export-policy --checkpoint C --out F [--eval-summary S]`: writes the small policy
+/// file F and its provenance F.json (without the extension): the run's config.json, the
+/// checkpoint's steps and training wall time, the last log.jsonl line, the build's git
+/// revision, and the `simhuman eval` summary S when given.
 int ExportPolicyCommand(const std::string& checkpoint, const std::string& out_path,
-                        std::ostream& out, std::ostream& err);
+                        const std::string& eval_summary, std::ostream& out, std::ostream& err);
 
 }  // namespace simhuman::app

@@ -595,9 +595,30 @@ absl::Status ExportPolicy(const std::string& checkpoint, const std::string& out)
   try {
     torch::serialize::OutputArchive ar;
     control::SavePolicyKeys(ar, p->meta, p->actor, p->norm);
+    auto progress = ReadCheckpointProgress(checkpoint);
+    if (progress.ok()) ar.write("env_steps", c10::IValue(progress->first));
     return SaveAtomic(ar, out);
   } catch (const c10::Error& e) {
     return absl::InternalError(out + ": " + e.what_without_backtrace());
+  }
+}
+
+}  // namespace simhuman::learn
+
+namespace simhuman::learn {
+
+core::StatusOr<std::pair<int64_t, double>> ReadCheckpointProgress(const std::string& path) {
+  try {
+    torch::serialize::InputArchive ar;
+    ar.load_from(path);
+    c10::IValue steps, wall;
+    if (!ar.try_read("env_steps", steps)) {
+      return absl::DataLossError(path + ": no env_steps in the file");
+    }
+    double w = ar.try_read("wall_s", wall) ? wall.toDouble() : 0.0;
+    return std::make_pair(static_cast<int64_t>(steps.toInt()), w);
+  } catch (const c10::Error& e) {
+    return absl::DataLossError(path + ": corrupt or unreadable: " + e.what_without_backtrace());
   }
 }
 

@@ -106,4 +106,8 @@ class PpoTrainer {
 /// (atomic). Errors name the file.
 absl::Status ExportPolicy(const std::string& checkpoint, const std::string& out);
 
+/// (env_steps, training wall seconds) stored in a checkpoint or policy file (wall 0 when the
+/// file holds none). Errors name the file.
+core::StatusOr<std::pair<int64_t, double>> ReadCheckpointProgress(const std::string& path);
+
 }  // namespace simhuman::learn
