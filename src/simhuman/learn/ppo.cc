@@ -355,6 +355,20 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
   } catch (const std::exception& e) {
     return absl::DataLossError(path + ": corrupt checkpoint: " + e.what());
   }
+  // iterations logged after the checkpoint were lost with the process: drop their lines
+  {
+    std::string log_path = out_dir + "/log.jsonl";
+    std::ifstream in(log_path);
+    std::string line, kept;
+    while (std::getline(in, line)) {
+      nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+      if (j.is_object() && j.value("env_steps", int64_t{0}) <= impl->env_steps) kept += line + "\n";
+    }
+    in.close();
+    std::ofstream(log_path + ".tmp") << kept;
+    std::error_code ec;
+    fs::rename(log_path + ".tmp", log_path, ec);
+  }
   // new episodes after a resume get fresh seeds
   impl->env->ResetAll(static_cast<uint64_t>(impl->iteration + 1) << 24);
   return std::unique_ptr<PpoTrainer>(new PpoTrainer(std::move(impl)));
