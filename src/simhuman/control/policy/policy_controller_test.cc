@@ -75,3 +75,55 @@ TEST(WalkPolicyController, WrongTaskMissingAndCorruptFilesAreErrors) {
 
 }  // namespace
 }  // namespace simhuman::control
+
+namespace simhuman::control {
+namespace {
+
+class FakeContact : public Controller {
+ public:
+  std::string name() const override { return "fake"; }
+  absl::Status Act(const Observation&) override {
+    ++acts;
+    return absl::OkStatus();
+  }
+  void Targets(double, double* ctrl28) const override { std::fill(ctrl28, ctrl28 + 28, 0.0); }
+  double control_period_s() const override { return 0.04; }
+  int acts = 0;
+};
+
+TEST(WalkThenContactController, WalksGetCloseStepsAndHandsOverOnlyWhenStopped) {
+  auto world = World();
+  auto walker = WalkPolicyController::Load(WritePolicy("hand", "walk", kWalkObsDim), world.get(), 0);
+  ASSERT_TRUE(walker.ok());
+  FakeContact mpc;
+  WalkThenContactController c(walker->get(), &mpc);
+  StepTask walk_task;
+  walk_task.get_close = true;
+  walk_task.stand_point = Eigen::Vector3d(3, 0, 0);
+  StepTask sit_task;
+  Observation obs;
+  obs.world = world.get();
+  obs.data = world->data();
+  obs.task = &walk_task;
+  obs.step_index = 0;
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_TRUE(c.walking());
+  EXPECT_DOUBLE_EQ(c.physics_timestep_s(), kWalkPhysicsDt);
+  EXPECT_EQ(mpc.acts, 0);
+  // the plan moves on while the human is 3 m from the stand point: keep walking
+  obs.task = &sit_task;
+  obs.step_index = 1;
+  obs.time_s = 1.0;
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_TRUE(c.walking());
+  EXPECT_EQ(mpc.acts, 0);
+  // ... but not forever
+  obs.time_s = 1.0 + WalkThenContactController::kMaxFinishS + 0.1;
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_FALSE(c.walking());
+  EXPECT_EQ(mpc.acts, 1);
+  EXPECT_DOUBLE_EQ(c.physics_timestep_s(), 0.0);
+}
+
+}  // namespace
+}  // namespace simhuman::control
