@@ -282,3 +282,35 @@ TEST(CliIntegrationTest, EvalSitTwoEpisodes) {
 }
 
 }  // namespace
+
+namespace {
+
+// `simhuman train` on the toy task: a run, its resume, and the errors a user can make
+TEST(CliIntegrationTest, TrainResumeAndCorruptCheckpoint) {
+  std::string dir = TempDir("train_reach");
+  Proc p = RunBin({"train", "--task", "reach", "--steps", "8k", "--out", dir, "--envs", "16",
+                   "--quiet"});
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/checkpoint.pt"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/log.jsonl"));
+  // a second run into the same folder must not overwrite it
+  Proc again = RunBin({"train", "--task", "reach", "--steps", "8k", "--out", dir});
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
+  Proc resumed = RunBin({"train", "--resume", dir, "--steps", "16k", "--quiet"});
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("resumed at"), std::string::npos) << resumed.out;
+  Proc bad_steps = RunBin({"train", "--task", "reach", "--steps", "lots", "--out", dir + "x"});
+  EXPECT_EQ(bad_steps.exit_code, 2);
+  EXPECT_NE(bad_steps.err.find("--steps 'lots'"), std::string::npos) << bad_steps.err;
+  std::filesystem::resize_file(dir + "/checkpoint.pt", 100);
+  Proc corrupt = RunBin({"train", "--resume", dir});
+  EXPECT_NE(corrupt.exit_code, 0);
+  EXPECT_EQ(corrupt.signal, 0);
+  EXPECT_NE(corrupt.err.find("checkpoint.pt"), std::string::npos) << corrupt.err;
+  Proc walk_no_policy = RunBin({"eval", "--suite", "walk", "--episodes", "1"});
+  EXPECT_EQ(walk_no_policy.exit_code, 2);
+  EXPECT_NE(walk_no_policy.err.find("--policy"), std::string::npos);
+}
+
+}  // namespace

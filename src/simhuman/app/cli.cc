@@ -12,6 +12,7 @@
 #include "simhuman/app/plan_command.h"
 #include "simhuman/app/planner_factory.h"
 #include "simhuman/app/run_command.h"
+#include "simhuman/app/train_command.h"
 #include "simhuman/core/version.h"
 #include "simhuman/eval/suites.h"
 #include "simhuman/world/health.h"
@@ -95,11 +96,15 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   run_cmd->add_option("--config", run.config, "MPC settings JSON file (keys of MpcConfig)");
   run_cmd->add_option("--out", run.out, "Output folder")->capture_default_str();
   run_cmd->add_flag("--video", run.video, "Also render DIR/video.mp4 and DIR/contact_sheet.png");
+  run_cmd->add_option("--policy", run.policy,
+                      "Walking policy for get-close steps (default assets/policies/walk.pt if "
+                      "present)");
+  run_cmd->add_flag("--no-walk", run.no_walk, "Do get-close steps with the MPC only");
   run_cmd->add_option("--settle", run.settle_s, "Seconds to keep simulating after the last step")
       ->capture_default_str();
 
   EvalFlags ev;
-  std::string suites = core::JoinNames(eval::SuiteNames()) + ", " + kLanguageSuite;
+  std::string suites = core::JoinNames(eval::SuiteNames()) + ", " + kLanguageSuite + ", walk";
   CLI::App* eval_cmd = app.add_subcommand("eval", "Run a benchmark suite of random episodes");
   eval_cmd->add_option("--suite", ev.suite, "Suite: " + suites)->required();
   eval_cmd->add_option("--episodes", ev.episodes, "Number of episodes")->capture_default_str();
@@ -121,6 +126,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                    "Render every K-th episode's contact sheet to DIR/ep<i>.png (0: none)")
       ->capture_default_str();
 
+  eval_cmd->add_option("--policy", ev.policy,
+                       "Walking policy file (walk suite; get-close steps of other suites)");
+  eval_cmd->add_flag("--video", ev.video, "walk suite: also write MP4s of rendered episodes");
+
   PlanFlags pl;
   CLI::App* plan_cmd =
       app.add_subcommand("plan", "Turn a text command into a Chain-of-Contacts plan and print it");
@@ -137,6 +146,30 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   AddLlmFlags(*plan_cmd, pl.llm);
 
   app.add_subcommand("scenes", "List the built-in scenes and their objects");
+
+  TrainFlags tf;
+  CLI::App* train_cmd = app.add_subcommand("train", "Train a policy with PPO (resumable)");
+  train_cmd->add_option("--task", tf.task, "Task: walk or reach (a toy point mass)")
+      ->capture_default_str();
+  CLI::Option* steps_opt = train_cmd->add_option("--steps", tf.steps, "Total env steps (30M, 500k)")
+                               ->capture_default_str();
+  train_cmd->add_option("--out", tf.out, "Run folder of a new run");
+  train_cmd->add_option("--resume", tf.resume, "Run folder to continue from its checkpoint");
+  train_cmd->add_option("--config", tf.config, "PPO settings JSON file (keys of PpoConfig)");
+  CLI::Option* seed_opt = train_cmd->add_option("--seed", tf.seed, "Seed of the run")
+                              ->check(SeedValidator())
+                              ->capture_default_str();
+  train_cmd->add_option("--envs", tf.envs, "Parallel environments")->check(CLI::Range(1, 4096));
+  train_cmd->add_option("--threads", tf.threads, "Worker threads")->check(CLI::Range(1, 64));
+  train_cmd->add_flag("--quiet", tf.quiet, "No progress bar");
+
+  std::string export_ckpt, export_out, export_eval;
+  CLI::App* export_cmd =
+      app.add_subcommand("export-policy", "Write the small policy file of a checkpoint");
+  export_cmd->add_option("--checkpoint", export_ckpt, "checkpoint.pt or policy file")->required();
+  export_cmd->add_option("--out", export_out, "Policy file to write")->required();
+  export_cmd->add_option("--eval-summary", export_eval,
+                         "summary.json of a `simhuman eval` of this policy (provenance)");
 
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
@@ -172,7 +205,15 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   }
   if (plan_cmd->parsed()) return PlanCommand(pl, out, err);
   if (app.got_subcommand("scenes")) return ScenesCommand(out, err);
-  err << "simhuman: error: a command is required; valid commands are: run, plan, eval, scenes (or "
+  if (train_cmd->parsed()) {
+    tf.steps_given = steps_opt->count() > 0;
+    tf.seed_given = seed_opt->count() > 0;
+    return TrainCommand(tf, out, err);
+  }
+  if (export_cmd->parsed())
+    return ExportPolicyCommand(export_ckpt, export_out, export_eval, out, err);
+  err << "simhuman: error: a command is required; valid commands are: run, plan, eval, scenes, "
+         "train, export-policy (or "
          "--version, --help)"
       << std::endl;
   return kExitBadInput;

@@ -4,6 +4,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 
 #include "simhuman/app/common.h"
@@ -11,6 +12,7 @@
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/eval_runner.h"
 #include "simhuman/eval/language_suite.h"
+#include "simhuman/eval/walk_eval.h"
 
 namespace simhuman::app {
 namespace {
@@ -115,6 +117,71 @@ int LanguageEval(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
   absl::Status st = eval::WriteJsonFile(path, eval::LanguageSummaryJson(*s, flags.planner, corpus));
   if (!st.ok()) return ReportError(err, kCommand, absl::InternalError(st.message()));
   out << "wrote " << path << std::endl;
+  return 0;
+}
+
+// the `walk` suite: the walking policy alone (eval/walk_eval.h)
+int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
+  if (flags.policy.empty()) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError("--suite walk needs --policy <file>"));
+  }
+  eval::WalkEvalOptions o;
+  o.policy = flags.policy;
+  o.episodes = flags.episodes;
+  o.seed = flags.seed;
+  o.video_every = flags.video_every;
+  o.video = flags.video;
+  o.sheet_dir = flags.out.empty() ? "out/eval_walk" : flags.out;
+  absl::Status dir = MakeOutputDir(o.sheet_dir);
+  if (!dir.ok()) return ReportError(err, kCommand, dir);
+  std::ofstream lines(o.sheet_dir + "/episodes.jsonl", std::ios::trunc);
+  out << "simhuman eval: suite walk, " << o.episodes << " episodes, seed " << o.seed << ", policy "
+      << o.policy << " -> " << o.sheet_dir << std::endl;
+  out << Row("%4s %7s %-4s %-4s %7s %8s %8s %9s %9s", "ep", "dist_m", "ok", "fell", "time_s",
+             "end_cm", "end_deg", "speed_ms", "skate_ms")
+      << std::endl;
+  auto summary = eval::RunWalkEval(o, nullptr, [&](const eval::WalkEpisode& e) {
+    out << Row("%4d %7.2f %-4s %-4s %7.2f %8.1f %8.1f %9.2f %9.3f", e.index, e.dist_m,
+               e.success ? "yes" : "no", e.fell ? "yes" : "no", e.time_s, 100 * e.final_dist_m,
+               e.final_yaw_err_deg, e.mean_speed_mps, e.foot_skate_mps)
+        << std::endl;
+    if (!e.render_error.empty())
+      out << "     (not rendered: " << e.render_error << ")" << std::endl;
+    nlohmann::ordered_json j;
+    j["episode"] = e.index;
+    j["dist_m"] = e.dist_m;
+    j["success"] = e.success;
+    j["fell"] = e.fell;
+    j["time_s"] = e.time_s;
+    j["final_dist_m"] = e.final_dist_m;
+    j["final_yaw_err_deg"] = e.final_yaw_err_deg;
+    j["mean_speed_mps"] = e.mean_speed_mps;
+    j["foot_skate_mps"] = e.foot_skate_mps;
+    if (!e.sheet_path.empty()) j["contact_sheet"] = e.sheet_path;
+    lines << j.dump() << "\n" << std::flush;
+  });
+  if (!summary.ok()) return ReportError(err, kCommand, summary.status());
+  nlohmann::ordered_json j;
+  j["suite"] = "walk";
+  j["episodes"] = summary->episodes;
+  j["success_rate"] = summary->success_rate;
+  j["fall_rate"] = summary->fall_rate;
+  j["mean_time_to_success_s"] = summary->mean_time_s;
+  j["foot_skate_mps"] = summary->foot_skate_mps;
+  j["final_dist_m"] = summary->final_dist_m;
+  j["final_yaw_err_deg"] = summary->final_yaw_err_deg;
+  j["policy"] = o.policy;
+  j["seed"] = o.seed;
+  const nlohmann::ordered_json provenance = eval::ProvenanceJson();
+  for (const auto& [k, v] : provenance.items()) j[k] = v;
+  absl::Status ws = eval::WriteJsonFile(o.sheet_dir + "/summary.json", j);
+  if (!ws.ok()) return ReportError(err, kCommand, ws);
+  out << Row("\nsummary: success %.1f%%  falls %.1f%%  time %.1f s  skate %.3f m/s  end %.1f cm "
+             "%.1f deg",
+             100 * summary->success_rate, 100 * summary->fall_rate, summary->mean_time_s,
+             summary->foot_skate_mps, 100 * summary->final_dist_m, summary->final_yaw_err_deg)
+      << std::endl;
   return kExitOk;
 }
 
@@ -122,13 +189,19 @@ int LanguageEval(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
 
 int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
   if (flags.suite == kLanguageSuite) return LanguageEval(flags, out, err);
+  if (flags.suite == "walk") {
+    if (flags.episodes < 1) {
+      return ReportError(err, kCommand, absl::InvalidArgumentError("--episodes must be >= 1"));
+    }
+    return WalkEvalCommand(flags, out, err);
+  }
   std::optional<eval::Suite> suite = eval::ParseSuite(flags.suite);
   if (!suite) {
     return ReportError(
         err, kCommand,
         absl::InvalidArgumentError("--suite: unknown suite '" + flags.suite +
                                    "'; valid suites are: " + core::JoinNames(eval::SuiteNames()) +
-                                   ", " + kLanguageSuite));
+                                   ", " + kLanguageSuite + ", walk"));
   }
   if (flags.episodes < 1) {
     return ReportError(err, kCommand,
@@ -151,6 +224,7 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
   options.out_dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
   options.config = *config;
   options.video_every = flags.video_every;
+  options.walk_policy = eval::DefaultWalkPolicy(flags.policy);
   absl::Status dir = MakeOutputDir(options.out_dir);
   if (!dir.ok()) return ReportError(err, kCommand, dir);
 

@@ -22,6 +22,10 @@ struct EvalFlags {
   std::string corpus;               ///< language suite: corpus file; empty: the one in the sources
   std::string planner = "offline";  ///< language suite: the planner
   LlmFlags llm;                     ///< --llm-* flags (with --planner llm)
+  /// Walking policy file: required by the `walk` suite; other suites walk their get-close
+  /// steps with it when given (default assets/policies/walk.pt when that file exists).
+  std::string policy;
+  bool video = false;  ///< walk suite: also write MP4s of rendered episodes
 };
 
 /// The suite name of the language benchmark (no episodes: a corpus of commands).

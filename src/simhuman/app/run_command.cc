@@ -116,8 +116,13 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   options.record = true;
   options.progress = [&](const control::ProgressEvent& e) { PrintProgress(out, *chain, e); };
   control::Trajectory trajectory;
-  control::EpisodeResult result =
-      eval::RunWithControllers(**sim, *chain, *controllers, options, &trajectory);
+  const std::string walk_policy = flags.no_walk ? "" : eval::DefaultWalkPolicy(flags.policy);
+  if (!walk_policy.empty()) out << "walking with the policy " << walk_policy << std::endl;
+  core::StatusOr<control::EpisodeResult> run_result =
+      eval::RunWithWalkPolicy(**sim, *chain, *controllers, walk_policy, options, &trajectory);
+  if (!run_result.ok())
+    return ReportError(err, kCommand, core::Annotate(run_result.status(), "--policy"));
+  const control::EpisodeResult& result = *run_result;
 
   // results first, so a rendering failure cannot lose them
   nlohmann::ordered_json j = eval::EpisodeResultJson(result);
@@ -129,6 +134,7 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   if (!flags.command.empty()) j["command"] = flags.command;
   j["config"] = config->ToJson();
   j["settle_s"] = flags.settle_s;
+  j["walk_policy"] = walk_policy;
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) j[key] = value;
   absl::Status st = eval::WriteJsonFile(Join(out_dir, "scene.json"), world::SceneToJson(*scene));

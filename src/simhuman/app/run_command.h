@@ -24,6 +24,9 @@ struct RunFlags {
   std::string out = "out";    ///< output folder
   bool video = false;
   double settle_s = 1.5;  ///< keep simulating this long after the last step completes
+  /// Walking policy for get-close steps; empty: assets/policies/walk.pt when it exists.
+  std::string policy;
+  bool no_walk = false;  ///< never walk with a policy (MPC only)
 };
 
 /// Runs the command. Writes DIR/result.json, DIR/trajectory.csv, DIR/scene.json and

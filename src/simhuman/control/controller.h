@@ -46,6 +46,9 @@ class Controller {
   virtual void Targets(double time_s, double* ctrl28) const = 0;
   /// Control period (s) at which the runner calls Act().
   virtual double control_period_s() const = 0;
+  /// Physics timestep (s) the controller needs while it is in control (learned policies run
+  /// at the rate they were trained at); 0: the world's own timestep.
+  virtual double physics_timestep_s() const { return 0.0; }
 };
 
 /// Builds an ego-centric height map around agent `agent` from the scene catalog's shapes

@@ -24,6 +24,8 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
   res.steps_total = static_cast<int>(chain.steps.size());
   const mjModel* m = world.model();
   mjData* d = world.data();
+  // controllers may ask for their own physics timestep (policies run at their training rate)
+  const double base_dt = m->opt.timestep;
   core::SceneCatalog catalog = world.catalog();  // movable poses synced each tick
   plan::StepTracker tracker(chain, options.tracker);
   const int n_agents = world.num_agents();
@@ -149,12 +151,22 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
       const world::AgentIndex& ix = world.agent(a);
       for (int j = 0; j < world::kHumanoidDofs; ++j) d->ctrl[ix.actuator[j]] = ctrl[j];
     }
+    double dt = base_dt;
+    for (int a = 0; a < n_agents; ++a) {
+      double want = controllers[a]->physics_timestep_s();
+      if (want > 0) {
+        dt = want;
+        break;
+      }
+    }
+    world.mutable_model()->opt.timestep = dt;
     world::HealthReport h = world.Step();
     if (!h.ok()) {
       finish(h.reason);
       break;
     }
   }
+  world.mutable_model()->opt.timestep = base_dt;
   if (trajectory && options.record) {
     trajectory->time_s.push_back(d->time - t_start);
     trajectory->qpos.emplace_back(d->qpos, d->qpos + m->nq);

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
+#include "simhuman/control/policy/policy_controller.h"
 #include "simhuman/core/json_io.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/core/version.h"
@@ -66,6 +68,33 @@ control::EpisodeResult RunWithControllers(
   std::vector<control::Controller*> raw;
   for (const auto& c : controllers) raw.push_back(c.get());
   return control::RunEpisode(world, chain, raw, options, trajectory);
+}
+
+core::StatusOr<control::EpisodeResult> RunWithWalkPolicy(
+    world::SimWorld& world, const plan::ContactChain& chain,
+    const std::vector<std::unique_ptr<control::MpcController>>& controllers,
+    const std::string& walk_policy, const control::RunOptions& options,
+    control::Trajectory* trajectory) {
+  if (walk_policy.empty()) return RunWithControllers(world, chain, controllers, options, trajectory);
+  std::vector<std::unique_ptr<control::WalkPolicyController>> walkers;
+  std::vector<std::unique_ptr<control::WalkThenContactController>> combined;
+  std::vector<control::Controller*> raw;
+  for (int a = 0; a < world.num_agents(); ++a) {
+    SH_ASSIGN_OR_RETURN(std::unique_ptr<control::WalkPolicyController> w,
+                        control::WalkPolicyController::Load(walk_policy, &world, a));
+    walkers.push_back(std::move(w));
+    combined.push_back(std::make_unique<control::WalkThenContactController>(
+        walkers.back().get(), controllers[a].get()));
+    raw.push_back(combined.back().get());
+  }
+  return control::RunEpisode(world, chain, raw, options, trajectory);
+}
+
+std::string DefaultWalkPolicy(const std::string& flag) {
+  if (!flag.empty()) return flag;
+  std::string asset = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/walk.pt";
+  std::error_code ec;
+  return std::filesystem::exists(asset, ec) ? asset : "";
 }
 
 std::string StepText(const plan::ContactStep& step) {

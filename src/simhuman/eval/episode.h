@@ -47,6 +47,19 @@ control::EpisodeResult RunWithControllers(
     const std::vector<std::unique_ptr<control::MpcController>>& controllers,
     const control::RunOptions& options, control::Trajectory* trajectory);
 
+/// As RunWithControllers, but when `walk_policy` names a file, get-close steps that start
+/// standing are walked with that policy (control::WalkThenContactController) and the MPC does
+/// the other steps. Errors: the policy file (NotFound, DataLoss, InvalidArgument).
+core::StatusOr<control::EpisodeResult> RunWithWalkPolicy(
+    world::SimWorld& world, const plan::ContactChain& chain,
+    const std::vector<std::unique_ptr<control::MpcController>>& controllers,
+    const std::string& walk_policy, const control::RunOptions& options,
+    control::Trajectory* trajectory);
+
+/// The walking policy to use: `flag` when given, else assets/policies/walk.pt of the source
+/// tree when that file exists, else "" (no walking).
+std::string DefaultWalkPolicy(const std::string& flag);
+
 /// A short description of a step for progress lines and captions: its label, or one made from
 /// its pairs ("pelvis on chair000 seat surface", "get close to bed000 (front)").
 std::string StepText(const plan::ContactStep& step);

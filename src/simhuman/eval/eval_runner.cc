@@ -95,6 +95,7 @@ nlohmann::ordered_json SummaryJson(const Summary& s, const EvalOptions& options)
   j["wall_time_s"] = s.wall_time_s;
   j["seed"] = options.seed;
   j["preset"] = options.config.preset;
+  j["walk_policy"] = options.walk_policy;
   j["config"] = options.config.ToJson();
   const nlohmann::ordered_json provenance = ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) j[key] = value;
@@ -133,7 +134,10 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   rec.index = index;
   rec.seed = seed;
   rec.variant = spec->variant;
-  rec.result = RunWithControllers(**sim, *chain, *controllers, run, render ? &trajectory : nullptr);
+  core::StatusOr<control::EpisodeResult> result = RunWithWalkPolicy(
+      **sim, *chain, *controllers, options.walk_policy, run, render ? &trajectory : nullptr);
+  if (!result.ok()) return result.status();
+  rec.result = *result;
   rec.extra = EvaluateExtra(*spec, (*sim)->catalog(), (*sim)->BodyPoints((*sim)->data(), 0));
   if (rec.result.success) {
     // the last step's pairs must still hold at the end of the settle time, without a fall

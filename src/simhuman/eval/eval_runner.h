@@ -72,6 +72,9 @@ struct EvalOptions {
   /// Every K-th episode (0, K, 2K, ...) is recorded and its contact sheet rendered to
   /// DIR/ep<i>.png; 0 renders none.
   int video_every = 0;
+  /// Walking policy file: when set, get-close steps that start standing are walked with it
+  /// (control::WalkThenContactController) and the MPC does the rest.
+  std::string walk_policy;
 };
 
 /// summary.json: suite, episodes, episodes_requested, success_rate, contact_error_m (null when

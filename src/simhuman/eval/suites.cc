@@ -40,6 +40,8 @@ constexpr double kReachHeightLoM = 0.7, kReachHeightHiM = 1.5;
 constexpr double kApproachLoM = 0.55, kApproachHiM = 0.85;
 constexpr double kApproachLateralM = 0.25;
 constexpr double kApproachYawJitterDeg = 20.0;
+// sit-far: distance from the seat's front face and bearing off its front direction
+constexpr double kSitFarLoM = 1.0, kSitFarHiM = 6.0, kSitFarBearingDeg = 60.0;
 
 json Pair(const std::string& object, const std::string& part, const std::string& joint,
           const std::string& contact, const std::string& direction) {
@@ -210,9 +212,32 @@ core::Status MakeScenePlanSimple(core::Rng& rng, EpisodeSpec* out) {
   return absl::OkStatus();
 }
 
+// sit-far: 1-6 m from the seat's front, within +-60 deg of its front direction, any heading
+core::Status MakeSitFar(core::Rng& rng, EpisodeSpec* out) {
+  std::string type = kSeatTypes[rng.UniformInt(0, kNumSeatTypes - 1)];
+  world::ObjectSpec o;
+  core::CatalogObject built;
+  SH_RETURN_IF_ERROR(RandomObject(type, rng, &o, &built));
+  auto [lo, hi] = built.LocalBounds();
+  double r = rng.Uniform(kSitFarLoM, kSitFarHiM);
+  double bearing = rng.Uniform(-kSitFarBearingDeg, kSitFarBearingDeg) * kDegToRad;
+  world::HumanSpec h;
+  h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, hi.x() + r * std::cos(bearing),
+                          0.5 * (lo.y() + hi.y()) + r * std::sin(bearing));
+  h.yaw_rad = WrapAngle(rng.Uniform(0.0, kTwoPi));
+  out->variant = type + ": walk, sit";
+  out->object_id = o.id;
+  out->scene.objects = {o};
+  out->scene.humans = {h};
+  out->plan = Plan({Step("walk to " + o.id, {GetClose(o.id, "front")}), SitStep(o.id)});
+  return absl::OkStatus();
+}
+
 }  // namespace
 
-std::vector<std::string> SuiteNames() { return {"sit", "lie", "reach", "sceneplan-simple"}; }
+std::vector<std::string> SuiteNames() {
+  return {"sit", "lie", "reach", "sceneplan-simple", "sit-far"};
+}
 
 std::string_view SuiteName(Suite suite) {
   switch (suite) {
@@ -224,12 +249,15 @@ std::string_view SuiteName(Suite suite) {
       return "reach";
     case Suite::kScenePlanSimple:
       return "sceneplan-simple";
+    case Suite::kSitFar:
+      return "sit-far";
   }
   return "?";
 }
 
 std::optional<Suite> ParseSuite(std::string_view name) {
-  for (Suite s : {Suite::kSit, Suite::kLie, Suite::kReach, Suite::kScenePlanSimple}) {
+  for (Suite s :
+       {Suite::kSit, Suite::kLie, Suite::kReach, Suite::kScenePlanSimple, Suite::kSitFar}) {
     if (SuiteName(s) == name) return s;
   }
   return std::nullopt;
@@ -254,6 +282,9 @@ core::StatusOr<EpisodeSpec> MakeEpisodeSpec(Suite suite, uint64_t seed) {
       break;
     case Suite::kScenePlanSimple:
       SH_RETURN_IF_ERROR(MakeScenePlanSimple(rng, &spec));
+      break;
+    case Suite::kSitFar:
+      SH_RETURN_IF_ERROR(MakeSitFar(rng, &spec));
       break;
   }
   return spec;

@@ -19,9 +19,11 @@
 namespace simhuman::eval {
 
 /// One benchmark suite.
-enum class Suite { kSit, kLie, kReach, kScenePlanSimple };
+enum class Suite { kSit, kLie, kReach, kScenePlanSimple, kSitFar };
 
-/// "sit", "lie", "reach", "sceneplan-simple", in enum order.
+/// "sit", "lie", "reach", "sceneplan-simple", "sit-far", in enum order. sit-far starts the
+/// human 1-6 m from a seat's front (within +-60 deg of its front direction, any heading) with
+/// the plan [get close (front)], [sit]: it needs the walking policy.
 std::vector<std::string> SuiteNames();
 /// The name of `suite`.
 std::string_view SuiteName(Suite suite);

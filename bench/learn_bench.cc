@@ -1,0 +1,112 @@
+// Training-side throughput of the walking task: raw mj_step of the same model, VecEnv steps
+// with random actions (1 and 2 worker threads), and VecEnv steps with policy inference (the
+// collection loop of PPO without the update). Prints JSON.
+//   build/simhuman_learn_bench [envs] [seconds_per_case] [policy.pt]
+#include <torch/torch.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "simhuman/control/policy/policy_net.h"
+#include "simhuman/core/rng.h"
+#include "simhuman/learn/vec_env.h"
+#include "simhuman/learn/walk_env.h"
+
+using namespace simhuman;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// raw mj_step from standing states of the walk task, with random PD targets held for a policy
+// step; restarts every 2 s like short training episodes
+double RawStepsPerSecond(learn::WalkTask& task, double seconds) {
+  const mjModel* m = task.model();
+  mjData* d = mj_makeData(m);
+  std::vector<float> obs(control::kWalkObsDim);
+  task.Reset(0, 1, obs.data());
+  const mjData* start = task.data(0);
+  core::Rng rng(3);
+  long steps = 0;
+  auto t0 = Clock::now();
+  while (Since(t0) < seconds) {
+    mj_copyData(d, m, start);
+    for (int k = 0; k < 240; ++k) {
+      if (k % control::kWalkSubsteps == 0) {
+        for (int j = 0; j < m->nu; ++j) d->ctrl[j] = start->ctrl[j] + rng.Normal(0.2);
+      }
+      mj_step(m, d);
+      ++steps;
+    }
+  }
+  double rate = steps / Since(t0);
+  mj_deleteData(d);
+  return rate;
+}
+
+double EnvStepsPerSecond(int envs, int threads, double seconds, control::GaussianActor* actor,
+                         control::ObsNormalizer* norm) {
+  auto task = learn::WalkTask::Create(envs);
+  if (!task.ok()) std::exit(2);
+  learn::VecEnv env(std::move(*task), threads, 1);
+  env.ResetAll();
+  core::Rng rng(5);
+  std::vector<float> act(static_cast<size_t>(envs) * control::kWalkActDim);
+  long steps = 0;
+  auto t0 = Clock::now();
+  while (Since(t0) < seconds) {
+    if (actor) {
+      torch::NoGradGuard ng;
+      torch::Tensor o = torch::from_blob(const_cast<float*>(env.obs().data()),
+                                         {envs, control::kWalkObsDim});
+      torch::Tensor a = (*actor)->forward(norm->Normalize(o)).contiguous();
+      std::copy(a.data_ptr<float>(), a.data_ptr<float>() + act.size(), act.begin());
+    } else {
+      for (float& a : act) a = static_cast<float>(rng.Normal(0.3));
+    }
+    env.Step(act.data());
+    steps += envs;
+  }
+  return steps / Since(t0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int envs = argc > 1 ? std::atoi(argv[1]) : 128;
+  double secs = argc > 2 ? std::atof(argv[2]) : 10.0;
+  torch::set_num_threads(1);
+  control::GaussianActor actor(control::kWalkObsDim, control::kWalkActDim,
+                               std::vector<int>{256, 256}, 0.5);
+  control::ObsNormalizer norm(control::kWalkObsDim);
+  if (argc > 3) {
+    auto p = control::LoadPolicyFile(argv[3]);
+    if (!p.ok()) {
+      std::fprintf(stderr, "%s\n", std::string(p.status().message()).c_str());
+      return 2;
+    }
+    actor = p->actor;
+    norm = p->norm;
+  }
+  auto task = learn::WalkTask::Create(1);
+  if (!task.ok()) return 2;
+  double raw = RawStepsPerSecond(**task, secs);
+  double env1 = EnvStepsPerSecond(envs, 1, secs, nullptr, nullptr);
+  double env2 = EnvStepsPerSecond(envs, 2, secs, nullptr, nullptr);
+  double pol1 = EnvStepsPerSecond(envs, 1, secs, &actor, &norm);
+  double pol2 = EnvStepsPerSecond(envs, 2, secs, &actor, &norm);
+  const double sub = control::kWalkSubsteps;
+  std::printf(
+      "{\"envs\": %d, \"substeps\": %d, \"raw_mj_steps_per_s\": %.0f,\n"
+      " \"env_steps_per_s_random_1thread\": %.0f, \"ratio_1thread\": %.3f,\n"
+      " \"env_steps_per_s_random_2threads\": %.0f,\n"
+      " \"env_steps_per_s_policy_1thread\": %.0f, \"env_steps_per_s_policy_2threads\": %.0f}\n",
+      envs, control::kWalkSubsteps, raw, env1, env1 * sub / raw, env2, pol1, pol2);
+  return 0;
+}

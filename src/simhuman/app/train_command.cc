@@ -1,0 +1,182 @@
+#include "simhuman/app/train_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "simhuman/app/common.h"
+#include "simhuman/core/version.h"
+#include "simhuman/learn/ppo.h"
+
+namespace simhuman::app {
+namespace {
+
+std::string Duration(double s) {
+  if (!std::isfinite(s) || s < 0) return "--:--";
+  long t = static_cast<long>(s);
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+  return buf;
+}
+
+std::string Bar(double frac, int width) {
+  int n = static_cast<int>(std::round(std::clamp(frac, 0.0, 1.0) * width));
+  return std::string(n, '#') + std::string(width - n, '.');
+}
+
+}  // namespace
+
+absl::Status ParseStepCount(const std::string& text, int64_t* out) {
+  std::string t = text;
+  double mult = 1;
+  if (!t.empty()) {
+    char c = t.back();
+    if (c == 'k' || c == 'K') mult = 1e3;
+    if (c == 'm' || c == 'M') mult = 1e6;
+    if (c == 'g' || c == 'G') mult = 1e9;
+    if (mult != 1) t.pop_back();
+  }
+  char* end = nullptr;
+  double v = t.empty() ? NAN : std::strtod(t.c_str(), &end);
+  if (t.empty() || end != t.c_str() + t.size() || !std::isfinite(v) || v * mult < 1 ||
+      v * mult > 1e12) {
+    return absl::InvalidArgumentError("--steps '" + text +
+                                      "' is invalid; valid: a positive count such as 30M, 500k");
+  }
+  *out = static_cast<int64_t>(v * mult);
+  return absl::OkStatus();
+}
+
+int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) {
+  int64_t steps = 0;
+  if (flags.steps_given || flags.resume.empty()) {
+    absl::Status s = ParseStepCount(flags.steps, &steps);
+    if (!s.ok()) return ReportError(err, "train", s);
+  }
+  core::StatusOr<std::unique_ptr<learn::PpoTrainer>> trainer;
+  if (!flags.resume.empty()) {
+    if (!flags.out.empty() || !flags.config.empty() || flags.seed_given || flags.envs ||
+        flags.threads) {
+      return ReportError(err, "train",
+                         absl::InvalidArgumentError("--resume continues a run with its own "
+                                                    "settings; only --steps may be given"));
+    }
+    trainer = learn::PpoTrainer::Resume(flags.resume, flags.steps_given ? steps : 0);
+  } else {
+    if (flags.out.empty()) {
+      return ReportError(err, "train",
+                         absl::InvalidArgumentError("--out (or --resume) is required"));
+    }
+    learn::PpoConfig cfg;
+    if (!flags.config.empty()) {
+      std::ifstream f(flags.config);
+      if (!f) return ReportError(err, "train", absl::NotFoundError(flags.config + ": cannot open"));
+      nlohmann::json j = nlohmann::json::parse(f, nullptr, false);
+      if (j.is_discarded()) {
+        return ReportError(err, "train", absl::InvalidArgumentError(flags.config + ": not JSON"));
+      }
+      auto c = learn::PpoConfig::FromJson(j);
+      if (!c.ok()) return ReportError(err, "train", core::Annotate(c.status(), flags.config));
+      cfg = *c;
+    }
+    cfg.task = flags.task;
+    cfg.total_steps = steps;
+    if (flags.seed_given || flags.config.empty()) cfg.seed = flags.seed;
+    if (flags.envs) cfg.num_envs = flags.envs;
+    if (flags.threads) cfg.threads = flags.threads;
+    if (cfg.task == "reach") cfg.hidden = {64, 64};
+    trainer = learn::PpoTrainer::Create(cfg, flags.out);
+  }
+  if (!trainer.ok()) return ReportError(err, "train", trainer.status());
+  learn::PpoTrainer& tr = **trainer;
+  const learn::PpoConfig& cfg = tr.config();
+  out << "simhuman train: task " << cfg.task << ", " << cfg.num_envs << " envs, " << cfg.threads
+      << " threads, seed " << cfg.seed << ", target " << cfg.total_steps << " steps, run "
+      << tr.out_dir()
+      << (flags.resume.empty() ? "" : " (resumed at " + std::to_string(tr.env_steps()) + ")")
+      << std::endl;
+  auto start = std::chrono::steady_clock::now();
+  int64_t start_steps = tr.env_steps();
+  while (!tr.done()) {
+    auto st = tr.Iterate();
+    if (!st.ok()) {
+      (void)tr.Checkpoint();
+      return ReportError(err, "train", st.status());
+    }
+    double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double rate = (st->env_steps - start_steps) / std::max(1e-9, el);
+    double eta = (cfg.total_steps - st->env_steps) / std::max(1e-9, rate);
+    if (!flags.quiet) {
+      std::ostringstream line;
+      line << "\r[" << Bar(static_cast<double>(st->env_steps) / cfg.total_steps, 30) << "] "
+           << std::fixed << std::setprecision(2) << st->env_steps / 1e6 << "M/"
+           << cfg.total_steps / 1e6 << "M  " << std::setprecision(0) << rate << " st/s  ret "
+           << std::setprecision(2) << st->mean_return << "  succ " << st->success_rate << "  fall "
+           << st->fall_rate << "  cur " << st->curriculum << "  ETA " << Duration(eta)
+           << (st->checkpointed ? "  [ckpt]" : "       ");
+      out << line.str() << std::flush;
+      if (st->iteration % 50 == 0) out << std::endl;
+    }
+  }
+  absl::Status s = tr.Checkpoint();
+  if (!s.ok()) return ReportError(err, "train", s);
+  out << "\nsimhuman train: done, " << tr.env_steps() << " steps; checkpoint in " << tr.out_dir()
+      << std::endl;
+  return kExitOk;
+}
+
+int ExportPolicyCommand(const std::string& checkpoint, const std::string& out_path,
+                        const std::string& eval_summary, std::ostream& out, std::ostream& err) {
+  absl::Status s = learn::ExportPolicy(checkpoint, out_path);
+  if (!s.ok()) return ReportError(err, "export-policy", s);
+  namespace fs = std::filesystem;
+  fs::path run = fs::path(checkpoint).parent_path();
+  auto read_json = [](const fs::path& p) {
+    std::ifstream f(p);
+    return f ? nlohmann::json::parse(f, nullptr, false) : nlohmann::json();
+  };
+  nlohmann::ordered_json prov;
+  prov["policy"] = fs::path(out_path).filename().string();
+  prov["source_checkpoint"] = checkpoint;
+  prov["git_revision"] = std::string(core::GitRevision());
+  nlohmann::json cfg = read_json(run / "config.json");
+  prov["train_config"] = cfg;
+  if (cfg.is_object()) {
+    prov["command"] = "simhuman train --task " + cfg.value("task", std::string("?")) + " --steps " +
+                      std::to_string(cfg.value("total_steps", int64_t{0})) +
+                      " --out <run> --seed " + std::to_string(cfg.value("seed", uint64_t{0})) +
+                      " --envs " + std::to_string(cfg.value("num_envs", 0)) + " --threads " +
+                      std::to_string(cfg.value("threads", 0)) + "  (resumed with --resume <run>)";
+  }
+  // the log line of the checkpoint's step count
+  auto meta = learn::ReadCheckpointProgress(checkpoint);
+  if (meta.ok()) {
+    prov["env_steps"] = meta->first;
+    prov["train_wall_s"] = meta->second;
+  }
+  std::ifstream log(run / "log.jsonl");
+  std::string line, last;
+  while (std::getline(log, line)) {
+    nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (j.is_object() && meta.ok() && j.value("env_steps", int64_t{0}) <= meta->first) last = line;
+  }
+  if (!last.empty()) prov["train_metrics"] = nlohmann::json::parse(last);
+  if (!eval_summary.empty()) {
+    nlohmann::json e = read_json(eval_summary);
+    if (e.is_discarded() || e.is_null()) {
+      return ReportError(err, "export-policy",
+                         absl::InvalidArgumentError(eval_summary + ": cannot read the summary"));
+    }
+    prov["eval"] = e;
+  }
+  fs::path prov_path = fs::path(out_path).replace_extension(".json");
+  std::ofstream(prov_path) << prov.dump(2) << "\n";
+  out << "simhuman export-policy: wrote " << out_path << " and " << prov_path.string() << std::endl;
+  return kExitOk;
+}
+
+}  // namespace simhuman::app

@@ -1,0 +1,139 @@
+#include "simhuman/control/policy/policy_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "simhuman/control/policy/policy_net.h"
+
+namespace simhuman::control {
+
+struct WalkPolicyController::Impl {
+  const world::SimWorld* world = nullptr;
+  WalkIndex ix;
+  WalkParams params;
+  WalkState state;
+  LoadedPolicy policy;
+  bool fixed_target = false;
+  bool has_target = false;
+  std::array<double, kWalkActDim> ctrl{};
+  bool started = false;
+};
+
+WalkPolicyController::WalkPolicyController(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+WalkPolicyController::~WalkPolicyController() = default;
+
+core::StatusOr<std::unique_ptr<WalkPolicyController>> WalkPolicyController::Load(
+    const std::string& path, const world::SimWorld* world, int agent) {
+  auto impl = std::make_unique<Impl>();
+  SH_ASSIGN_OR_RETURN(impl->policy, LoadPolicyFile(path));
+  const PolicyMeta& meta = impl->policy.meta;
+  if (meta.task != "walk" || meta.obs_dim != kWalkObsDim || meta.act_dim != kWalkActDim) {
+    return absl::InvalidArgumentError(path + ": a '" + meta.task + "' policy with " +
+                                      std::to_string(meta.obs_dim) + " observations and " +
+                                      std::to_string(meta.act_dim) +
+                                      " actions; the walking skill needs task 'walk' with " +
+                                      std::to_string(kWalkObsDim) + " and " +
+                                      std::to_string(kWalkActDim));
+  }
+  impl->world = world;
+  SH_ASSIGN_OR_RETURN(impl->ix, MakeWalkIndex(*world, agent));
+  GetHinges(world->data(), impl->ix.agent, impl->ctrl.data());
+  return std::unique_ptr<WalkPolicyController>(new WalkPolicyController(std::move(impl)));
+}
+
+void WalkPolicyController::SetTarget(double x, double y, double yaw_rad) {
+  impl_->fixed_target = true;
+  impl_->has_target = true;
+  impl_->state.target_xy = Eigen::Vector2d(x, y);
+  impl_->state.target_yaw_rad = yaw_rad;
+}
+
+void WalkPolicyController::Restart() {
+  Eigen::Vector2d t = impl_->state.target_xy;
+  double yaw = impl_->state.target_yaw_rad;
+  impl_->state = WalkState();
+  impl_->state.target_xy = t;
+  impl_->state.target_yaw_rad = yaw;
+  impl_->started = false;
+}
+
+const WalkState& WalkPolicyController::state() const { return impl_->state; }
+
+absl::Status WalkPolicyController::Act(const Observation& obs) {
+  Impl& m = *impl_;
+  if (!m.fixed_target && obs.task && obs.task->get_close) {
+    m.state.target_xy = obs.task->stand_point.head<2>();
+    m.state.target_yaw_rad = obs.task->stand_yaw_rad;
+    m.has_target = true;
+  }
+  if (!m.has_target) {
+    return absl::FailedPreconditionError("walk policy: step " + std::to_string(obs.step_index) +
+                                         " is not a get-close step and no target was set");
+  }
+  UpdateWalkCommand(m.params, obs.data, m.ix, &m.state);
+  std::array<float, kWalkObsDim> o;
+  WalkObservation(m.params, obs.data, m.ix, m.state, o.data());
+  for (float v : o) {
+    if (!std::isfinite(v)) return absl::InternalError("walk policy: non-finite observation");
+  }
+  std::array<float, kWalkActDim> act;
+  try {
+    torch::NoGradGuard ng;
+    torch::Tensor x = torch::from_blob(o.data(), {1, kWalkObsDim}, torch::kFloat32);
+    torch::Tensor a = m.policy.actor->forward(m.policy.norm.Normalize(x)).contiguous();
+    std::copy(a.data_ptr<float>(), a.data_ptr<float>() + kWalkActDim, act.begin());
+  } catch (const c10::Error& e) {
+    return absl::InternalError(std::string("walk policy inference: ") + e.what_without_backtrace());
+  }
+  WalkTargets(m.params, m.ix, m.state, act.data(), m.ctrl.data());
+  for (int j = 0; j < kWalkActDim; ++j) {
+    m.state.prev_action[j] = std::clamp(act[j], static_cast<float>(-kWalkActionClip),
+                                        static_cast<float>(kWalkActionClip));
+  }
+  m.started = true;
+  return absl::OkStatus();
+}
+
+void WalkPolicyController::Targets(double, double* ctrl28) const {
+  std::copy(impl_->ctrl.begin(), impl_->ctrl.end(), ctrl28);
+}
+
+bool WalkPolicyController::Arrived(const mjData* d, const WalkTolerance& tol) const {
+  const Impl& m = *impl_;
+  double dist, yaw_err;
+  WalkErrors(d, m.ix, m.state, &dist, &yaw_err);
+  const mjtNum* v = d->qvel + m.ix.agent.root_qvel;
+  double speed = std::hypot(v[0], v[1]);
+  return m.started && !m.state.stepping && m.state.amplitude < 0.1 && dist < tol.radius_m &&
+         std::abs(yaw_err) < tol.yaw_rad && speed < tol.speed_mps;
+}
+
+absl::Status WalkThenContactController::Act(const Observation& obs) {
+  if (obs.step_index != step_) {
+    step_ = obs.step_index;
+    // walk only for get-close steps that start standing (not "stand up" from a seat or bed)
+    const mjtNum* pelvis = obs.data->xpos + 3 * obs.world->agent(obs.agent).pelvis_body;
+    bool walk = obs.task && obs.task->get_close && obs.task->posture == Posture::kStand &&
+                pelvis[2] > 0.8 * obs.world->agent(obs.agent).scale;
+    if (walk) {
+      walking_ = true;
+      finishing_ = false;
+      walker_->Restart();
+    } else if (walking_) {
+      // the plan moved on (its get-close test is looser); keep walking to the stand point
+      // until stopped there, so the contact controller never takes over a moving human
+      finishing_ = true;
+      finish_deadline_s_ = obs.time_s + kMaxFinishS;
+    }
+  }
+  if (finishing_ && (walker_->Arrived(obs.data) || obs.time_s > finish_deadline_s_)) {
+    walking_ = finishing_ = false;
+  }
+  return active()->Act(obs);
+}
+
+void WalkThenContactController::Targets(double time_s, double* ctrl28) const {
+  active()->Targets(time_s, ctrl28);
+}
+
+}  // namespace simhuman::control

@@ -1,0 +1,83 @@
+#pragma once
+/// The walking skill as a controller: LibTorch inference of a trained walking policy
+/// (control/policy/walk_task.h spaces) that walks to the stand point of a get-close step and
+/// stops there facing the object. Torch stays inside the .cc (pimpl).
+///
+/// Timing: acts at 30 Hz and asks the runner to step physics at kWalkPhysicsDt (the rate it
+/// was trained at) through physics_timestep_s().
+
+#include <memory>
+#include <string>
+
+#include "simhuman/control/controller.h"
+#include "simhuman/control/policy/walk_task.h"
+
+namespace simhuman::control {
+
+/// Arrival tolerances the controller reports (and the `walk` suite checks).
+struct WalkTolerance {
+  double radius_m = 0.2;
+  double yaw_rad = 15.0 * M_PI / 180.0;
+  double speed_mps = 0.2;  ///< "stopped": pelvis horizontal speed below this
+};
+
+class WalkPolicyController : public Controller {
+ public:
+  /// Loads a policy file (or a training checkpoint) for agent `agent` of `world` (which must
+  /// outlive the controller). Errors name the file; a policy of another task or with other
+  /// dimensions is InvalidArgument.
+  static core::StatusOr<std::unique_ptr<WalkPolicyController>> Load(const std::string& path,
+                                                                    const world::SimWorld* world,
+                                                                    int agent);
+  ~WalkPolicyController() override;
+
+  std::string name() const override { return "walk-policy"; }
+  /// Takes the target from obs.task (stand point and facing of a get-close step) unless a
+  /// fixed target was set, then infers the PD targets (deterministic: the Gaussian's mean).
+  absl::Status Act(const Observation& obs) override;
+  void Targets(double time_s, double* ctrl28) const override;
+  double control_period_s() const override { return kWalkPolicyDt; }
+  double physics_timestep_s() const override { return kWalkPhysicsDt; }
+
+  /// Fixes the target (world frame), overriding the step's stand point (evaluation).
+  void SetTarget(double x, double y, double yaw_rad);
+  /// True when the agent stands within `tol` of the target, stopped and no longer stepping.
+  bool Arrived(const mjData* d, const WalkTolerance& tol = {}) const;
+  const WalkState& state() const;
+  /// Forgets the gait state (call when taking over from another controller).
+  void Restart();
+
+  struct Impl;
+
+ private:
+  explicit WalkPolicyController(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Walks with the policy during get-close steps and hands over to `contact` (e.g. the MPC) for
+/// every other step. When the plan leaves a get-close step before the walker has stopped at
+/// the stand point (the plan's get-close test is looser), walking goes on until Arrived() or
+/// kMaxFinishS, so the handover happens standing still. Neither controller is owned.
+class WalkThenContactController : public Controller {
+ public:
+  WalkThenContactController(WalkPolicyController* walker, Controller* contact)
+      : walker_(walker), contact_(contact) {}
+  std::string name() const override { return walker_->name() + "+" + contact_->name(); }
+  absl::Status Act(const Observation& obs) override;
+  void Targets(double time_s, double* ctrl28) const override;
+  double control_period_s() const override { return active()->control_period_s(); }
+  double physics_timestep_s() const override { return active()->physics_timestep_s(); }
+  bool walking() const { return walking_; }
+  static constexpr double kMaxFinishS = 6.0;
+
+ private:
+  Controller* active() const { return walking_ ? static_cast<Controller*>(walker_) : contact_; }
+  WalkPolicyController* walker_;
+  Controller* contact_;
+  bool walking_ = false;
+  bool finishing_ = false;
+  double finish_deadline_s_ = 0;
+  int step_ = -1;
+};
+
+}  // namespace simhuman::control

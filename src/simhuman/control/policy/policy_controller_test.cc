@@ -1,0 +1,129 @@
+#include "simhuman/control/policy/policy_controller.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "simhuman/control/policy/policy_net.h"
+
+namespace simhuman::control {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string WritePolicy(const std::string& name, const std::string& task, int obs_dim) {
+  std::string path = (fs::temp_directory_path() / ("simhuman_policy_test_" + name)).string();
+  torch::manual_seed(1);
+  GaussianActor actor(obs_dim, kWalkActDim, std::vector<int>{16, 16}, 0.5);
+  ObsNormalizer norm(obs_dim);
+  torch::serialize::OutputArchive ar;
+  SavePolicyKeys(ar, PolicyMeta{task, obs_dim, kWalkActDim, {16, 16}}, actor, norm);
+  ar.save_to(path);
+  return path;
+}
+
+std::unique_ptr<world::SimWorld> World() {
+  world::ModelOptions o;
+  o.timestep_s = kWalkPhysicsDt;
+  auto w = world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, o);
+  EXPECT_TRUE(w.ok()) << w.status();
+  return *std::move(w);
+}
+
+TEST(WalkPolicyController, ActsWithFiniteTargetsAtItsOwnRate) {
+  auto world = World();
+  auto c = WalkPolicyController::Load(WritePolicy("ok", "walk", kWalkObsDim), world.get(), 0);
+  ASSERT_TRUE(c.ok()) << c.status();
+  EXPECT_DOUBLE_EQ((*c)->physics_timestep_s(), kWalkPhysicsDt);
+  EXPECT_DOUBLE_EQ((*c)->control_period_s(), kWalkPolicyDt);
+  (*c)->SetTarget(0, 0, 0);
+  Observation obs;
+  obs.world = world.get();
+  obs.data = world->data();
+  ASSERT_TRUE((*c)->Act(obs).ok());
+  double ctrl[kWalkActDim];
+  (*c)->Targets(0, ctrl);
+  for (double v : ctrl) EXPECT_TRUE(std::isfinite(v));
+  // standing on the target facing its heading, nearly untrained: not stepping
+  EXPECT_FALSE((*c)->state().stepping);
+}
+
+TEST(WalkPolicyController, NoTargetIsAnError) {
+  auto world = World();
+  auto c = WalkPolicyController::Load(WritePolicy("nt", "walk", kWalkObsDim), world.get(), 0);
+  ASSERT_TRUE(c.ok());
+  Observation obs;
+  obs.world = world.get();
+  obs.data = world->data();
+  EXPECT_EQ((*c)->Act(obs).code(), absl::StatusCode::kFailedPrecondition);
+}
+
+TEST(WalkPolicyController, WrongTaskMissingAndCorruptFilesAreErrors) {
+  auto world = World();
+  auto reach = WalkPolicyController::Load(WritePolicy("reach", "reach", 6), world.get(), 0);
+  EXPECT_EQ(reach.status().code(), absl::StatusCode::kInvalidArgument);
+  EXPECT_NE(reach.status().message().find("reach"), std::string::npos);
+  auto missing = WalkPolicyController::Load("/nonexistent/walk.pt", world.get(), 0);
+  EXPECT_EQ(missing.status().code(), absl::StatusCode::kNotFound);
+  std::string bad = (fs::temp_directory_path() / "simhuman_policy_test_malformed.pt").string();
+  std::ofstream(bad) << "not a torch archive";
+  auto corrupt = WalkPolicyController::Load(bad, world.get(), 0);
+  EXPECT_EQ(corrupt.status().code(), absl::StatusCode::kDataLoss);
+  EXPECT_NE(corrupt.status().message().find(bad), std::string::npos);
+}
+
+}  // namespace
+}  // namespace simhuman::control
+
+namespace simhuman::control {
+namespace {
+
+class FakeContact : public Controller {
+ public:
+  std::string name() const override { return "fake"; }
+  absl::Status Act(const Observation&) override {
+    ++acts;
+    return absl::OkStatus();
+  }
+  void Targets(double, double* ctrl28) const override { std::fill(ctrl28, ctrl28 + 28, 0.0); }
+  double control_period_s() const override { return 0.04; }
+  int acts = 0;
+};
+
+TEST(WalkThenContactController, WalksGetCloseStepsAndHandsOverOnlyWhenStopped) {
+  auto world = World();
+  auto walker = WalkPolicyController::Load(WritePolicy("hand", "walk", kWalkObsDim), world.get(), 0);
+  ASSERT_TRUE(walker.ok());
+  FakeContact mpc;
+  WalkThenContactController c(walker->get(), &mpc);
+  StepTask walk_task;
+  walk_task.get_close = true;
+  walk_task.stand_point = Eigen::Vector3d(3, 0, 0);
+  StepTask sit_task;
+  Observation obs;
+  obs.world = world.get();
+  obs.data = world->data();
+  obs.task = &walk_task;
+  obs.step_index = 0;
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_TRUE(c.walking());
+  EXPECT_DOUBLE_EQ(c.physics_timestep_s(), kWalkPhysicsDt);
+  EXPECT_EQ(mpc.acts, 0);
+  // the plan moves on while the human is 3 m from the stand point: keep walking
+  obs.task = &sit_task;
+  obs.step_index = 1;
+  obs.time_s = 1.0;
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_TRUE(c.walking());
+  EXPECT_EQ(mpc.acts, 0);
+  // ... but not forever
+  obs.time_s = 1.0 + WalkThenContactController::kMaxFinishS + 0.1;
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_FALSE(c.walking());
+  EXPECT_EQ(mpc.acts, 1);
+  EXPECT_DOUBLE_EQ(c.physics_timestep_s(), 0.0);
+}
+
+}  // namespace
+}  // namespace simhuman::control

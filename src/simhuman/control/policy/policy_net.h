@@ -1,0 +1,88 @@
+#pragma once
+/// LibTorch pieces shared by training (learn/) and inference (PolicyController): the Gaussian
+/// MLP actor, the value MLP, the running observation normalizer, and the policy file format.
+/// Includes torch: include it only from .cc files of learn/ and control/policy/.
+///
+/// Policy file (a torch::serialize archive, written by learn::ExportPolicy or a checkpoint):
+///   "format" = "simhuman-policy-v1", "task" (string), "obs_dim", "act_dim" (int),
+///   "hidden" (int64 tensor of layer widths), "actor" (module archive),
+///   "obs_mean", "obs_var" (float64 tensors), "obs_count" (double), "obs_clip" (double).
+/// Checkpoints hold the same keys plus the training state (see learn/ppo.h).
+
+#include <torch/torch.h>
+
+#include <string>
+#include <vector>
+
+#include "simhuman/core/status.h"
+
+namespace simhuman::control {
+
+inline constexpr char kPolicyFormat[] = "simhuman-policy-v1";
+
+/// Linear+ELU layers of `hidden` widths, then a linear output layer whose weights are scaled
+/// by `out_gain` at initialisation.
+torch::nn::Sequential MakeMlp(int in, const std::vector<int>& hidden, int out, double out_gain);
+
+/// A diagonal Gaussian policy: mean = MLP(obs), state-independent log std (clamped).
+class GaussianActorImpl : public torch::nn::Module {
+ public:
+  GaussianActorImpl(int obs_dim, int act_dim, const std::vector<int>& hidden, double init_std);
+  /// Mean action for normalized observations [B, obs_dim].
+  torch::Tensor forward(const torch::Tensor& obs);
+  /// Log std [act_dim], clamped to [log 0.05, log 1].
+  torch::Tensor log_std() const;
+
+ private:
+  torch::nn::Sequential net_{nullptr};
+  torch::Tensor log_std_;
+};
+TORCH_MODULE(GaussianActor);
+
+/// Running mean/variance of observations (float64 statistics, merged per batch).
+class ObsNormalizer {
+ public:
+  explicit ObsNormalizer(int dim = 0, double clip = 5.0);
+  /// Adds a batch [B, dim] (float32) to the statistics.
+  void Update(const torch::Tensor& batch);
+  /// (x - mean) / sqrt(var + eps), clipped to +-clip; float32 [B, dim].
+  torch::Tensor Normalize(const torch::Tensor& x) const;
+  void Save(torch::serialize::OutputArchive& ar) const;
+  /// Errors if keys are missing or the dimension differs from `dim`.
+  absl::Status Load(torch::serialize::InputArchive& ar, int dim);
+  int dim() const { return dim_; }
+  double count() const { return count_; }
+
+ private:
+  int dim_;
+  double clip_;
+  torch::Tensor mean_, var_;  // float64
+  double count_ = 0;
+  torch::Tensor mean_f_, std_f_;  // cached float32
+  void Cache();
+};
+
+/// Metadata of a policy file.
+struct PolicyMeta {
+  std::string task;
+  int obs_dim = 0, act_dim = 0;
+  std::vector<int> hidden;
+};
+
+/// Writes the policy keys (format, meta, actor, normalizer) into `ar`.
+void SavePolicyKeys(torch::serialize::OutputArchive& ar, const PolicyMeta& meta,
+                    GaussianActor& actor, const ObsNormalizer& norm);
+
+/// Loads a policy file or checkpoint at `path`. Errors name the file and what is wrong
+/// (missing, not a policy archive, wrong task or dimensions).
+struct LoadedPolicy {
+  PolicyMeta meta;
+  GaussianActor actor{nullptr};
+  ObsNormalizer norm;
+};
+core::StatusOr<LoadedPolicy> LoadPolicyFile(const std::string& path);
+
+/// Reads the metadata keys from an open archive.
+core::StatusOr<PolicyMeta> ReadPolicyMeta(torch::serialize::InputArchive& ar);
+
+}  // namespace simhuman::control

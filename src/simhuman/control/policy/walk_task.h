@@ -1,0 +1,107 @@
+#pragma once
+/// The walking skill's task definition, shared by training (learn/walk_env) and deployment
+/// (control/policy/PolicyController), so both build the same observations, commands and PD
+/// targets. Torch-free. See docs/FORMATS.md ("Walking policy") for the spaces.
+///
+/// Timing: physics at kWalkPhysicsDt (120 Hz), policy at 30 Hz (kWalkSubsteps physics steps
+/// per action). The runner switches the model's timestep to kWalkPhysicsDt while the walking
+/// policy is in control.
+///
+/// Frames: the heading frame is the world frame rotated by the pelvis yaw (x forward, z up).
+/// Thread-safety: pure functions; WalkState is a plain value (one per agent / env).
+
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Core>
+#include <array>
+
+#include "simhuman/world/humanoid.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::control {
+
+inline constexpr double kWalkPhysicsDt = 1.0 / 120.0;  ///< s
+inline constexpr int kWalkSubsteps = 4;                ///< physics steps per policy step
+inline constexpr double kWalkPolicyDt = kWalkPhysicsDt * kWalkSubsteps;  ///< s (30 Hz)
+inline constexpr int kWalkObsDim = 116;
+inline constexpr int kWalkActDim = world::kHumanoidDofs;
+inline constexpr double kWalkActionScale = 0.5;  ///< rad of PD-target offset per action unit
+inline constexpr double kWalkActionClip = 3.0;   ///< actions are clipped to +-this
+
+/// Gait and command parameters (defaults are what the shipped policy was trained with).
+struct WalkParams {
+  double vmax_mps = 1.0;          ///< commanded speed far from the target
+  double gait_period_s = 0.9;     ///< one full left+right cycle
+  double swing_frac = 0.42;       ///< fraction of the cycle a foot is in the air (~0.38 s)
+  double start_radius_m = 0.25;   ///< start stepping when farther than this from the target
+  double stop_radius_m = 0.12;    ///< stop stepping when closer than this ...
+  double start_yaw_rad = 0.35;    ///< ... or when the heading error exceeds this (start)
+  double stop_yaw_rad = 0.14;     ///< ... and is below this (stop)
+  double max_yaw_rate = 1.5;      ///< rad/s
+};
+
+/// The command derived from the target each policy step (heading frame).
+struct WalkCommand {
+  double vx = 0, vy = 0;  ///< m/s
+  double yaw_rate = 0;    ///< rad/s
+};
+
+/// Task state of one walking agent.
+struct WalkState {
+  Eigen::Vector2d target_xy = Eigen::Vector2d::Zero();  ///< world frame, m
+  double target_yaw_rad = 0;                            ///< heading to stop with
+  double phase = 0;        ///< gait clock in [0, 1)
+  double amplitude = 0;    ///< smoothed stepping amplitude in [0, 1]
+  bool stepping = false;   ///< hysteresis state: walking or standing
+  WalkCommand cmd;
+  double facing_rad = 0;  ///< heading the command turns toward (bearing far, target yaw near)
+  std::array<float, kWalkActDim> prev_action{};
+};
+
+/// Geometry indices the task reads (resolved once per model).
+struct WalkIndex {
+  world::AgentIndex agent;
+  int floor_geom = -1;
+  int left_foot_geom = -1, right_foot_geom = -1;
+  std::array<double, kWalkActDim> ctrl_lo{}, ctrl_hi{};
+};
+
+/// Resolves indices for agent `a` of `world`. Errors name a missing geom.
+core::StatusOr<WalkIndex> MakeWalkIndex(const world::SimWorld& world, int a);
+
+/// The nominal standing pose (28 hinge angles, actuator order), knees slightly bent.
+const std::array<double, kWalkActDim>& WalkNominalPose();
+
+/// The reference gait: 28 joint targets at gait `phase` for stepping `amplitude` and `cmd`.
+void WalkReference(const WalkParams& p, double phase, double amplitude, const WalkCommand& cmd,
+                   double* q28);
+
+/// Which feet the reference expects on the ground (+1), in the air (-1) or either (0).
+void WalkExpectedContacts(const WalkParams& p, double phase, double amplitude, int* left,
+                          int* right);
+
+/// Pelvis position and heading (yaw) of the agent.
+void PelvisPose(const mjData* d, const WalkIndex& ix, Eigen::Vector3d* pos, double* yaw);
+
+/// Distance to the target (m, horizontal) and heading error (target yaw minus pelvis yaw,
+/// wrapped to [-pi, pi]).
+void WalkErrors(const mjData* d, const WalkIndex& ix, const WalkState& s, double* dist_m,
+                double* yaw_err_rad);
+
+/// Updates the command, the stepping hysteresis, the amplitude and advances the clock by one
+/// policy step. Call once per policy step before WalkObservation.
+void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix, WalkState* s);
+
+/// Foot contact flags (any contact of the foot geom).
+void FootContacts(const mjData* d, const WalkIndex& ix, bool* left, bool* right);
+
+/// Writes kWalkObsDim floats (raw, unnormalized) to `obs`.
+void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix,
+                     const WalkState& s, float* obs);
+
+/// PD targets from a raw action: reference gait + kWalkActionScale * clip(action), clipped
+/// to the actuator ranges.
+void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s,
+                 const float* action, double* ctrl28);
+
+}  // namespace simhuman::control

@@ -1,0 +1,143 @@
+#include "simhuman/eval/walk_eval.h"
+
+#include <cmath>
+
+#include "simhuman/control/policy/policy_controller.h"
+#include "simhuman/core/rng.h"
+#include "simhuman/eval/replay.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::eval {
+
+core::StatusOr<WalkEvalSummary> RunWalkEval(const WalkEvalOptions& options,
+                                            std::vector<WalkEpisode>* episodes,
+                                            const std::function<void(const WalkEpisode&)>& on_episode) {
+  using control::kWalkPhysicsDt;
+  using control::kWalkSubsteps;
+  WalkEvalSummary sum;
+  int successes = 0;
+  for (int i = 0; i < options.episodes; ++i) {
+    core::Rng rng(core::DeriveSeed(options.seed, static_cast<uint64_t>(i)));
+    world::AgentPlacement start;
+    start.yaw_rad = rng.Uniform(-M_PI, M_PI);
+    world::ModelOptions mo;
+    mo.timestep_s = kWalkPhysicsDt;
+    SH_ASSIGN_OR_RETURN(auto world, world::SimWorld::Create(core::SceneCatalog(), {start}, mo));
+    world->mutable_model()->nstack = 150000;
+    SH_ASSIGN_OR_RETURN(auto walker, control::WalkPolicyController::Load(options.policy, world.get(), 0));
+    WalkEpisode ep;
+    ep.index = i;
+    ep.dist_m = rng.Uniform(options.min_dist_m, options.max_dist_m);
+    double bearing = rng.Uniform(-M_PI, M_PI);
+    double tx = ep.dist_m * std::cos(bearing), ty = ep.dist_m * std::sin(bearing);
+    double tyaw = rng.Uniform(-M_PI, M_PI);
+    walker->SetTarget(tx, ty, tyaw);
+    mjData* d = world->data();
+    const mjModel* m = world->model();
+    const world::AgentIndex& ix = world->agent(0);
+    control::Observation obs;
+    obs.world = world.get();
+    obs.data = d;
+    double ctrl[world::kHumanoidDofs];
+    int hold = 0;
+    double skate = 0, path = 0;
+    long skate_n = 0;
+    const int steps = static_cast<int>(options.time_limit_s / kWalkPhysicsDt);
+    const bool render = options.video_every > 0 && i % options.video_every == 0;
+    control::Trajectory traj;
+    traj.nq = m->nq;
+    auto record = [&] {
+      traj.time_s.push_back(d->time);
+      traj.qpos.emplace_back(d->qpos, d->qpos + m->nq);
+      traj.step_index.push_back(0);
+    };
+    const int floor = mj_name2id(m, mjOBJ_GEOM, "floor");
+    int lf = mj_name2id(m, mjOBJ_GEOM, "left_foot_geom"), rf = mj_name2id(m, mjOBJ_GEOM, "right_foot_geom");
+    for (int k = 0; k < steps; ++k) {
+      if (k % kWalkSubsteps == 0) {
+        if (render) record();
+        obs.time_s = d->time;
+        absl::Status st = walker->Act(obs);
+        if (!st.ok()) return st;
+        if (walker->Arrived(d)) {
+          if (++hold >= 15) {
+            ep.success = true;
+            break;
+          }
+        } else {
+          hold = 0;
+        }
+      }
+      walker->Targets(d->time, ctrl);
+      for (int j = 0; j < world::kHumanoidDofs; ++j) d->ctrl[ix.actuator[j]] = ctrl[j];
+      const mjtNum* v = d->qvel + ix.root_qvel;
+      path += std::hypot(v[0], v[1]) * kWalkPhysicsDt;
+      world::HealthReport h = world->Step();
+      if (!h.ok() || d->xpos[3 * ix.head_body + 2] < 0.8) {
+        ep.fell = true;
+        break;
+      }
+      // foot skating: horizontal speed of feet touching the floor
+      for (int c = 0; c < d->ncon; ++c) {
+        int g1 = d->contact[c].geom1, g2 = d->contact[c].geom2;
+        if (g1 != floor && g2 != floor) continue;
+        int g = g1 == floor ? g2 : g1;
+        if (g != lf && g != rf) continue;
+        mjtNum vel[6];
+        mj_objectVelocity(m, d, mjOBJ_GEOM, g, vel, 0);
+        skate += std::hypot(vel[3], vel[4]);
+        ++skate_n;
+      }
+    }
+    ep.time_s = d->time;
+    if (render) {
+      record();
+      plan::ContactChain chain;
+      plan::ContactStep step;
+      char label[96];
+      std::snprintf(label, sizeof(label), "walk %.1f m to (%.1f, %.1f), face %.0f deg", ep.dist_m,
+                    tx, ty, tyaw * 180 / M_PI);
+      step.label = label;
+      chain.steps.push_back(step);
+      ReplayOptions ro;
+      std::string base = options.sheet_dir + "/ep" + std::to_string(i);
+      ro.sheet_path = base + ".png";
+      if (options.video) ro.video_path = base + ".mp4";
+      ro.sheet_frames = 16;
+      absl::Status rs = RenderReplay(*world, chain, traj, ro);
+      if (rs.ok()) {
+        ep.sheet_path = ro.sheet_path;
+      } else {
+        ep.render_error = std::string(rs.message());
+      }
+    }
+    double dist, yaw_err;
+    control::WalkErrors(d, *control::MakeWalkIndex(*world, 0), walker->state(), &dist, &yaw_err);
+    ep.final_dist_m = dist;
+    ep.final_yaw_err_deg = std::abs(yaw_err) * 180 / M_PI;
+    ep.foot_skate_mps = skate_n ? skate / skate_n : 0;
+    ep.mean_speed_mps = ep.time_s > 0 ? path / ep.time_s : 0;
+    if (episodes) episodes->push_back(ep);
+    if (on_episode) on_episode(ep);
+    ++sum.episodes;
+    sum.fall_rate += ep.fell;
+    sum.foot_skate_mps += ep.foot_skate_mps;
+    sum.final_dist_m += ep.final_dist_m;
+    sum.final_yaw_err_deg += ep.final_yaw_err_deg;
+    if (ep.success) {
+      ++successes;
+      sum.mean_time_s += ep.time_s;
+    }
+  }
+  if (sum.episodes > 0) {
+    sum.success_rate = static_cast<double>(successes) / sum.episodes;
+    sum.fall_rate /= sum.episodes;
+    sum.foot_skate_mps /= sum.episodes;
+    sum.final_dist_m /= sum.episodes;
+    sum.final_yaw_err_deg /= sum.episodes;
+  }
+  if (successes) sum.mean_time_s /= successes;
+  return sum;
+}
+
+}  // namespace simhuman::eval

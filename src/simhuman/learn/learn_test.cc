@@ -1,0 +1,220 @@
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "simhuman/control/policy/walk_task.h"
+#include "simhuman/learn/ppo.h"
+#include "simhuman/learn/reach_env.h"
+#include "simhuman/learn/vec_env.h"
+#include "simhuman/learn/walk_env.h"
+
+namespace simhuman::learn {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string TempDir(const std::string& name) {
+  fs::path p = fs::temp_directory_path() / ("simhuman_learn_test_" + name);
+  fs::remove_all(p);
+  return p.string();
+}
+
+TEST(WorkerPool, VisitsEveryIndexOnce) {
+  WorkerPool pool(2);
+  for (int round = 0; round < 20; ++round) {
+    std::vector<std::atomic<int>> hits(97);
+    pool.ParallelFor(97, [&](int i) { hits[i]++; });
+    for (auto& h : hits) EXPECT_EQ(h.load(), 1);
+  }
+}
+
+TEST(VecEnv, SameSeedSameTrajectoryWithOneOrTwoThreads) {
+  VecEnv a(std::make_unique<ReachTask>(8), 1, 7), b(std::make_unique<ReachTask>(8), 2, 7);
+  a.ResetAll();
+  b.ResetAll();
+  std::vector<float> act(16);
+  for (int t = 0; t < 250; ++t) {
+    for (size_t k = 0; k < act.size(); ++k) act[k] = std::sin(0.1f * t + k);
+    a.Step(act.data());
+    b.Step(act.data());
+    ASSERT_EQ(a.obs(), b.obs());
+    ASSERT_EQ(a.rewards(), b.rewards());
+  }
+}
+
+TEST(VecEnv, TimeLimitTruncatesAndResets) {
+  VecEnv env(std::make_unique<ReachTask>(3), 1, 1);
+  env.ResetAll();
+  std::vector<float> act(6, 0.f);
+  for (int t = 0; t < ReachTask::kMaxSteps - 1; ++t) {
+    env.Step(act.data());
+    EXPECT_TRUE(env.finished().empty());
+  }
+  env.Step(act.data());
+  ASSERT_EQ(env.finished().size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(env.truncated()[i]);
+    EXPECT_FALSE(env.terminated()[i]);
+    EXPECT_EQ(env.finished()[i].length, ReachTask::kMaxSteps);
+  }
+  // the new episode's observation differs from the terminal one
+  EXPECT_NE(std::vector<float>(env.obs().begin(), env.obs().begin() + 6),
+            std::vector<float>(env.terminal_obs().begin(), env.terminal_obs().begin() + 6));
+}
+
+TEST(WalkTask, ObservationsFiniteRewardPositiveFallDetectedIntegration) {
+  auto task = WalkTask::Create(2);
+  ASSERT_TRUE(task.ok()) << task.status();
+  WalkTask& t = **task;
+  std::vector<float> obs(control::kWalkObsDim);
+  t.Reset(0, 3, obs.data());
+  for (float v : obs) ASSERT_TRUE(std::isfinite(v));
+  EXPECT_FALSE(t.Fallen(0));
+  // the pelvis starts at about the nominal standing height, feet on the floor
+  EXPECT_NEAR(obs[0], 0.95, 0.04);
+  std::vector<float> act(control::kWalkActDim, 0.f);
+  StepInfo info;
+  for (int k = 0; k < 10; ++k) {
+    t.Step(0, act.data(), obs.data(), &info);
+    EXPECT_GT(info.reward, 0.f);
+  }
+  EXPECT_FALSE(info.terminated);
+  // the initial policy's noise (std 0.5) earns a positive reward on average until it falls
+  core::Rng rng(5);
+  t.Reset(0, 4, obs.data());
+  double sum = 0;
+  int n = 0;
+  for (; n < WalkTask::kMaxSteps && !info.terminated; ++n) {
+    for (float& a : act) a = static_cast<float>(rng.Normal(0.5));
+    t.Step(0, act.data(), obs.data(), &info);
+    sum += info.reward;
+  }
+  EXPECT_GT(sum / n, 0.2);
+  // strong random actions topple it; the fall ends the episode
+  t.Reset(0, 5, obs.data());
+  bool fell = false;
+  for (int k = 0; k < WalkTask::kMaxSteps && !fell; ++k) {
+    for (float& a : act) a = static_cast<float>(rng.Normal(2.0));
+    t.Step(0, act.data(), obs.data(), &info);
+    fell = info.terminated;
+  }
+  EXPECT_TRUE(fell);
+}
+
+TEST(WalkTask, ReferenceGaitAlternatesFeet) {
+  control::WalkParams p;
+  control::WalkCommand cmd{1.0, 0, 0};
+  int l, r;
+  control::WalkExpectedContacts(p, 0.2, 1.0, &l, &r);
+  EXPECT_EQ(l, -1);
+  EXPECT_EQ(r, 1);
+  control::WalkExpectedContacts(p, 0.7, 1.0, &l, &r);
+  EXPECT_EQ(l, 1);
+  EXPECT_EQ(r, -1);
+  double q[control::kWalkActDim];
+  control::WalkReference(p, 0.2, 1.0, cmd, q);
+  EXPECT_GT(q[24], q[17] + 0.5);  // the swing (left) knee is bent more
+  control::WalkReference(p, 0.2, 0.0, cmd, q);
+  for (int j = 0; j < control::kWalkActDim; ++j) {
+    EXPECT_DOUBLE_EQ(q[j], control::WalkNominalPose()[j]);
+  }
+}
+
+PpoConfig ReachConfig(const std::string&) {
+  PpoConfig c;
+  c.task = "reach";
+  c.num_envs = 32;
+  c.threads = 1;
+  c.seed = 3;
+  c.rollout_steps = 64;
+  c.minibatches = 4;
+  c.epochs = 5;
+  c.hidden = {64, 64};
+  c.lr = 1e-3;
+  c.total_steps = 200'000;
+  c.checkpoint_every_s = 1e9;
+  return c;
+}
+
+// A real learning test: the point mass must learn to reach (random policy ~40 per episode).
+TEST(Ppo, ReachLearnsWithinBudgetIntegration) {
+  constexpr double kReturnThreshold = 75;  // per 100-step episode
+  constexpr double kMaxSeconds = 60;
+  std::string dir = TempDir("reach");
+  auto tr = PpoTrainer::Create(ReachConfig(dir), dir);
+  ASSERT_TRUE(tr.ok()) << tr.status();
+  auto t0 = std::chrono::steady_clock::now();
+  double first = -1, last = 0;
+  while (!(*tr)->done()) {
+    auto st = (*tr)->Iterate();
+    ASSERT_TRUE(st.ok()) << st.status();
+    if (first < 0 && st->episodes > 0) first = st->mean_return;
+    last = st->mean_return;
+  }
+  double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_LT(first, 60);
+  EXPECT_GT(last, kReturnThreshold) << "first " << first;
+  EXPECT_LT(secs, kMaxSeconds);
+}
+
+TEST(Ppo, CheckpointResumesAndCorruptionIsAnError) {
+  std::string dir = TempDir("resume");
+  PpoConfig c = ReachConfig(dir);
+  c.total_steps = 4 * 32 * 64;
+  {
+    auto tr = PpoTrainer::Create(c, dir);
+    ASSERT_TRUE(tr.ok()) << tr.status();
+    for (int i = 0; i < 2; ++i) ASSERT_TRUE((*tr)->Iterate().ok());
+    ASSERT_TRUE((*tr)->Checkpoint().ok());
+  }
+  EXPECT_EQ(PpoTrainer::Create(c, dir).status().code(), absl::StatusCode::kAlreadyExists);
+  auto r = PpoTrainer::Resume(dir);
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_EQ((*r)->env_steps(), 2 * 32 * 64);
+  while (!(*r)->done()) ASSERT_TRUE((*r)->Iterate().ok());
+  EXPECT_TRUE(fs::exists(dir + "/policy.pt"));
+  EXPECT_TRUE(ExportPolicy(dir + "/checkpoint.pt", dir + "/small.pt").ok());
+  // truncate the checkpoint: resuming must fail, never restart from scratch
+  fs::resize_file(dir + "/checkpoint.pt", fs::file_size(dir + "/checkpoint.pt") / 2);
+  auto bad = PpoTrainer::Resume(dir);
+  EXPECT_EQ(bad.status().code(), absl::StatusCode::kDataLoss) << bad.status();
+  EXPECT_EQ(PpoTrainer::Resume(TempDir("none")).status().code(), absl::StatusCode::kNotFound);
+}
+
+// rewards turn NaN: the trainer skips the updates and aborts after max_bad_updates
+class NanTask : public ReachTask {
+ public:
+  NanTask() : ReachTask(4) {}
+  void Step(int i, const float* action, float* obs, StepInfo* info) override {
+    ReachTask::Step(i, action, obs, info);
+    info->reward = NAN;
+  }
+};
+
+TEST(Ppo, NonFiniteUpdatesAbortAfterSeveral) {
+  std::string dir = TempDir("nan");
+  PpoConfig c = ReachConfig(dir);
+  c.num_envs = 4;
+  c.rollout_steps = 8;
+  c.max_bad_updates = 3;
+  auto tr = PpoTrainer::CreateWithTask(c, dir, std::make_unique<NanTask>());
+  ASSERT_TRUE(tr.ok()) << tr.status();
+  EXPECT_TRUE((*tr)->Iterate().ok());
+  EXPECT_TRUE((*tr)->Iterate().ok());
+  auto st = (*tr)->Iterate();
+  EXPECT_EQ(st.status().code(), absl::StatusCode::kInternal);
+}
+
+TEST(PpoConfig, StrictJson) {
+  EXPECT_TRUE(PpoConfig::FromJson(nlohmann::json{{"lr", 1e-4}}).ok());
+  auto bad = PpoConfig::FromJson(nlohmann::json{{"learning_rate", 1e-4}});
+  EXPECT_NE(bad.status().message().find("learning_rate"), std::string::npos);
+  EXPECT_FALSE(PpoConfig::FromJson(nlohmann::json{{"task", "fly"}}).ok());
+}
+
+}  // namespace
+}  // namespace simhuman::learn

@@ -1,0 +1,639 @@
+#include "simhuman/learn/ppo.h"
+
+#include <torch/torch.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+
+#include "simhuman/control/policy/policy_net.h"
+#include "simhuman/core/rng.h"
+#include "simhuman/learn/reach_env.h"
+#include "simhuman/learn/vec_env.h"
+#include "simhuman/learn/walk_env.h"
+
+namespace simhuman::learn {
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr char kCheckpointName[] = "checkpoint.pt";
+constexpr int kStatsWindow = 200;
+constexpr double kLog2Pi = 1.8378770664093453;
+
+core::StatusOr<std::unique_ptr<VecTask>> MakeTask(const std::string& name, int envs) {
+  if (name == "walk") {
+    SH_ASSIGN_OR_RETURN(std::unique_ptr<WalkTask> t, WalkTask::Create(envs));
+    return std::unique_ptr<VecTask>(std::move(t));
+  }
+  if (name == "reach") return std::unique_ptr<VecTask>(new ReachTask(envs));
+  return absl::InvalidArgumentError("unknown task '" + name + "'; valid: walk, reach");
+}
+
+// sum over action dims of the diagonal Gaussian log density
+torch::Tensor LogProb(const torch::Tensor& a, const torch::Tensor& mean,
+                      const torch::Tensor& log_std) {
+  torch::Tensor z = (a - mean) * torch::exp(-log_std);
+  return (-0.5 * z * z - log_std - 0.5 * kLog2Pi).sum(-1);
+}
+
+absl::Status SaveAtomic(torch::serialize::OutputArchive& ar, const std::string& path) {
+  std::string tmp = path + ".tmp";
+  try {
+    ar.save_to(tmp);
+  } catch (const c10::Error& e) {
+    return absl::PermissionDeniedError(tmp + ": cannot write: " + e.what_without_backtrace());
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) return absl::PermissionDeniedError(path + ": cannot replace: " + ec.message());
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+absl::Status PpoConfig::Validate() const {
+  if (task != "walk" && task != "reach") {
+    return absl::InvalidArgumentError("task '" + task + "' is unknown; valid: walk, reach");
+  }
+  if (total_steps <= 0) return absl::InvalidArgumentError("total_steps must be positive");
+  if (num_envs <= 0 || num_envs > 4096) return absl::InvalidArgumentError("num_envs must be in [1, 4096]");
+  if (threads <= 0 || threads > 64 || torch_threads <= 0 || torch_threads > 64) {
+    return absl::InvalidArgumentError("threads and torch_threads must be in [1, 64]");
+  }
+  if (rollout_steps <= 0 || epochs <= 0 || minibatches <= 0) {
+    return absl::InvalidArgumentError("rollout_steps, epochs and minibatches must be positive");
+  }
+  if (static_cast<int64_t>(num_envs) * rollout_steps < minibatches) {
+    return absl::InvalidArgumentError("num_envs x rollout_steps must be >= minibatches");
+  }
+  if (!(lr > 0) || !(lr_final_frac >= 0 && lr_final_frac <= 1)) {
+    return absl::InvalidArgumentError("lr must be > 0 and lr_final_frac in [0, 1]");
+  }
+  if (!(gamma > 0 && gamma <= 1) || !(lambda >= 0 && lambda <= 1)) {
+    return absl::InvalidArgumentError("gamma must be in (0, 1] and lambda in [0, 1]");
+  }
+  if (!(clip > 0) || !(value_clip > 0) || !(max_grad_norm > 0) || !(init_std > 0)) {
+    return absl::InvalidArgumentError("clip, value_clip, max_grad_norm, init_std must be > 0");
+  }
+  if (hidden.empty() || *std::min_element(hidden.begin(), hidden.end()) <= 0) {
+    return absl::InvalidArgumentError("hidden must list positive layer widths");
+  }
+  if (max_bad_updates <= 0) return absl::InvalidArgumentError("max_bad_updates must be positive");
+  return absl::OkStatus();
+}
+
+nlohmann::json PpoConfig::ToJson() const {
+  return nlohmann::json{{"task", task},
+                        {"total_steps", total_steps},
+                        {"num_envs", num_envs},
+                        {"threads", threads},
+                        {"torch_threads", torch_threads},
+                        {"seed", seed},
+                        {"rollout_steps", rollout_steps},
+                        {"epochs", epochs},
+                        {"minibatches", minibatches},
+                        {"lr", lr},
+                        {"lr_final_frac", lr_final_frac},
+                        {"gamma", gamma},
+                        {"lambda", lambda},
+                        {"clip", clip},
+                        {"value_clip", value_clip},
+                        {"value_coef", value_coef},
+                        {"entropy_coef", entropy_coef},
+                        {"max_grad_norm", max_grad_norm},
+                        {"init_std", init_std},
+                        {"hidden", hidden},
+                        {"checkpoint_every_s", checkpoint_every_s},
+                        {"max_bad_updates", max_bad_updates},
+                        {"curriculum_max_steps", curriculum_max_steps}};
+}
+
+core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
+  if (!j.is_object()) return absl::InvalidArgumentError("training config must be a JSON object");
+  PpoConfig c;
+  nlohmann::json known = c.ToJson();
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (!known.contains(it.key())) {
+      return absl::InvalidArgumentError("/" + it.key() + ": unknown training config key");
+    }
+  }
+  try {
+    auto get = [&](const char* k, auto& v) {
+      if (j.contains(k)) j.at(k).get_to(v);
+    };
+    get("task", c.task);
+    get("total_steps", c.total_steps);
+    get("num_envs", c.num_envs);
+    get("threads", c.threads);
+    get("torch_threads", c.torch_threads);
+    get("seed", c.seed);
+    get("rollout_steps", c.rollout_steps);
+    get("epochs", c.epochs);
+    get("minibatches", c.minibatches);
+    get("lr", c.lr);
+    get("lr_final_frac", c.lr_final_frac);
+    get("gamma", c.gamma);
+    get("lambda", c.lambda);
+    get("clip", c.clip);
+    get("value_clip", c.value_clip);
+    get("value_coef", c.value_coef);
+    get("entropy_coef", c.entropy_coef);
+    get("max_grad_norm", c.max_grad_norm);
+    get("init_std", c.init_std);
+    get("hidden", c.hidden);
+    get("checkpoint_every_s", c.checkpoint_every_s);
+    get("max_bad_updates", c.max_bad_updates);
+    get("curriculum_max_steps", c.curriculum_max_steps);
+  } catch (const nlohmann::json::exception& e) {
+    return absl::InvalidArgumentError(std::string("training config: ") + e.what());
+  }
+  SH_RETURN_IF_ERROR(c.Validate());
+  return c;
+}
+
+nlohmann::json IterationStats::ToJson() const {
+  return nlohmann::json{{"iteration", iteration},       {"env_steps", env_steps},
+                        {"wall_s", wall_s},             {"return", mean_return},
+                        {"ep_length", mean_length},     {"success", success_rate},
+                        {"fall", fall_rate},            {"episodes", episodes},
+                        {"policy_loss", policy_loss},   {"value_loss", value_loss},
+                        {"entropy", entropy},           {"approx_kl", approx_kl},
+                        {"clip_frac", clip_frac},       {"lr", lr},
+                        {"action_std", action_std},     {"curriculum", curriculum},
+                        {"steps_per_s", steps_per_s},   {"collect_s", collect_s},
+                        {"update_s", update_s},         {"skipped", skipped_minibatches}};
+}
+
+struct PpoTrainer::Impl {
+  PpoConfig cfg;
+  std::string out;
+  std::unique_ptr<VecEnv> env;
+  control::GaussianActor actor{nullptr};
+  torch::nn::Sequential critic{nullptr};
+  std::unique_ptr<torch::optim::Adam> opt;
+  control::ObsNormalizer norm;
+  core::Rng rng{0};
+  int64_t iteration = 0, env_steps = 0, episodes = 0;
+  double wall_s = 0;
+  double best_success = -1;
+  int bad_in_row = 0;
+  std::deque<EpisodeStats> window;
+  int curr_count = 0, curr_success = 0;  // episodes since the last curriculum check
+  int64_t curr_steps = 0;                 // env steps at the current level
+  Clock::time_point last_ckpt = Clock::now();
+
+  std::vector<torch::Tensor> Params() {
+    std::vector<torch::Tensor> p = actor->parameters();
+    for (auto& t : critic->parameters()) p.push_back(t);
+    return p;
+  }
+
+  void Build() {
+    torch::set_num_threads(cfg.torch_threads);
+    torch::manual_seed(cfg.seed);
+    int d = env->obs_dim(), a = env->act_dim();
+    actor = control::GaussianActor(d, a, cfg.hidden, cfg.init_std);
+    critic = control::MakeMlp(d, cfg.hidden, 1, 1.0);
+    opt = std::make_unique<torch::optim::Adam>(Params(), torch::optim::AdamOptions(cfg.lr));
+    norm = control::ObsNormalizer(d);
+    rng = core::Rng(core::DeriveSeed(cfg.seed, 0x5050));
+  }
+
+  control::PolicyMeta Meta() const {
+    return control::PolicyMeta{cfg.task, env->obs_dim(), env->act_dim(), cfg.hidden};
+  }
+
+  double Lr() const {
+    double f = std::min(1.0, static_cast<double>(env_steps) / static_cast<double>(cfg.total_steps));
+    return cfg.lr * (1.0 - (1.0 - cfg.lr_final_frac) * f);
+  }
+
+  torch::Tensor Gaussian(int64_t rows, int64_t cols) {
+    torch::Tensor t = torch::empty({rows, cols}, torch::kFloat32);
+    float* p = t.data_ptr<float>();
+    std::normal_distribution<float> nd(0.f, 1.f);
+    for (int64_t i = 0; i < rows * cols; ++i) p[i] = nd(rng.engine());
+    return t;
+  }
+
+  absl::Status WriteCheckpoint(const std::string& path) {
+    try {
+      torch::serialize::OutputArchive ar;
+      control::SavePolicyKeys(ar, Meta(), actor, norm);
+      torch::serialize::OutputArchive c, o;
+      critic->save(c);
+      ar.write("critic", c);
+      opt->save(o);
+      ar.write("optim", o);
+      std::ostringstream r;
+      r << rng.engine();
+      ar.write("rng", c10::IValue(r.str()));
+      ar.write("iteration", c10::IValue(iteration));
+      ar.write("env_steps", c10::IValue(env_steps));
+      ar.write("episodes", c10::IValue(episodes));
+      ar.write("wall_s", c10::IValue(wall_s));
+      ar.write("best_success", c10::IValue(best_success));
+      ar.write("curriculum", c10::IValue(env->task().curriculum()));
+      ar.write("config", c10::IValue(cfg.ToJson().dump()));
+      return SaveAtomic(ar, path);
+    } catch (const c10::Error& e) {
+      return absl::InternalError(path + ": " + e.what_without_backtrace());
+    }
+  }
+
+  absl::Status WritePolicy(const std::string& path) {
+    torch::serialize::OutputArchive ar;
+    control::SavePolicyKeys(ar, Meta(), actor, norm);
+    ar.write("env_steps", c10::IValue(env_steps));
+    return SaveAtomic(ar, path);
+  }
+
+  void AppendLog(const IterationStats& s) {
+    std::ofstream f(out + "/log.jsonl", std::ios::app);
+    f << s.ToJson().dump() << "\n";
+  }
+};
+
+PpoTrainer::PpoTrainer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+PpoTrainer::~PpoTrainer() = default;
+bool PpoTrainer::done() const { return impl_->env_steps >= impl_->cfg.total_steps; }
+int64_t PpoTrainer::env_steps() const { return impl_->env_steps; }
+const PpoConfig& PpoTrainer::config() const { return impl_->cfg; }
+const std::string& PpoTrainer::out_dir() const { return impl_->out; }
+
+core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Create(const PpoConfig& config,
+                                                               const std::string& out_dir) {
+  SH_RETURN_IF_ERROR(config.Validate());
+  SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task, MakeTask(config.task, config.num_envs));
+  return CreateWithTask(config, out_dir, std::move(task));
+}
+
+core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::CreateWithTask(
+    const PpoConfig& config, const std::string& out_dir, std::unique_ptr<VecTask> task) {
+  SH_RETURN_IF_ERROR(config.Validate());
+  std::error_code ec;
+  if (fs::exists(fs::path(out_dir) / kCheckpointName, ec)) {
+    return absl::AlreadyExistsError(out_dir + " already holds a checkpoint; continue it with "
+                                    "--resume or choose another --out");
+  }
+  fs::create_directories(out_dir, ec);
+  if (ec) return absl::PermissionDeniedError(out_dir + ": cannot create: " + ec.message());
+  auto impl = std::make_unique<Impl>();
+  impl->cfg = config;
+  impl->out = out_dir;
+  impl->env = std::make_unique<VecEnv>(std::move(task), config.threads, config.seed);
+  impl->Build();
+  impl->env->ResetAll(0);
+  std::ofstream(out_dir + "/config.json") << config.ToJson().dump(2) << "\n";
+  return std::unique_ptr<PpoTrainer>(new PpoTrainer(std::move(impl)));
+}
+
+core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string& out_dir,
+                                                               int64_t total_steps) {
+  std::string path = (fs::path(out_dir) / kCheckpointName).string();
+  if (!std::ifstream(path).good()) {
+    return absl::NotFoundError(path + ": no checkpoint to resume from");
+  }
+  auto impl = std::make_unique<Impl>();
+  impl->out = out_dir;
+  try {
+    torch::serialize::InputArchive ar;
+    ar.load_from(path);
+    c10::IValue cfg_json, rng, iteration, env_steps, episodes, wall, best, curriculum;
+    if (!ar.try_read("config", cfg_json) || !ar.try_read("rng", rng) ||
+        !ar.try_read("iteration", iteration) || !ar.try_read("env_steps", env_steps) ||
+        !ar.try_read("episodes", episodes) || !ar.try_read("wall_s", wall) ||
+        !ar.try_read("best_success", best) || !ar.try_read("curriculum", curriculum)) {
+      return absl::DataLossError(path + ": not a training checkpoint (training state missing)");
+    }
+    nlohmann::json j = nlohmann::json::parse(cfg_json.toStringRef(), nullptr, false);
+    auto cfg = PpoConfig::FromJson(j);
+    if (!cfg.ok()) return core::Annotate(cfg.status(), path + ": config");
+    impl->cfg = *cfg;
+    if (total_steps > 0) impl->cfg.total_steps = total_steps;
+    SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task, MakeTask(impl->cfg.task, impl->cfg.num_envs));
+    impl->env = std::make_unique<VecEnv>(std::move(task), impl->cfg.threads, impl->cfg.seed);
+    impl->Build();
+    auto meta = control::ReadPolicyMeta(ar);
+    if (!meta.ok()) return core::Annotate(meta.status(), path);
+    if (meta->obs_dim != impl->env->obs_dim() || meta->act_dim != impl->env->act_dim() ||
+        meta->hidden != impl->cfg.hidden || meta->task != impl->cfg.task) {
+      return absl::DataLossError(path + ": network shape or task differs from its config");
+    }
+    torch::serialize::InputArchive a, c, o;
+    if (!ar.try_read("actor", a) || !ar.try_read("critic", c) || !ar.try_read("optim", o)) {
+      return absl::DataLossError(path + ": actor, critic or optimizer state missing");
+    }
+    impl->actor->load(a);
+    impl->critic->load(c);
+    impl->opt->load(o);
+    SH_RETURN_IF_ERROR(core::Annotate(impl->norm.Load(ar, impl->env->obs_dim()), path));
+    std::istringstream r(rng.toStringRef());
+    r >> impl->rng.engine();
+    if (r.fail()) return absl::DataLossError(path + ": corrupt RNG state");
+    impl->iteration = iteration.toInt();
+    impl->env_steps = env_steps.toInt();
+    impl->episodes = episodes.toInt();
+    impl->wall_s = wall.toDouble();
+    impl->best_success = best.toDouble();
+    impl->env->task().set_curriculum(curriculum.toDouble());
+    for (const auto& p : impl->Params()) {
+      if (!torch::isfinite(p).all().item<bool>()) {
+        return absl::DataLossError(path + ": non-finite network weights");
+      }
+    }
+  } catch (const c10::Error& e) {
+    return absl::DataLossError(path + ": corrupt checkpoint: " + e.what_without_backtrace());
+  } catch (const std::exception& e) {
+    return absl::DataLossError(path + ": corrupt checkpoint: " + e.what());
+  }
+  // iterations logged after the checkpoint were lost with the process: drop their lines
+  {
+    std::string log_path = out_dir + "/log.jsonl";
+    std::ifstream in(log_path);
+    std::string line, kept;
+    while (std::getline(in, line)) {
+      nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+      if (j.is_object() && j.value("env_steps", int64_t{0}) <= impl->env_steps) kept += line + "\n";
+    }
+    in.close();
+    std::ofstream(log_path + ".tmp") << kept;
+    std::error_code ec;
+    fs::rename(log_path + ".tmp", log_path, ec);
+  }
+  // new episodes after a resume get fresh seeds
+  impl->env->ResetAll(static_cast<uint64_t>(impl->iteration + 1) << 24);
+  return std::unique_ptr<PpoTrainer>(new PpoTrainer(std::move(impl)));
+}
+
+absl::Status PpoTrainer::Checkpoint() {
+  Impl& m = *impl_;
+  SH_RETURN_IF_ERROR(m.WriteCheckpoint(m.out + "/" + kCheckpointName));
+  SH_RETURN_IF_ERROR(m.WritePolicy(m.out + "/policy.pt"));
+  if (m.window.size() >= 50) {
+    double s = 0;
+    for (const auto& e : m.window) s += e.success;
+    s /= m.window.size();
+    if (s >= m.best_success) {
+      m.best_success = s;
+      SH_RETURN_IF_ERROR(m.WritePolicy(m.out + "/best_policy.pt"));
+    }
+  }
+  m.last_ckpt = Clock::now();
+  return absl::OkStatus();
+}
+
+core::StatusOr<IterationStats> PpoTrainer::Iterate() {
+  Impl& m = *impl_;
+  auto t0 = Clock::now();
+  const int E = m.env->num_envs(), D = m.env->obs_dim(), A = m.env->act_dim();
+  const int T = m.cfg.rollout_steps;
+  const float gamma = static_cast<float>(m.cfg.gamma);
+  torch::Tensor b_obs = torch::empty({T, E, D});
+  torch::Tensor b_act = torch::empty({T, E, A});
+  torch::Tensor b_logp = torch::empty({T, E});
+  torch::Tensor b_val = torch::empty({T, E});
+  torch::Tensor b_rew = torch::empty({T, E});
+  torch::Tensor b_done = torch::empty({T, E});
+  IterationStats st;
+
+  // rollout
+  {
+    torch::NoGradGuard ng;
+    m.actor->eval();
+    torch::Tensor log_std = m.actor->log_std();
+    torch::Tensor std_dev = torch::exp(log_std);
+    for (int t = 0; t < T; ++t) {
+      torch::Tensor raw = torch::from_blob(const_cast<float*>(m.env->obs().data()), {E, D}).clone();
+      m.norm.Update(raw);
+      torch::Tensor obs = m.norm.Normalize(raw);
+      torch::Tensor mean = m.actor->forward(obs);
+      torch::Tensor act = mean + std_dev * m.Gaussian(E, A);
+      b_obs[t] = obs;
+      b_act[t] = act;
+      b_logp[t] = LogProb(act, mean, log_std);
+      b_val[t] = m.critic->forward(obs).squeeze(-1);
+      act = act.contiguous();
+      m.env->Step(act.data_ptr<float>());
+      torch::Tensor rew = torch::from_blob(const_cast<float*>(m.env->rewards().data()), {E}).clone();
+      torch::Tensor done = torch::zeros({E});
+      std::vector<int64_t> trunc;
+      for (int i = 0; i < E; ++i) {
+        if (m.env->terminated()[i] || m.env->truncated()[i]) done[i] = 1.f;
+        if (m.env->truncated()[i]) trunc.push_back(i);
+      }
+      // time limits: bootstrap with the value of the last observation
+      if (!trunc.empty()) {
+        torch::Tensor term = torch::from_blob(const_cast<float*>(m.env->terminal_obs().data()), {E, D});
+        torch::Tensor idx = torch::tensor(trunc, torch::kInt64);
+        torch::Tensor v = m.critic->forward(m.norm.Normalize(term.index_select(0, idx))).squeeze(-1);
+        rew.index_add_(0, idx, gamma * v);
+      }
+      b_rew[t] = rew;
+      b_done[t] = done;
+      for (const EpisodeStats& e : m.env->finished()) {
+        m.window.push_back(e);
+        if (m.window.size() > kStatsWindow) m.window.pop_front();
+        ++m.episodes;
+        ++m.curr_count;
+        m.curr_success += e.success;
+      }
+    }
+    torch::Tensor last = torch::from_blob(const_cast<float*>(m.env->obs().data()), {E, D});
+    torch::Tensor last_v = m.critic->forward(m.norm.Normalize(last)).squeeze(-1);
+    // GAE
+    torch::Tensor adv = torch::zeros({T, E});
+    torch::Tensor gae = torch::zeros({E});
+    for (int t = T - 1; t >= 0; --t) {
+      torch::Tensor next_v = t == T - 1 ? last_v : b_val[t + 1];
+      torch::Tensor nonterm = 1.f - b_done[t];
+      torch::Tensor delta = b_rew[t] + gamma * next_v * nonterm - b_val[t];
+      gae = delta + gamma * static_cast<float>(m.cfg.lambda) * nonterm * gae;
+      adv[t] = gae;
+    }
+    b_rew = adv + b_val;  // returns
+    b_done = adv;
+  }
+  m.env_steps += static_cast<int64_t>(T) * E;
+  auto t1 = Clock::now();
+
+  // curriculum: widen when more than half of recent episodes succeed
+  m.curr_steps += static_cast<int64_t>(T) * E;
+  bool raise = m.cfg.curriculum_max_steps > 0 && m.curr_steps >= m.cfg.curriculum_max_steps;
+  if (m.curr_count >= 64) {
+    raise = raise || m.curr_success > m.curr_count / 2;
+    m.curr_count = m.curr_success = 0;
+  }
+  if (raise && m.env->task().curriculum() < 1.0) {
+    m.env->task().set_curriculum(std::min(1.0, m.env->task().curriculum() + 1.0 / 9.0));
+    m.curr_steps = 0;
+  }
+
+  // update
+  const int64_t N = static_cast<int64_t>(T) * E;
+  torch::Tensor obs = b_obs.reshape({N, D}), act = b_act.reshape({N, A});
+  torch::Tensor old_logp = b_logp.reshape({N}), old_v = b_val.reshape({N});
+  torch::Tensor ret = b_rew.reshape({N}), adv = b_done.reshape({N});
+  adv = (adv - adv.mean()) / (adv.std() + 1e-8);
+  double lr = m.Lr();
+  for (auto& g : m.opt->param_groups()) {
+    static_cast<torch::optim::AdamOptions&>(g.options()).lr(lr);
+  }
+  bool rollout_finite = torch::isfinite(obs).all().item<bool>() &&
+                        torch::isfinite(ret).all().item<bool>() &&
+                        torch::isfinite(adv).all().item<bool>();
+  std::vector<torch::Tensor> params = m.Params();
+  std::vector<torch::Tensor> backup;
+  for (const auto& p : params) backup.push_back(p.detach().clone());
+  m.actor->train();
+  double pl = 0, vl = 0, ent = 0, kl = 0, cf = 0;
+  int n_mb = 0, skipped = 0;
+  const int64_t mb = N / m.cfg.minibatches;
+  std::vector<int64_t> perm(N);
+  for (int ep = 0; ep < m.cfg.epochs && rollout_finite; ++ep) {
+    std::iota(perm.begin(), perm.end(), 0);
+    std::shuffle(perm.begin(), perm.end(), m.rng.engine());
+    torch::Tensor perm_t = torch::tensor(perm, torch::kInt64);
+    for (int k = 0; k < m.cfg.minibatches; ++k) {
+      torch::Tensor idx = perm_t.slice(0, k * mb, (k + 1) * mb);
+      torch::Tensor o = obs.index_select(0, idx), a = act.index_select(0, idx);
+      torch::Tensor olp = old_logp.index_select(0, idx), ov = old_v.index_select(0, idx);
+      torch::Tensor r = ret.index_select(0, idx), ad = adv.index_select(0, idx);
+      torch::Tensor mean = m.actor->forward(o);
+      torch::Tensor log_std = m.actor->log_std();
+      torch::Tensor logp = LogProb(a, mean, log_std);
+      torch::Tensor ratio = torch::exp(logp - olp);
+      torch::Tensor pg = -torch::min(ratio * ad, torch::clamp(ratio, 1 - m.cfg.clip, 1 + m.cfg.clip) * ad).mean();
+      torch::Tensor v = m.critic->forward(o).squeeze(-1);
+      torch::Tensor vc = ov + torch::clamp(v - ov, -m.cfg.value_clip, m.cfg.value_clip);
+      torch::Tensor vloss = 0.5 * torch::max((v - r).pow(2), (vc - r).pow(2)).mean();
+      torch::Tensor entropy = (log_std + 0.5 + 0.5 * kLog2Pi).sum();
+      torch::Tensor loss = pg + m.cfg.value_coef * vloss - m.cfg.entropy_coef * entropy;
+      if (!torch::isfinite(loss).item<bool>()) {
+        ++skipped;
+        continue;
+      }
+      m.opt->zero_grad();
+      loss.backward();
+      double gn = torch::nn::utils::clip_grad_norm_(params, m.cfg.max_grad_norm);
+      if (!std::isfinite(gn)) {
+        ++skipped;
+        m.opt->zero_grad();
+        continue;
+      }
+      m.opt->step();
+      torch::NoGradGuard ng;
+      pl += pg.item<double>();
+      vl += vloss.item<double>();
+      ent += entropy.item<double>();
+      torch::Tensor lr_ = logp.detach() - olp;
+      kl += ((torch::exp(lr_) - 1) - lr_).mean().item<double>();
+      cf += (torch::abs(ratio.detach() - 1) > m.cfg.clip).to(torch::kFloat32).mean().item<double>();
+      ++n_mb;
+    }
+  }
+  // NaN guard: a non-finite rollout or weights -> restore and count; abort after several
+  bool params_finite = true;
+  for (const auto& p : params) params_finite = params_finite && torch::isfinite(p).all().item<bool>();
+  if (!rollout_finite || !params_finite || skipped > 0) {
+    if (!params_finite) {
+      torch::NoGradGuard ng;
+      for (size_t i = 0; i < params.size(); ++i) params[i].copy_(backup[i]);
+    }
+    if (!rollout_finite) skipped = m.cfg.epochs * m.cfg.minibatches;
+    if (++m.bad_in_row >= m.cfg.max_bad_updates) {
+      return absl::InternalError("training aborted: " + std::to_string(m.bad_in_row) +
+                                 " non-finite updates in a row at iteration " +
+                                 std::to_string(m.iteration));
+    }
+  } else {
+    m.bad_in_row = 0;
+  }
+  auto t2 = Clock::now();
+  ++m.iteration;
+  double collect = std::chrono::duration<double>(t1 - t0).count();
+  double update = std::chrono::duration<double>(t2 - t1).count();
+  m.wall_s += collect + update;
+
+  st.iteration = m.iteration;
+  st.env_steps = m.env_steps;
+  st.wall_s = m.wall_s;
+  st.episodes = m.episodes;
+  if (!m.window.empty()) {
+    for (const auto& e : m.window) {
+      st.mean_return += e.ret;
+      st.mean_length += e.length;
+      st.success_rate += e.success;
+      st.fall_rate += e.terminated;
+    }
+    double n = static_cast<double>(m.window.size());
+    st.mean_return /= n;
+    st.mean_length /= n;
+    st.success_rate /= n;
+    st.fall_rate /= n;
+  }
+  if (n_mb > 0) {
+    st.policy_loss = pl / n_mb;
+    st.value_loss = vl / n_mb;
+    st.entropy = ent / n_mb;
+    st.approx_kl = kl / n_mb;
+    st.clip_frac = cf / n_mb;
+  }
+  st.lr = lr;
+  st.action_std = torch::exp(m.actor->log_std()).mean().item<double>();
+  st.curriculum = m.env->task().curriculum();
+  st.collect_s = collect;
+  st.update_s = update;
+  st.steps_per_s = static_cast<double>(N) / std::max(1e-9, collect + update);
+  st.skipped_minibatches = skipped;
+  if (std::chrono::duration<double>(Clock::now() - m.last_ckpt).count() >= m.cfg.checkpoint_every_s ||
+      done()) {
+    SH_RETURN_IF_ERROR(Checkpoint());
+    st.checkpointed = true;
+  }
+  m.AppendLog(st);
+  return st;
+}
+
+absl::Status ExportPolicy(const std::string& checkpoint, const std::string& out) {
+  auto p = control::LoadPolicyFile(checkpoint);
+  if (!p.ok()) return p.status();
+  try {
+    torch::serialize::OutputArchive ar;
+    control::SavePolicyKeys(ar, p->meta, p->actor, p->norm);
+    auto progress = ReadCheckpointProgress(checkpoint);
+    if (progress.ok()) ar.write("env_steps", c10::IValue(progress->first));
+    return SaveAtomic(ar, out);
+  } catch (const c10::Error& e) {
+    return absl::InternalError(out + ": " + e.what_without_backtrace());
+  }
+}
+
+}  // namespace simhuman::learn
+
+namespace simhuman::learn {
+
+core::StatusOr<std::pair<int64_t, double>> ReadCheckpointProgress(const std::string& path) {
+  try {
+    torch::serialize::InputArchive ar;
+    ar.load_from(path);
+    c10::IValue steps, wall;
+    if (!ar.try_read("env_steps", steps)) {
+      return absl::DataLossError(path + ": no env_steps in the file");
+    }
+    double w = ar.try_read("wall_s", wall) ? wall.toDouble() : 0.0;
+    return std::make_pair(static_cast<int64_t>(steps.toInt()), w);
+  } catch (const c10::Error& e) {
+    return absl::DataLossError(path + ": corrupt or unreadable: " + e.what_without_backtrace());
+  }
+}
+
+}  // namespace simhuman::learn

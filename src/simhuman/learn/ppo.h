@@ -1,0 +1,113 @@
+#pragma once
+/// PPO in LibTorch on a VecEnv: clipped surrogate, GAE(gamma, lambda), clipped value loss,
+/// entropy bonus, Adam with a linearly decaying learning rate, minibatch epochs, gradient-norm
+/// clipping, running observation normalization, NaN guards, atomic checkpoints and resume.
+/// This header is torch-free (the trainer is a pimpl); only app/ drives it and prints.
+///
+/// Run folder `out/`: config.json (resolved config), log.jsonl (one line per iteration),
+/// checkpoint.pt (everything needed to resume), policy.pt (latest policy export) and
+/// best_policy.pt (the export with the best recent success rate).
+///
+/// Reproducibility: networks are initialised from torch::manual_seed(seed); action noise and
+/// minibatch shuffles come from a seeded core::Rng stored in the checkpoint; env episodes are
+/// seeded per (seed, env, episode). With the same seed and thread count a run repeats.
+
+#include <cstdint>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "simhuman/core/status.h"
+
+namespace simhuman::learn {
+
+class VecTask;
+
+/// Training configuration (strict JSON: unknown keys are errors).
+struct PpoConfig {
+  std::string task = "walk";  ///< "walk" or "reach"
+  int64_t total_steps = 30'000'000;
+  int num_envs = 128;
+  int threads = 2;        ///< env worker threads
+  int torch_threads = 1;  ///< LibTorch intra-op threads (1 is fastest on a busy 2-core box)
+  uint64_t seed = 1;
+  int rollout_steps = 32;  ///< per env per iteration
+  int epochs = 5;
+  int minibatches = 4;
+  double lr = 3e-4;
+  double lr_final_frac = 0.3;  ///< lr decays linearly to lr * this at total_steps
+  double gamma = 0.99, lambda = 0.95;
+  double clip = 0.2;
+  double value_clip = 1.0;  ///< absolute range around the old value prediction
+  double value_coef = 0.5;
+  double entropy_coef = 0.001;
+  double max_grad_norm = 1.0;
+  double init_std = 0.5;
+  std::vector<int> hidden = {256, 256};
+  double checkpoint_every_s = 180;
+  int max_bad_updates = 5;  ///< abort after this many non-finite updates in a row
+  /// The curriculum level rises by 1/9 when more than half of >= 64 recent episodes succeed,
+  /// and at the latest after this many env steps at one level (0: only on success).
+  int64_t curriculum_max_steps = 400'000;
+
+  absl::Status Validate() const;
+  nlohmann::json ToJson() const;
+  /// Strict: unknown keys are InvalidArgument naming the key; missing keys keep defaults.
+  static core::StatusOr<PpoConfig> FromJson(const nlohmann::json& j);
+};
+
+/// What one iteration did (episode statistics over the last 200 finished episodes).
+struct IterationStats {
+  int64_t iteration = 0;
+  int64_t env_steps = 0;
+  double wall_s = 0;  ///< training wall time, summed over sessions
+  double mean_return = 0, mean_length = 0, success_rate = 0, fall_rate = 0;
+  int64_t episodes = 0;  ///< finished so far
+  double policy_loss = 0, value_loss = 0, entropy = 0, approx_kl = 0, clip_frac = 0;
+  double lr = 0, action_std = 0, curriculum = 0;
+  double steps_per_s = 0, collect_s = 0, update_s = 0;
+  int skipped_minibatches = 0;
+  bool checkpointed = false;
+  nlohmann::json ToJson() const;
+};
+
+class PpoTrainer {
+ public:
+  /// Starts a new run writing to `out_dir` (created). AlreadyExists if it holds a checkpoint.
+  static core::StatusOr<std::unique_ptr<PpoTrainer>> Create(const PpoConfig& config,
+                                                            const std::string& out_dir);
+  /// As Create, with a caller-made task (tests; config.task only names it in files).
+  static core::StatusOr<std::unique_ptr<PpoTrainer>> CreateWithTask(
+      const PpoConfig& config, const std::string& out_dir, std::unique_ptr<VecTask> task);
+  /// Continues the run in `out_dir` from its checkpoint. A missing checkpoint is NotFound and a
+  /// corrupt one DataLoss (never a silent restart). `total_steps` > 0 overrides the target.
+  static core::StatusOr<std::unique_ptr<PpoTrainer>> Resume(const std::string& out_dir,
+                                                            int64_t total_steps = 0);
+  ~PpoTrainer();
+
+  /// Collects one rollout and updates. Errors: too many non-finite updates in a row, I/O.
+  core::StatusOr<IterationStats> Iterate();
+  /// Writes checkpoint.pt and policy.pt atomically (and best_policy.pt when better).
+  absl::Status Checkpoint();
+  bool done() const;
+  int64_t env_steps() const;
+  const PpoConfig& config() const;
+  const std::string& out_dir() const;
+
+  struct Impl;
+
+ private:
+  explicit PpoTrainer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Copies the policy keys of a checkpoint or policy file into a small policy file at `out`
+/// (atomic). Errors name the file.
+absl::Status ExportPolicy(const std::string& checkpoint, const std::string& out);
+
+/// (env_steps, training wall seconds) stored in a checkpoint or policy file (wall 0 when the
+/// file holds none). Errors name the file.
+core::StatusOr<std::pair<int64_t, double>> ReadCheckpointProgress(const std::string& path);
+
+}  // namespace simhuman::learn

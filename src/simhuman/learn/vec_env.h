@@ -1,0 +1,116 @@
+#pragma once
+/// Vectorized environments: E copies of one task stepped by a pool of worker threads, with
+/// batched observations and actions, automatic resets, early termination and time limits.
+/// Torch-free (float buffers); the trainer wraps them in tensors.
+///
+/// Determinism: env i's episode k is seeded with core::DeriveSeed(seed, i, k), so trajectories
+/// do not depend on the number of threads or their scheduling.
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace simhuman::learn {
+
+/// What one env step reports.
+struct StepInfo {
+  float reward = 0;
+  bool terminated = false;  ///< ended by failure (no bootstrap)
+  bool truncated = false;   ///< ended by the time limit (bootstrap with V(terminal obs))
+  bool success = false;     ///< the task's success criterion has been met in this episode
+};
+
+/// One task with E independent copies. Reset/Step for distinct env indices may run
+/// concurrently; calls for the same index never do.
+class VecTask {
+ public:
+  virtual ~VecTask() = default;
+  virtual std::string name() const = 0;
+  virtual int num_envs() const = 0;
+  virtual int obs_dim() const = 0;
+  virtual int act_dim() const = 0;
+  /// Starts a new episode of env i from `seed` and writes its first observation.
+  virtual void Reset(int i, uint64_t seed, float* obs) = 0;
+  /// Applies `action` (act_dim raw floats) to env i; writes the next observation (before any
+  /// reset) and the step's outcome.
+  virtual void Step(int i, const float* action, float* obs, StepInfo* info) = 0;
+  /// Curriculum level in [0, 1] (tasks without one ignore it).
+  virtual double curriculum() const { return 1.0; }
+  virtual void set_curriculum(double) {}
+};
+
+/// A fixed pool of threads running index ranges (the calling thread takes part).
+class WorkerPool {
+ public:
+  explicit WorkerPool(int threads);
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+  /// Runs fn(i) for i in [0, n), blocking until all are done. Not reentrant.
+  void ParallelFor(int n, const std::function<void(int)>& fn);
+  int threads() const { return static_cast<int>(workers_.size()) + 1; }
+
+ private:
+  void Loop();
+  void RunChunk();
+  std::vector<std::thread> workers_;
+  std::mutex mu_;
+  std::condition_variable cv_, done_cv_;
+  const std::function<void(int)>* fn_ = nullptr;
+  int n_ = 0, next_ = 0, busy_ = 0;
+  uint64_t generation_ = 0;
+  bool stop_ = false;
+};
+
+/// A finished episode.
+struct EpisodeStats {
+  double ret = 0;
+  int length = 0;
+  bool success = false;
+  bool terminated = false;
+};
+
+/// Batched stepping with automatic resets.
+class VecEnv {
+ public:
+  VecEnv(std::unique_ptr<VecTask> task, int threads, uint64_t seed);
+  int num_envs() const { return task_->num_envs(); }
+  int obs_dim() const { return task_->obs_dim(); }
+  int act_dim() const { return task_->act_dim(); }
+  VecTask& task() { return *task_; }
+
+  /// Resets every env (episode counters continue from `episode_base`, e.g. after a resume).
+  void ResetAll(uint64_t episode_base = 0);
+  /// Steps every env with actions [E * act_dim]. Afterwards obs() holds the next observations
+  /// (of the new episode where one ended), terminal_obs() the last observation of episodes
+  /// that ended (valid where terminated or truncated), and finished() the episodes that ended
+  /// in this step, in env order.
+  void Step(const float* actions);
+
+  const std::vector<float>& obs() const { return obs_; }
+  const std::vector<float>& terminal_obs() const { return terminal_obs_; }
+  const std::vector<float>& rewards() const { return rewards_; }
+  const std::vector<uint8_t>& terminated() const { return terminated_; }
+  const std::vector<uint8_t>& truncated() const { return truncated_; }
+  const std::vector<EpisodeStats>& finished() const { return finished_; }
+  uint64_t episodes_started() const;
+
+ private:
+  std::unique_ptr<VecTask> task_;
+  WorkerPool pool_;
+  uint64_t seed_;
+  std::vector<float> obs_, terminal_obs_, rewards_;
+  std::vector<uint8_t> terminated_, truncated_, ended_;
+  std::vector<double> ep_ret_;
+  std::vector<int> ep_len_;
+  std::vector<uint64_t> ep_count_;
+  std::vector<EpisodeStats> ep_done_;  // per env, valid where ended_
+  std::vector<EpisodeStats> finished_;
+};
+
+}  // namespace simhuman::learn

@@ -1,0 +1,234 @@
+#include "simhuman/learn/walk_env.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace simhuman::learn {
+namespace {
+
+using control::kWalkActDim;
+
+constexpr double kDeg = M_PI / 180.0;
+constexpr double kSuccessRadius = 0.2, kSuccessYaw = 15 * kDeg, kStoppedSpeed = 0.2;
+constexpr int kSuccessHold = 15;   // policy steps (0.5 s)
+constexpr int kNextTargetHold = 45;  // 1.5 s, then a new target
+constexpr int kFirstLegJoint = 14;
+
+double Wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
+
+}  // namespace
+
+core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs) {
+  if (num_envs <= 0) return absl::InvalidArgumentError("walk task: --envs must be positive");
+  std::unique_ptr<WalkTask> t(new WalkTask());
+  world::ModelOptions opt;
+  opt.timestep_s = control::kWalkPhysicsDt;
+  SH_ASSIGN_OR_RETURN(t->world_, world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, opt));
+  SH_ASSIGN_OR_RETURN(t->ix_, control::MakeWalkIndex(*t->world_, 0));
+  // one human on a floor: small arenas keep E copies of mjData cheap to allocate and reset
+  mjModel* m = t->world_->mutable_model();
+  m->nconmax = 64;
+  m->njmax = 400;
+  m->nstack = 150000;
+  t->foot_body_.assign(m->nbody, 0);
+  t->foot_body_[t->ix_.agent.left_foot_body] = 1;
+  t->foot_body_[t->ix_.agent.right_foot_body] = 1;
+  t->envs_.resize(num_envs);
+  for (Env& e : t->envs_) e.d = mj_makeData(m);
+  return t;
+}
+
+WalkTask::~WalkTask() {
+  for (Env& e : envs_) {
+    if (e.d) mj_deleteData(e.d);
+  }
+}
+
+void WalkTask::DrawTarget(Env& e) {
+  Eigen::Vector3d pos;
+  double yaw;
+  control::PelvisPose(e.d, ix_, &pos, &yaw);
+  double a = (45.0 + 135.0 * std::clamp(curriculum_, 0.0, 1.0)) * kDeg;
+  double dist = e.rng.Uniform() < 0.1 ? e.rng.Uniform(0.0, 0.3)
+                                      : 0.3 + 9.7 * std::pow(e.rng.Uniform(), 1.5);
+  double bearing = yaw + e.rng.Uniform(-a, a);
+  e.s.target_xy = pos.head<2>() + dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+  e.s.target_yaw_rad = Wrap(bearing + e.rng.Uniform(-a, a));
+  e.hold = 0;
+}
+
+void WalkTask::SetTarget(int i, double x, double y, double yaw_rad) {
+  envs_[i].s.target_xy = Eigen::Vector2d(x, y);
+  envs_[i].s.target_yaw_rad = yaw_rad;
+  envs_[i].hold = 0;
+}
+
+void WalkTask::Reset(int i, uint64_t seed, float* obs) {
+  const mjModel* m = world_->model();
+  Env& e = envs_[i];
+  e.rng = core::Rng(seed);
+  mjData* d = e.d;
+  mj_resetData(m, d);
+  const world::AgentIndex& a = ix_.agent;
+  double yaw = e.rng.Uniform(-M_PI, M_PI);
+  d->qpos[a.root_qpos + 0] = 0;
+  d->qpos[a.root_qpos + 1] = 0;
+  d->qpos[a.root_qpos + 3] = std::cos(yaw / 2);
+  d->qpos[a.root_qpos + 4] = 0;
+  d->qpos[a.root_qpos + 5] = 0;
+  d->qpos[a.root_qpos + 6] = std::sin(yaw / 2);
+  const auto& nominal = control::WalkNominalPose();
+  for (int j = 0; j < kWalkActDim; ++j) {
+    double q = std::clamp(nominal[j] + e.rng.Normal(0.03), ix_.ctrl_lo[j], ix_.ctrl_hi[j]);
+    d->qpos[a.hinge_qpos[j]] = q;
+    d->ctrl[a.actuator[j]] = q;
+  }
+  // put the lowest foot corner on the floor
+  mj_forward(m, d);
+  double lowest = 1e9;
+  for (int g : {ix_.left_foot_geom, ix_.right_foot_geom}) {
+    const mjtNum* R = d->geom_xmat + 9 * g;
+    const mjtNum* sz = m->geom_size + 3 * g;
+    for (int c = 0; c < 8; ++c) {
+      double z = d->geom_xpos[3 * g + 2];
+      for (int k = 0; k < 3; ++k) z += ((c >> k) & 1 ? 1 : -1) * sz[k] * R[6 + k];
+      lowest = std::min(lowest, z);
+    }
+  }
+  d->qpos[a.root_qpos + 2] -= lowest - 0.001;
+  mj_forward(m, d);
+  e.s = control::WalkState();
+  e.s.phase = e.rng.Uniform();
+  e.steps = 0;
+  e.success = false;
+  DrawTarget(e);
+  control::UpdateWalkCommand(params_, d, ix_, &e.s);
+  control::WalkObservation(params_, d, ix_, e.s, obs);
+}
+
+bool WalkTask::Fallen(int i) const {
+  const mjModel* m = world_->model();
+  const mjData* d = envs_[i].d;
+  const world::AgentIndex& a = ix_.agent;
+  if (d->xpos[3 * a.pelvis_body + 2] < 0.55 || d->xpos[3 * a.head_body + 2] < 0.8) return true;
+  if (d->xmat[9 * a.torso_body + 8] < std::cos(70 * kDeg)) return true;
+  for (int c = 0; c < d->ncon; ++c) {
+    int g1 = d->contact[c].geom1, g2 = d->contact[c].geom2;
+    int other = g1 == ix_.floor_geom ? g2 : (g2 == ix_.floor_geom ? g1 : -1);
+    if (other >= 0 && !foot_body_[m->geom_bodyid[other]]) return true;
+  }
+  return false;
+}
+
+void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
+  const mjModel* m = world_->model();
+  Env& e = envs_[i];
+  mjData* d = e.d;
+  const world::AgentIndex& a = ix_.agent;
+  double ctrl[kWalkActDim];
+  control::WalkTargets(params_, ix_, e.s, action, ctrl);
+  double power = 0;
+  for (int k = 0; k < control::kWalkSubsteps; ++k) {
+    for (int j = 0; j < kWalkActDim; ++j) d->ctrl[a.actuator[j]] = ctrl[j];
+    mj_step(m, d);
+    for (int j = 0; j < kWalkActDim; ++j) {
+      power += std::abs(d->actuator_force[a.actuator[j]] * d->qvel[a.hinge_qvel[j]]);
+    }
+  }
+  power /= control::kWalkSubsteps;
+  ++e.steps;
+  bool finite = world::AllFinite(d->qpos, m->nq) && world::AllFinite(d->qvel, m->nv);
+  if (!finite) {
+    std::fill(obs, obs + control::kWalkObsDim, 0.f);
+    *info = StepInfo{0.f, true, false, e.success};
+    return;
+  }
+
+  // reward for the command and gait phase this action was taken under
+  WalkRewardTerms& t = e.terms;
+  Eigen::Vector3d pos;
+  double yaw;
+  control::PelvisPose(d, ix_, &pos, &yaw);
+  const mjtNum* v = d->qvel + a.root_qvel;
+  double c = std::cos(yaw), s = std::sin(yaw);
+  double vx = c * v[0] + s * v[1], vy = -s * v[0] + c * v[1];
+  const mjtNum* R = d->xmat + 9 * a.pelvis_body;
+  double wz = R[6] * v[3] + R[7] * v[4] + R[8] * v[5];
+  t.velocity = std::exp(-((vx - e.s.cmd.vx) * (vx - e.s.cmd.vx) +
+                          (vy - e.s.cmd.vy) * (vy - e.s.cmd.vy)) / 0.25);
+  t.yaw_rate = std::exp(-(wz - e.s.cmd.yaw_rate) * (wz - e.s.cmd.yaw_rate) / 0.5);
+  // progress along the commanded direction (a gradient where velocity tracking has none)
+  double cmd_speed = std::hypot(e.s.cmd.vx, e.s.cmd.vy);
+  t.progress = cmd_speed > 0.05 ? std::clamp((vx * e.s.cmd.vx + vy * e.s.cmd.vy) / cmd_speed,
+                                             -0.5, cmd_speed)
+                                : 0.0;
+  t.facing = 0.5 * (1.0 + std::cos(e.s.facing_rad - yaw));
+  double ref[kWalkActDim];
+  control::WalkReference(params_, e.s.phase, e.s.amplitude, e.s.cmd, ref);
+  double err_legs = 0, err_upper = 0;
+  for (int j = 0; j < kWalkActDim; ++j) {
+    double dq = d->qpos[a.hinge_qpos[j]] - ref[j];
+    (j >= kFirstLegJoint ? err_legs : err_upper) += dq * dq;
+  }
+  t.gait_legs = std::exp(-err_legs / 0.5);
+  t.gait_upper = std::exp(-err_upper / 1.0);
+  bool lc, rc;
+  control::FootContacts(d, ix_, &lc, &rc);
+  // feet sliding while on the ground
+  t.foot_slip = 0;
+  for (int side = 0; side < 2; ++side) {
+    if (!(side == 0 ? lc : rc)) continue;
+    mjtNum vel[6];
+    mj_objectVelocity(m, d, mjOBJ_BODY, side == 0 ? a.left_foot_body : a.right_foot_body, vel, 0);
+    t.foot_slip += vel[3] * vel[3] + vel[4] * vel[4];
+  }
+  int el, er;
+  control::WalkExpectedContacts(params_, e.s.phase, e.s.amplitude, &el, &er);
+  auto match = [](int expect, bool contact) {
+    return expect == 0 ? 1.0 : ((expect > 0) == contact ? 1.0 : 0.0);
+  };
+  t.contact = 0.5 * (match(el, lc) + match(er, rc));
+  t.upright = std::max(0.0, d->xmat[9 * a.torso_body + 8]);
+  double dh = (pos.z() - 0.93) / 0.07;
+  t.height = std::exp(-dh * dh);
+  double dist = (e.s.target_xy - pos.head<2>()).norm();
+  double yaw_err = Wrap(e.s.target_yaw_rad - yaw);
+  double speed2 = vx * vx + vy * vy;
+  bool inside = dist < kSuccessRadius && std::abs(yaw_err) < kSuccessYaw;
+  t.at_target = inside ? std::exp(-speed2 / 0.1) : 0.0;
+  double rate = 0;
+  for (int j = 0; j < kWalkActDim; ++j) {
+    double ac = std::clamp(static_cast<double>(action[j]), -control::kWalkActionClip,
+                           control::kWalkActionClip);
+    double dd = ac - e.s.prev_action[j];
+    rate += dd * dd;
+    e.s.prev_action[j] = static_cast<float>(ac);
+  }
+  t.action_rate = rate / kWalkActDim;
+  t.power = power;
+  t.total = w_.scale * (w_.velocity * t.velocity + w_.progress * t.progress +
+                        w_.yaw_rate * t.yaw_rate + w_.facing * t.facing +
+                        w_.gait_legs * t.gait_legs + w_.gait_upper * t.gait_upper +
+                        w_.contact * t.contact + w_.upright * t.upright + w_.height * t.height +
+                        w_.alive + w_.at_target * t.at_target - w_.action_rate * t.action_rate -
+                        w_.power * t.power - w_.foot_slip * t.foot_slip);
+
+  // success: inside the tolerances and stopped for 0.5 s; a new target after 1.5 s
+  if (inside && speed2 < kStoppedSpeed * kStoppedSpeed) {
+    ++e.hold;
+  } else {
+    e.hold = 0;
+  }
+  if (e.hold >= kSuccessHold) e.success = true;
+  if (e.hold >= kNextTargetHold) DrawTarget(e);
+
+  bool fell = Fallen(i);
+  control::UpdateWalkCommand(params_, d, ix_, &e.s);
+  control::WalkObservation(params_, d, ix_, e.s, obs);
+  info->reward = static_cast<float>(t.total);
+  info->terminated = fell;
+  info->truncated = e.steps >= kMaxSteps;
+  info->success = e.success;
+}
+
+}  // namespace simhuman::learn

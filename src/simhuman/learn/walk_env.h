@@ -1,0 +1,85 @@
+#pragma once
+/// The walking task for training: the runner's humanoid (world::SimWorld of an empty scene,
+/// physics at control::kWalkPhysicsDt) walks to a target stand point and stops there facing a
+/// target heading. Observations, commands and PD targets come from control/policy/walk_task.h,
+/// so the trained policy runs unchanged in the PolicyController.
+///
+/// Episodes: 20 s; a fall (pelvis < 0.55 m, head < 0.8 m, torso tilted > 70 deg, or any body
+/// part other than the feet touching the floor) terminates. After holding the target for 1.5 s
+/// a new target is drawn from the current pose. Targets: 0.3-10 m away (skewed short), at a
+/// bearing within +-A of the current heading and a final heading within +-A of the bearing,
+/// where A grows from 45 to 180 deg with the curriculum level.
+
+#include <memory>
+#include <vector>
+
+#include "simhuman/control/policy/walk_task.h"
+#include "simhuman/core/rng.h"
+#include "simhuman/learn/vec_env.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::learn {
+
+/// Reward weights of the walking task (the sum is scaled by `scale`).
+struct WalkRewardWeights {
+  double velocity = 1.0, progress = 1.5, yaw_rate = 0.5, facing = 0.5, gait_legs = 1.0,
+         gait_upper = 0.3, contact = 0.3, upright = 0.5, height = 0.3, alive = 0.5,
+         at_target = 1.0;
+  double action_rate = 0.02, power = 2e-5, foot_slip = 0.5;
+  double scale = 0.1;
+};
+
+/// Terms of the last reward (for logs and tests).
+struct WalkRewardTerms {
+  double velocity = 0, progress = 0, yaw_rate = 0, facing = 0, gait_legs = 0, gait_upper = 0,
+         contact = 0, upright = 0, height = 0, at_target = 0, action_rate = 0, power = 0,
+         foot_slip = 0, total = 0;
+};
+
+class WalkTask : public VecTask {
+ public:
+  /// Builds the shared model and `num_envs` mjData. Errors from model building.
+  static core::StatusOr<std::unique_ptr<WalkTask>> Create(int num_envs);
+  ~WalkTask() override;
+
+  std::string name() const override { return "walk"; }
+  int num_envs() const override { return static_cast<int>(envs_.size()); }
+  int obs_dim() const override { return control::kWalkObsDim; }
+  int act_dim() const override { return control::kWalkActDim; }
+  void Reset(int i, uint64_t seed, float* obs) override;
+  void Step(int i, const float* action, float* obs, StepInfo* info) override;
+  double curriculum() const override { return curriculum_; }
+  void set_curriculum(double c) override { curriculum_ = c; }
+
+  const mjModel* model() const { return world_->model(); }
+  const mjData* data(int i) const { return envs_[i].d; }
+  const control::WalkState& state(int i) const { return envs_[i].s; }
+  const WalkRewardTerms& last_terms(int i) const { return envs_[i].terms; }
+  /// Places env i's target (world frame) for tests and evaluation.
+  void SetTarget(int i, double x, double y, double yaw_rad);
+  /// Whether env i has fallen (the termination test).
+  bool Fallen(int i) const;
+
+  static constexpr int kMaxSteps = 600;  ///< 20 s at 30 Hz
+
+ private:
+  struct Env {
+    mjData* d = nullptr;
+    control::WalkState s;
+    core::Rng rng{0};
+    int steps = 0, hold = 0;
+    bool success = false;
+    WalkRewardTerms terms;
+  };
+  WalkTask() = default;
+  void DrawTarget(Env& e);
+  std::unique_ptr<world::SimWorld> world_;
+  control::WalkIndex ix_;
+  control::WalkParams params_;
+  WalkRewardWeights w_;
+  std::vector<Env> envs_;
+  std::vector<char> foot_body_;  // per body id: 1 for feet
+  double curriculum_ = 0;
+};
+
+}  // namespace simhuman::learn
