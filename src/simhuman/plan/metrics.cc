@@ -29,6 +29,31 @@ Eigen::Vector3d Horizontal(const Eigen::Vector3d& v) {
 
 double Clamp01(double x) { return std::clamp(x, 0.0, 1.0); }
 
+// UniHSI's rules (Eq. 7-8) and reward/error for a pair whose distance and direction agreement
+// are already in `e` (joint-to-part and part-to-part pairs alike)
+void ScoreByType(ContactType type, const PairParams& params, PairEval* e) {
+  const double decay = std::exp(-params.w_dk_per_m * e->distance_m);
+  switch (type) {
+    case ContactType::kContact:
+      e->satisfied =
+          e->distance_m < params.contact_threshold_m && e->direction_dot > params.direction_dot_min;
+      e->reward = Clamp01(params.w_dis * decay + params.w_dir * std::min(e->direction_dot, 0.0));
+      e->has_error = true;
+      e->error_m = e->distance_m;
+      break;
+    case ContactType::kNotContact:
+      e->satisfied = e->distance_m > params.contact_threshold_m;
+      e->reward = Clamp01(1.0 - decay);
+      e->has_error = true;
+      e->error_m = std::max(params.not_contact_error_m - e->distance_m, 0.0);
+      break;
+    case ContactType::kNotCare:
+      e->satisfied = true;
+      e->reward = 1.0;
+      break;
+  }
+}
+
 PairEval EvaluateGetClose(const ContactPair& pair, const core::CatalogObject& object,
                           const BodyPoints& body, const PairParams& params) {
   PairEval e;
@@ -98,26 +123,7 @@ PairEval EvaluateObjectPair(const ContactPair& pair, const core::SceneCatalog& s
   } else {
     e.direction_dot = std::clamp(rel.normalized().dot(d_hat), -1.0, 1.0);
   }
-  const double decay = std::exp(-params.w_dk_per_m * e.distance_m);
-  switch (pair.type) {
-    case ContactType::kContact:
-      e.satisfied =
-          e.distance_m < params.contact_threshold_m && e.direction_dot > params.direction_dot_min;
-      e.reward = Clamp01(params.w_dis * decay + params.w_dir * std::min(e.direction_dot, 0.0));
-      e.has_error = true;
-      e.error_m = e.distance_m;
-      break;
-    case ContactType::kNotContact:
-      e.satisfied = e.distance_m > params.contact_threshold_m;
-      e.reward = Clamp01(1.0 - decay);
-      e.has_error = true;
-      e.error_m = std::max(params.not_contact_error_m - e.distance_m, 0.0);
-      break;
-    case ContactType::kNotCare:
-      e.satisfied = true;
-      e.reward = 1.0;
-      break;
-  }
+  ScoreByType(pair.type, params, &e);
   return e;
 }
 
@@ -243,26 +249,7 @@ PairEval EvaluatePair(const ContactPair& pair, const core::SceneCatalog& scene,
     e.direction_dot = std::clamp((-e.d_vec / e.distance_m).dot(d_hat), -1.0, 1.0);
   }
 
-  const double decay = std::exp(-params.w_dk_per_m * e.distance_m);
-  switch (pair.type) {
-    case ContactType::kContact:
-      e.satisfied =
-          e.distance_m < params.contact_threshold_m && e.direction_dot > params.direction_dot_min;
-      e.reward = Clamp01(params.w_dis * decay + params.w_dir * std::min(e.direction_dot, 0.0));
-      e.has_error = true;
-      e.error_m = e.distance_m;
-      break;
-    case ContactType::kNotContact:
-      e.satisfied = e.distance_m > params.contact_threshold_m;
-      e.reward = Clamp01(1.0 - decay);
-      e.has_error = true;
-      e.error_m = std::max(params.not_contact_error_m - e.distance_m, 0.0);
-      break;
-    case ContactType::kNotCare:
-      e.satisfied = true;
-      e.reward = 1.0;
-      break;
-  }
+  ScoreByType(pair.type, params, &e);
   return e;
 }
 
