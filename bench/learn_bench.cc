@@ -63,8 +63,8 @@ double EnvStepsPerSecond(int envs, int threads, double seconds, control::Gaussia
   while (Since(t0) < seconds) {
     if (actor) {
       torch::NoGradGuard ng;
-      torch::Tensor o = torch::from_blob(const_cast<float*>(env.obs().data()),
-                                         {envs, control::kWalkObsDim});
+      torch::Tensor o =
+          torch::from_blob(const_cast<float*>(env.obs().data()), {envs, control::kWalkObsDim});
       torch::Tensor a = (*actor)->forward(norm->Normalize(o)).contiguous();
       std::copy(a.data_ptr<float>(), a.data_ptr<float>() + act.size(), act.begin());
     } else {

@@ -288,8 +288,8 @@ namespace {
 // `simhuman train` on the toy task: a run, its resume, and the errors a user can make
 TEST(CliIntegrationTest, TrainResumeAndCorruptCheckpoint) {
   std::string dir = TempDir("train_reach");
-  Proc p = RunBin({"train", "--task", "reach", "--steps", "8k", "--out", dir, "--envs", "16",
-                   "--quiet"});
+  Proc p = RunBin(
+      {"train", "--task", "reach", "--steps", "8k", "--out", dir, "--envs", "16", "--quiet"});
   ASSERT_EQ(p.exit_code, 0) << p.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/checkpoint.pt"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/log.jsonl"));

@@ -75,7 +75,8 @@ core::StatusOr<control::EpisodeResult> RunWithWalkPolicy(
     const std::vector<std::unique_ptr<control::MpcController>>& controllers,
     const std::string& walk_policy, const control::RunOptions& options,
     control::Trajectory* trajectory) {
-  if (walk_policy.empty()) return RunWithControllers(world, chain, controllers, options, trajectory);
+  if (walk_policy.empty())
+    return RunWithControllers(world, chain, controllers, options, trajectory);
   std::vector<std::unique_ptr<control::WalkPolicyController>> walkers;
   std::vector<std::unique_ptr<control::WalkThenContactController>> combined;
   std::vector<control::Controller*> raw;
@@ -83,8 +84,8 @@ core::StatusOr<control::EpisodeResult> RunWithWalkPolicy(
     SH_ASSIGN_OR_RETURN(std::unique_ptr<control::WalkPolicyController> w,
                         control::WalkPolicyController::Load(walk_policy, &world, a));
     walkers.push_back(std::move(w));
-    combined.push_back(std::make_unique<control::WalkThenContactController>(
-        walkers.back().get(), controllers[a].get()));
+    combined.push_back(std::make_unique<control::WalkThenContactController>(walkers.back().get(),
+                                                                            controllers[a].get()));
     raw.push_back(combined.back().get());
   }
   return control::RunEpisode(world, chain, raw, options, trajectory);

@@ -9,9 +9,9 @@
 
 namespace simhuman::eval {
 
-core::StatusOr<WalkEvalSummary> RunWalkEval(const WalkEvalOptions& options,
-                                            std::vector<WalkEpisode>* episodes,
-                                            const std::function<void(const WalkEpisode&)>& on_episode) {
+core::StatusOr<WalkEvalSummary> RunWalkEval(
+    const WalkEvalOptions& options, std::vector<WalkEpisode>* episodes,
+    const std::function<void(const WalkEpisode&)>& on_episode) {
   using control::kWalkPhysicsDt;
   using control::kWalkSubsteps;
   WalkEvalSummary sum;
@@ -24,7 +24,8 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(const WalkEvalOptions& options,
     mo.timestep_s = kWalkPhysicsDt;
     SH_ASSIGN_OR_RETURN(auto world, world::SimWorld::Create(core::SceneCatalog(), {start}, mo));
     world->mutable_model()->nstack = 150000;
-    SH_ASSIGN_OR_RETURN(auto walker, control::WalkPolicyController::Load(options.policy, world.get(), 0));
+    SH_ASSIGN_OR_RETURN(auto walker,
+                        control::WalkPolicyController::Load(options.policy, world.get(), 0));
     WalkEpisode ep;
     ep.index = i;
     ep.dist_m = rng.Uniform(options.min_dist_m, options.max_dist_m);
@@ -52,7 +53,8 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(const WalkEvalOptions& options,
       traj.step_index.push_back(0);
     };
     const int floor = mj_name2id(m, mjOBJ_GEOM, "floor");
-    int lf = mj_name2id(m, mjOBJ_GEOM, "left_foot_geom"), rf = mj_name2id(m, mjOBJ_GEOM, "right_foot_geom");
+    int lf = mj_name2id(m, mjOBJ_GEOM, "left_foot_geom"),
+        rf = mj_name2id(m, mjOBJ_GEOM, "right_foot_geom");
     for (int k = 0; k < steps; ++k) {
       if (k % kWalkSubsteps == 0) {
         if (render) record();

@@ -27,10 +27,10 @@ struct WalkEvalOptions {
 
 struct WalkEpisode {
   int index = 0;
-  double dist_m = 0;      ///< initial distance to the target
+  double dist_m = 0;  ///< initial distance to the target
   bool success = false;
   bool fell = false;
-  double time_s = 0;      ///< time to success (or the episode's length)
+  double time_s = 0;  ///< time to success (or the episode's length)
   double final_dist_m = 0, final_yaw_err_deg = 0;
   double foot_skate_mps = 0;
   double mean_speed_mps = 0;  ///< path length / time while walking

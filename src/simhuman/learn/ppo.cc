@@ -64,7 +64,8 @@ absl::Status PpoConfig::Validate() const {
     return absl::InvalidArgumentError("task '" + task + "' is unknown; valid: walk, reach");
   }
   if (total_steps <= 0) return absl::InvalidArgumentError("total_steps must be positive");
-  if (num_envs <= 0 || num_envs > 4096) return absl::InvalidArgumentError("num_envs must be in [1, 4096]");
+  if (num_envs <= 0 || num_envs > 4096)
+    return absl::InvalidArgumentError("num_envs must be in [1, 4096]");
   if (threads <= 0 || threads > 64 || torch_threads <= 0 || torch_threads > 64) {
     return absl::InvalidArgumentError("threads and torch_threads must be in [1, 64]");
   }
@@ -160,16 +161,16 @@ core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
 }
 
 nlohmann::json IterationStats::ToJson() const {
-  return nlohmann::json{{"iteration", iteration},       {"env_steps", env_steps},
-                        {"wall_s", wall_s},             {"return", mean_return},
-                        {"ep_length", mean_length},     {"success", success_rate},
-                        {"fall", fall_rate},            {"episodes", episodes},
-                        {"policy_loss", policy_loss},   {"value_loss", value_loss},
-                        {"entropy", entropy},           {"approx_kl", approx_kl},
-                        {"clip_frac", clip_frac},       {"lr", lr},
-                        {"action_std", action_std},     {"curriculum", curriculum},
-                        {"steps_per_s", steps_per_s},   {"collect_s", collect_s},
-                        {"update_s", update_s},         {"skipped", skipped_minibatches}};
+  return nlohmann::json{{"iteration", iteration},     {"env_steps", env_steps},
+                        {"wall_s", wall_s},           {"return", mean_return},
+                        {"ep_length", mean_length},   {"success", success_rate},
+                        {"fall", fall_rate},          {"episodes", episodes},
+                        {"policy_loss", policy_loss}, {"value_loss", value_loss},
+                        {"entropy", entropy},         {"approx_kl", approx_kl},
+                        {"clip_frac", clip_frac},     {"lr", lr},
+                        {"action_std", action_std},   {"curriculum", curriculum},
+                        {"steps_per_s", steps_per_s}, {"collect_s", collect_s},
+                        {"update_s", update_s},       {"skipped", skipped_minibatches}};
 }
 
 struct PpoTrainer::Impl {
@@ -187,7 +188,7 @@ struct PpoTrainer::Impl {
   int bad_in_row = 0;
   std::deque<EpisodeStats> window;
   int curr_count = 0, curr_success = 0;  // episodes since the last curriculum check
-  int64_t curr_steps = 0;                 // env steps at the current level
+  int64_t curr_steps = 0;                // env steps at the current level
   Clock::time_point last_ckpt = Clock::now();
 
   std::vector<torch::Tensor> Params() {
@@ -281,7 +282,8 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::CreateWithTask(
   SH_RETURN_IF_ERROR(config.Validate());
   std::error_code ec;
   if (fs::exists(fs::path(out_dir) / kCheckpointName, ec)) {
-    return absl::AlreadyExistsError(out_dir + " already holds a checkpoint; continue it with "
+    return absl::AlreadyExistsError(out_dir +
+                                    " already holds a checkpoint; continue it with "
                                     "--resume or choose another --out");
   }
   fs::create_directories(out_dir, ec);
@@ -319,7 +321,8 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
     if (!cfg.ok()) return core::Annotate(cfg.status(), path + ": config");
     impl->cfg = *cfg;
     if (total_steps > 0) impl->cfg.total_steps = total_steps;
-    SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task, MakeTask(impl->cfg.task, impl->cfg.num_envs));
+    SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task,
+                        MakeTask(impl->cfg.task, impl->cfg.num_envs));
     impl->env = std::make_unique<VecEnv>(std::move(task), impl->cfg.threads, impl->cfg.seed);
     impl->Build();
     auto meta = control::ReadPolicyMeta(ar);
@@ -423,7 +426,8 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
       b_val[t] = m.critic->forward(obs).squeeze(-1);
       act = act.contiguous();
       m.env->Step(act.data_ptr<float>());
-      torch::Tensor rew = torch::from_blob(const_cast<float*>(m.env->rewards().data()), {E}).clone();
+      torch::Tensor rew =
+          torch::from_blob(const_cast<float*>(m.env->rewards().data()), {E}).clone();
       torch::Tensor done = torch::zeros({E});
       std::vector<int64_t> trunc;
       for (int i = 0; i < E; ++i) {
@@ -432,9 +436,11 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
       }
       // time limits: bootstrap with the value of the last observation
       if (!trunc.empty()) {
-        torch::Tensor term = torch::from_blob(const_cast<float*>(m.env->terminal_obs().data()), {E, D});
+        torch::Tensor term =
+            torch::from_blob(const_cast<float*>(m.env->terminal_obs().data()), {E, D});
         torch::Tensor idx = torch::tensor(trunc, torch::kInt64);
-        torch::Tensor v = m.critic->forward(m.norm.Normalize(term.index_select(0, idx))).squeeze(-1);
+        torch::Tensor v =
+            m.critic->forward(m.norm.Normalize(term.index_select(0, idx))).squeeze(-1);
         rew.index_add_(0, idx, gamma * v);
       }
       b_rew[t] = rew;
@@ -511,7 +517,8 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
       torch::Tensor log_std = m.actor->log_std();
       torch::Tensor logp = LogProb(a, mean, log_std);
       torch::Tensor ratio = torch::exp(logp - olp);
-      torch::Tensor pg = -torch::min(ratio * ad, torch::clamp(ratio, 1 - m.cfg.clip, 1 + m.cfg.clip) * ad).mean();
+      torch::Tensor pg =
+          -torch::min(ratio * ad, torch::clamp(ratio, 1 - m.cfg.clip, 1 + m.cfg.clip) * ad).mean();
       torch::Tensor v = m.critic->forward(o).squeeze(-1);
       torch::Tensor vc = ov + torch::clamp(v - ov, -m.cfg.value_clip, m.cfg.value_clip);
       torch::Tensor vloss = 0.5 * torch::max((v - r).pow(2), (vc - r).pow(2)).mean();
@@ -542,7 +549,8 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   }
   // NaN guard: a non-finite rollout or weights -> restore and count; abort after several
   bool params_finite = true;
-  for (const auto& p : params) params_finite = params_finite && torch::isfinite(p).all().item<bool>();
+  for (const auto& p : params)
+    params_finite = params_finite && torch::isfinite(p).all().item<bool>();
   if (!rollout_finite || !params_finite || skipped > 0) {
     if (!params_finite) {
       torch::NoGradGuard ng;
@@ -594,7 +602,8 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   st.update_s = update;
   st.steps_per_s = static_cast<double>(N) / std::max(1e-9, collect + update);
   st.skipped_minibatches = skipped;
-  if (std::chrono::duration<double>(Clock::now() - m.last_ckpt).count() >= m.cfg.checkpoint_every_s ||
+  if (std::chrono::duration<double>(Clock::now() - m.last_ckpt).count() >=
+          m.cfg.checkpoint_every_s ||
       done()) {
     SH_RETURN_IF_ERROR(Checkpoint());
     st.checkpointed = true;

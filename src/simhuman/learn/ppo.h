@@ -78,8 +78,9 @@ class PpoTrainer {
   static core::StatusOr<std::unique_ptr<PpoTrainer>> Create(const PpoConfig& config,
                                                             const std::string& out_dir);
   /// As Create, with a caller-made task (tests; config.task only names it in files).
-  static core::StatusOr<std::unique_ptr<PpoTrainer>> CreateWithTask(
-      const PpoConfig& config, const std::string& out_dir, std::unique_ptr<VecTask> task);
+  static core::StatusOr<std::unique_ptr<PpoTrainer>> CreateWithTask(const PpoConfig& config,
+                                                                    const std::string& out_dir,
+                                                                    std::unique_ptr<VecTask> task);
   /// Continues the run in `out_dir` from its checkpoint. A missing checkpoint is NotFound and a
   /// corrupt one DataLoss (never a silent restart). `total_steps` > 0 overrides the target.
   static core::StatusOr<std::unique_ptr<PpoTrainer>> Resume(const std::string& out_dir,

@@ -10,7 +10,7 @@ using control::kWalkActDim;
 
 constexpr double kDeg = M_PI / 180.0;
 constexpr double kSuccessRadius = 0.2, kSuccessYaw = 15 * kDeg, kStoppedSpeed = 0.2;
-constexpr int kSuccessHold = 15;   // policy steps (0.5 s)
+constexpr int kSuccessHold = 15;     // policy steps (0.5 s)
 constexpr int kNextTargetHold = 45;  // 1.5 s, then a new target
 constexpr int kFirstLegJoint = 14;
 
@@ -23,7 +23,8 @@ core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs) {
   std::unique_ptr<WalkTask> t(new WalkTask());
   world::ModelOptions opt;
   opt.timestep_s = control::kWalkPhysicsDt;
-  SH_ASSIGN_OR_RETURN(t->world_, world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, opt));
+  SH_ASSIGN_OR_RETURN(
+      t->world_, world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, opt));
   SH_ASSIGN_OR_RETURN(t->ix_, control::MakeWalkIndex(*t->world_, 0));
   // one human on a floor: small arenas keep E copies of mjData cheap to allocate and reset
   mjModel* m = t->world_->mutable_model();
@@ -49,8 +50,8 @@ void WalkTask::DrawTarget(Env& e) {
   double yaw;
   control::PelvisPose(e.d, ix_, &pos, &yaw);
   double a = (45.0 + 135.0 * std::clamp(curriculum_, 0.0, 1.0)) * kDeg;
-  double dist = e.rng.Uniform() < 0.1 ? e.rng.Uniform(0.0, 0.3)
-                                      : 0.3 + 9.7 * std::pow(e.rng.Uniform(), 1.5);
+  double dist =
+      e.rng.Uniform() < 0.1 ? e.rng.Uniform(0.0, 0.3) : 0.3 + 9.7 * std::pow(e.rng.Uniform(), 1.5);
   double bearing = yaw + e.rng.Uniform(-a, a);
   e.s.target_xy = pos.head<2>() + dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
   e.s.target_yaw_rad = Wrap(bearing + e.rng.Uniform(-a, a));
@@ -154,14 +155,14 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   double vx = c * v[0] + s * v[1], vy = -s * v[0] + c * v[1];
   const mjtNum* R = d->xmat + 9 * a.pelvis_body;
   double wz = R[6] * v[3] + R[7] * v[4] + R[8] * v[5];
-  t.velocity = std::exp(-((vx - e.s.cmd.vx) * (vx - e.s.cmd.vx) +
-                          (vy - e.s.cmd.vy) * (vy - e.s.cmd.vy)) / 0.25);
+  t.velocity = std::exp(
+      -((vx - e.s.cmd.vx) * (vx - e.s.cmd.vx) + (vy - e.s.cmd.vy) * (vy - e.s.cmd.vy)) / 0.25);
   t.yaw_rate = std::exp(-(wz - e.s.cmd.yaw_rate) * (wz - e.s.cmd.yaw_rate) / 0.5);
   // progress along the commanded direction (a gradient where velocity tracking has none)
   double cmd_speed = std::hypot(e.s.cmd.vx, e.s.cmd.vy);
-  t.progress = cmd_speed > 0.05 ? std::clamp((vx * e.s.cmd.vx + vy * e.s.cmd.vy) / cmd_speed,
-                                             -0.5, cmd_speed)
-                                : 0.0;
+  t.progress = cmd_speed > 0.05
+                   ? std::clamp((vx * e.s.cmd.vx + vy * e.s.cmd.vy) / cmd_speed, -0.5, cmd_speed)
+                   : 0.0;
   t.facing = 0.5 * (1.0 + std::cos(e.s.facing_rad - yaw));
   double ref[kWalkActDim];
   control::WalkReference(params_, e.s.phase, e.s.amplitude, e.s.cmd, ref);
@@ -206,12 +207,12 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   }
   t.action_rate = rate / kWalkActDim;
   t.power = power;
-  t.total = w_.scale * (w_.velocity * t.velocity + w_.progress * t.progress +
-                        w_.yaw_rate * t.yaw_rate + w_.facing * t.facing +
-                        w_.gait_legs * t.gait_legs + w_.gait_upper * t.gait_upper +
-                        w_.contact * t.contact + w_.upright * t.upright + w_.height * t.height +
-                        w_.alive + w_.at_target * t.at_target - w_.action_rate * t.action_rate -
-                        w_.power * t.power - w_.foot_slip * t.foot_slip);
+  t.total =
+      w_.scale * (w_.velocity * t.velocity + w_.progress * t.progress + w_.yaw_rate * t.yaw_rate +
+                  w_.facing * t.facing + w_.gait_legs * t.gait_legs + w_.gait_upper * t.gait_upper +
+                  w_.contact * t.contact + w_.upright * t.upright + w_.height * t.height +
+                  w_.alive + w_.at_target * t.at_target - w_.action_rate * t.action_rate -
+                  w_.power * t.power - w_.foot_slip * t.foot_slip);
 
   // success: inside the tolerances and stopped for 0.5 s; a new target after 1.5 s
   if (inside && speed2 < kStoppedSpeed * kStoppedSpeed) {

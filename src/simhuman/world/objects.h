@@ -85,10 +85,10 @@ ObjectSpec RandomObjectSpec(std::string_view type, core::Rng& rng);
 
 /// Builds the object: parts (canonical names plus UniHSI/PartNet style aliases) and every solid
 /// (parts and unnamed legs and frames) in `shapes`, pose from pos and yaw_rad. Only boxes,
-/// cylinders and spheres, and objects given a mass_kg, are movable. Errors (InvalidArgument) name the object id and the
-/// culprit: an unknown type (listing valid types), an unknown size key (listing the type's
-/// keys), a non-finite or out-of-range size, scale, position, yaw or mass, an unknown colour.
-/// Thread-safe.
+/// cylinders and spheres, and objects given a mass_kg, are movable. Errors (InvalidArgument) name
+/// the object id and the culprit: an unknown type (listing valid types), an unknown size key
+/// (listing the type's keys), a non-finite or out-of-range size, scale, position, yaw or mass, an
+/// unknown colour. Thread-safe.
 core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec);
 
 /// The palette: red, green, blue, yellow, white, black, brown, grey, orange, purple.

@@ -28,12 +28,11 @@ core::StatusOr<std::unique_ptr<WalkPolicyController>> WalkPolicyController::Load
   SH_ASSIGN_OR_RETURN(impl->policy, LoadPolicyFile(path));
   const PolicyMeta& meta = impl->policy.meta;
   if (meta.task != "walk" || meta.obs_dim != kWalkObsDim || meta.act_dim != kWalkActDim) {
-    return absl::InvalidArgumentError(path + ": a '" + meta.task + "' policy with " +
-                                      std::to_string(meta.obs_dim) + " observations and " +
-                                      std::to_string(meta.act_dim) +
-                                      " actions; the walking skill needs task 'walk' with " +
-                                      std::to_string(kWalkObsDim) + " and " +
-                                      std::to_string(kWalkActDim));
+    return absl::InvalidArgumentError(
+        path + ": a '" + meta.task + "' policy with " + std::to_string(meta.obs_dim) +
+        " observations and " + std::to_string(meta.act_dim) +
+        " actions; the walking skill needs task 'walk' with " + std::to_string(kWalkObsDim) +
+        " and " + std::to_string(kWalkActDim));
   }
   impl->world = world;
   SH_ASSIGN_OR_RETURN(impl->ix, MakeWalkIndex(*world, agent));

@@ -93,7 +93,8 @@ class FakeContact : public Controller {
 
 TEST(WalkThenContactController, WalksGetCloseStepsAndHandsOverOnlyWhenStopped) {
   auto world = World();
-  auto walker = WalkPolicyController::Load(WritePolicy("hand", "walk", kWalkObsDim), world.get(), 0);
+  auto walker =
+      WalkPolicyController::Load(WritePolicy("hand", "walk", kWalkObsDim), world.get(), 0);
   ASSERT_TRUE(walker.ok());
   FakeContact mpc;
   WalkThenContactController c(walker->get(), &mpc);

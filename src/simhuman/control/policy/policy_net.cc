@@ -26,8 +26,8 @@ torch::nn::Sequential MakeMlp(int in, const std::vector<int>& hidden, int out, d
 GaussianActorImpl::GaussianActorImpl(int obs_dim, int act_dim, const std::vector<int>& hidden,
                                      double init_std) {
   net_ = register_module("net", MakeMlp(obs_dim, hidden, act_dim, 0.01));
-  log_std_ = register_parameter("log_std",
-                                torch::full({act_dim}, std::log(init_std), torch::kFloat32));
+  log_std_ =
+      register_parameter("log_std", torch::full({act_dim}, std::log(init_std), torch::kFloat32));
 }
 
 torch::Tensor GaussianActorImpl::forward(const torch::Tensor& obs) { return net_->forward(obs); }
@@ -81,8 +81,8 @@ absl::Status ObsNormalizer::Load(torch::serialize::InputArchive& ar, int dim) {
     return absl::DataLossError("observation normalizer keys missing");
   }
   if (m.dim() != 1 || m.size(0) != dim || v.sizes() != m.sizes()) {
-    return absl::DataLossError("observation normalizer has dimension " +
-                               std::to_string(m.numel()) + ", expected " + std::to_string(dim));
+    return absl::DataLossError("observation normalizer has dimension " + std::to_string(m.numel()) +
+                               ", expected " + std::to_string(dim));
   }
   if (!torch::isfinite(m).all().item<bool>() || !torch::isfinite(v).all().item<bool>() ||
       (v < 0).any().item<bool>()) {
@@ -154,8 +154,8 @@ core::StatusOr<LoadedPolicy> LoadPolicyFile(const std::string& path) {
     SH_RETURN_IF_ERROR(core::Annotate(p.norm.Load(ar, meta->obs_dim), path));
     return p;
   } catch (const c10::Error& e) {
-    return absl::DataLossError(path + ": corrupt or unreadable policy file: " +
-                               std::string(e.what_without_backtrace()));
+    return absl::DataLossError(
+        path + ": corrupt or unreadable policy file: " + std::string(e.what_without_backtrace()));
   } catch (const std::exception& e) {
     return absl::DataLossError(path + ": corrupt or unreadable policy file: " + e.what());
   }

@@ -8,10 +8,34 @@ namespace {
 
 // actuator (hinge) order of world::HumanoidJointNames()
 enum J {
-  kAbdX, kAbdY, kAbdZ, kNeckX, kNeckY, kNeckZ,
-  kRShX, kRShY, kRShZ, kRElbow, kLShX, kLShY, kLShZ, kLElbow,
-  kRHipX, kRHipY, kRHipZ, kRKnee, kRAnkX, kRAnkY, kRAnkZ,
-  kLHipX, kLHipY, kLHipZ, kLKnee, kLAnkX, kLAnkY, kLAnkZ
+  kAbdX,
+  kAbdY,
+  kAbdZ,
+  kNeckX,
+  kNeckY,
+  kNeckZ,
+  kRShX,
+  kRShY,
+  kRShZ,
+  kRElbow,
+  kLShX,
+  kLShY,
+  kLShZ,
+  kLElbow,
+  kRHipX,
+  kRHipY,
+  kRHipZ,
+  kRKnee,
+  kRAnkX,
+  kRAnkY,
+  kRAnkZ,
+  kLHipX,
+  kLHipY,
+  kLHipZ,
+  kLKnee,
+  kLAnkX,
+  kLAnkY,
+  kLAnkZ
 };
 
 double Wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
@@ -176,8 +200,8 @@ void FootContacts(const mjData* d, const WalkIndex& ix, bool* left, bool* right)
   }
 }
 
-void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix,
-                     const WalkState& s, float* obs) {
+void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, const WalkState& s,
+                     float* obs) {
   (void)p;
   Eigen::Vector3d pos;
   double yaw;
@@ -233,8 +257,8 @@ void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix,
   }
 }
 
-void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s,
-                 const float* action, double* ctrl28) {
+void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s, const float* action,
+                 double* ctrl28) {
   WalkReference(p, s.phase, s.amplitude, s.cmd, ctrl28);
   for (int j = 0; j < kWalkActDim; ++j) {
     double a = Clamp(static_cast<double>(action[j]), -kWalkActionClip, kWalkActionClip);

@@ -30,14 +30,14 @@ inline constexpr double kWalkActionClip = 3.0;   ///< actions are clipped to +-t
 
 /// Gait and command parameters (defaults are what the shipped policy was trained with).
 struct WalkParams {
-  double vmax_mps = 1.0;          ///< commanded speed far from the target
-  double gait_period_s = 0.9;     ///< one full left+right cycle
-  double swing_frac = 0.42;       ///< fraction of the cycle a foot is in the air (~0.38 s)
-  double start_radius_m = 0.25;   ///< start stepping when farther than this from the target
-  double stop_radius_m = 0.12;    ///< stop stepping when closer than this ...
-  double start_yaw_rad = 0.35;    ///< ... or when the heading error exceeds this (start)
-  double stop_yaw_rad = 0.14;     ///< ... and is below this (stop)
-  double max_yaw_rate = 1.5;      ///< rad/s
+  double vmax_mps = 1.0;         ///< commanded speed far from the target
+  double gait_period_s = 0.9;    ///< one full left+right cycle
+  double swing_frac = 0.42;      ///< fraction of the cycle a foot is in the air (~0.38 s)
+  double start_radius_m = 0.25;  ///< start stepping when farther than this from the target
+  double stop_radius_m = 0.12;   ///< stop stepping when closer than this ...
+  double start_yaw_rad = 0.35;   ///< ... or when the heading error exceeds this (start)
+  double stop_yaw_rad = 0.14;    ///< ... and is below this (stop)
+  double max_yaw_rate = 1.5;     ///< rad/s
 };
 
 /// The command derived from the target each policy step (heading frame).
@@ -50,9 +50,9 @@ struct WalkCommand {
 struct WalkState {
   Eigen::Vector2d target_xy = Eigen::Vector2d::Zero();  ///< world frame, m
   double target_yaw_rad = 0;                            ///< heading to stop with
-  double phase = 0;        ///< gait clock in [0, 1)
-  double amplitude = 0;    ///< smoothed stepping amplitude in [0, 1]
-  bool stepping = false;   ///< hysteresis state: walking or standing
+  double phase = 0;                                     ///< gait clock in [0, 1)
+  double amplitude = 0;                                 ///< smoothed stepping amplitude in [0, 1]
+  bool stepping = false;                                ///< hysteresis state: walking or standing
   WalkCommand cmd;
   double facing_rad = 0;  ///< heading the command turns toward (bearing far, target yaw near)
   std::array<float, kWalkActDim> prev_action{};
@@ -96,12 +96,12 @@ void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix
 void FootContacts(const mjData* d, const WalkIndex& ix, bool* left, bool* right);
 
 /// Writes kWalkObsDim floats (raw, unnormalized) to `obs`.
-void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix,
-                     const WalkState& s, float* obs);
+void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, const WalkState& s,
+                     float* obs);
 
 /// PD targets from a raw action: reference gait + kWalkActionScale * clip(action), clipped
 /// to the actuator ranges.
-void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s,
-                 const float* action, double* ctrl28);
+void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s, const float* action,
+                 double* ctrl28);
 
 }  // namespace simhuman::control
