@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -140,7 +141,7 @@ TEST(JsonIoTest, MissingFileAndStrictKeys) {
 }
 
 TEST(JsonIoTest, AtomicWriteReplacesTheFile) {
-  std::string path = ::testing::TempDir() + "/simhuman_atomic.txt";
+  std::string path = ::testing::TempDir() + std::to_string(getpid()) + "_simhuman_atomic.txt";
   ASSERT_TRUE(WriteFileAtomic(path, "one").ok());
   ASSERT_TRUE(WriteFileAtomic(path, "two").ok());
   auto r = ReadFile(path);

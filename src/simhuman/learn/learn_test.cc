@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
@@ -18,7 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string TempDir(const std::string& name) {
-  fs::path p = fs::temp_directory_path() / ("simhuman_learn_test_" + name);
+  fs::path p =
+      fs::temp_directory_path() / ("simhuman_learn_test_" + std::to_string(getpid()) + "_" + name);
   fs::remove_all(p);
   return p.string();
 }

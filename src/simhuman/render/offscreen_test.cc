@@ -1,6 +1,7 @@
 #include "simhuman/render/offscreen.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <memory>
 #include <string>
@@ -167,7 +168,9 @@ TEST_F(OffscreenTest, CaptionChangesTopRowsOnly) {
   EXPECT_GT(changed_top_band, 20);
   EXPECT_EQ(changed_below, 0);
   if (HasFailure()) {
-    ASSERT_TRUE(WritePng("/tmp/caption_test.png", captioned, 160, 120).ok());
+    ASSERT_TRUE(WritePng(::testing::TempDir() + "caption_test_" + std::to_string(getpid()) + ".png",
+                         captioned, 160, 120)
+                    .ok());
   }
 }
 

@@ -3,6 +3,7 @@
 /// blue ball on +x) loaded from a temporary file.
 
 #include <mujoco/mujoco.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -35,7 +36,8 @@ inline constexpr char kTestSceneXml[] = R"(
 
 /// Loads kTestSceneXml from a file in `dir`; nullptr (and the reason in *error) on failure.
 inline mjModel* LoadTestScene(const std::string& dir, std::string* error) {
-  const std::string path = dir + "/simhuman_render_test_scene.xml";
+  // the pid keeps tests that run at the same time (ctest -j) off each other's file
+  const std::string path = dir + "/simhuman_render_test_scene_" + std::to_string(getpid()) + ".xml";
   {
     std::ofstream out(path);
     out << kTestSceneXml;

@@ -1,6 +1,7 @@
 #include "simhuman/control/policy/policy_controller.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,7 +14,9 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string WritePolicy(const std::string& name, const std::string& task, int obs_dim) {
-  std::string path = (fs::temp_directory_path() / ("simhuman_policy_test_" + name)).string();
+  std::string path = (fs::temp_directory_path() /
+                      ("simhuman_policy_test_" + std::to_string(getpid()) + "_" + name))
+                         .string();
   torch::manual_seed(1);
   GaussianActor actor(obs_dim, kWalkActDim, std::vector<int>{16, 16}, 0.5);
   ObsNormalizer norm(obs_dim);
@@ -66,7 +69,9 @@ TEST(WalkPolicyController, WrongTaskMissingAndCorruptFilesAreErrors) {
   EXPECT_NE(reach.status().message().find("reach"), std::string::npos);
   auto missing = WalkPolicyController::Load("/nonexistent/walk.pt", world.get(), 0);
   EXPECT_EQ(missing.status().code(), absl::StatusCode::kNotFound);
-  std::string bad = (fs::temp_directory_path() / "simhuman_policy_test_malformed.pt").string();
+  std::string bad = (fs::temp_directory_path() /
+                     ("simhuman_policy_test_malformed_" + std::to_string(getpid()) + ".pt"))
+                        .string();
   std::ofstream(bad) << "not a torch archive";
   auto corrupt = WalkPolicyController::Load(bad, world.get(), 0);
   EXPECT_EQ(corrupt.status().code(), absl::StatusCode::kDataLoss);
