@@ -52,6 +52,11 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
     if (step != task_step) {
       for (int a = 0; a < n_agents; ++a) {
         tasks[a] = BuildStepTask(chain.steps[step], catalog, a, world.agent(a).scale, options.pair);
+        if (tasks[a].get_close && step + 1 < res.steps_total) {
+          StepTask next =
+              BuildStepTask(chain.steps[step + 1], catalog, a, world.agent(a).scale, options.pair);
+          RefineApproach(next, world.agent(a).scale, &tasks[a]);
+        }
       }
       task_step = step;
     }

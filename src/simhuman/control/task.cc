@@ -69,6 +69,8 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
       task.side = pair.direction;
       task.stand_point = plan::StandPoint(*obj, pair.direction, params.stand_off_m);
       task.stand_yaw_rad = plan::StandFacingYaw(*obj, pair.direction);
+      task.walk_point = task.stand_point;
+      task.walk_yaw_rad = task.stand_yaw_rad;
       continue;
     }
     if (pair.type == plan::ContactType::kNotCare) continue;
@@ -121,6 +123,35 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
   }
   (void)any_contact;
   return task;
+}
+
+void RefineApproach(const StepTask& next, double scale, StepTask* gc) {
+  if (!gc->get_close || gc->focus == nullptr || next.focus != gc->focus) return;
+  if (gc->side != plan::Direction::kFront) return;
+  const core::CatalogObject& obj = *gc->focus;
+  const auto [lo, hi] = obj.LocalBounds();
+  Eigen::Vector3d local(hi.x() + scale * kSitStartM, 0.5 * (lo.y() + hi.y()), 0.0);
+  if (next.posture == Posture::kSit) {
+    // in front of the middle of the seat surface
+    if (const core::CatalogPart* seat = obj.FindPart("seat surface")) {
+      auto [slo, shi] = core::ShapesBounds(seat->shapes);
+      local.y() = 0.5 * (slo.y() + shi.y());
+    }
+  } else if (next.posture == Posture::kLieBack || next.posture == Posture::kLieSide) {
+    const core::CatalogPart* pillow = obj.FindPart("pillow");
+    const core::CatalogPart* mattress = obj.FindPart("mattress");
+    if (pillow == nullptr || mattress == nullptr) return;
+    auto [plo, phi] = core::ShapesBounds(pillow->shapes);
+    auto [mlo, mhi] = core::ShapesBounds(mattress->shapes);
+    double py = 0.5 * (plo.y() + phi.y()), my = 0.5 * (mlo.y() + mhi.y());
+    local.y() = py + (py > my ? -1.0 : 1.0) * scale * kLieStartFromPillowM;
+  } else {
+    return;
+  }
+  Eigen::Vector3d world = obj.pose.Apply(local);
+  world.z() = 0.0;
+  gc->walk_point = world;
+  gc->walk_yaw_rad = std::remainder(gc->stand_yaw_rad + M_PI, 2.0 * M_PI);
 }
 
 }  // namespace simhuman::control

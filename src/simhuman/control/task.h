@@ -47,9 +47,23 @@ struct StepTask {
   const core::CatalogObject* focus = nullptr;  ///< main object of the step (may be null)
   Eigen::Vector3d stand_point = Eigen::Vector3d::Zero();  ///< for get-close steps
   double stand_yaw_rad = 0;
+  /// Where a walking skill stops for a get-close step, and its heading there: the stand point
+  /// facing the object, unless RefineApproach() turned it for the next step.
+  Eigen::Vector3d walk_point = Eigen::Vector3d::Zero();
+  double walk_yaw_rad = 0;
   plan::Direction side = plan::Direction::kFront;
   std::string label;
 };
+
+/// Adapts a get-close step's walk point to the step after it: when `next` sits or lies on the
+/// object the walker is approaching, stop with the back to it where sitting down starts (a
+/// seat: `kSitStartM` in front of its front face; a bed: beside the pillow end, where sitting
+/// down and lying back puts the head on the pillow), so the contact controller does not have
+/// to turn round. Both points stay within the get-close radius of the stand point, so the
+/// plan's get-close test (position only by default) is unchanged. No-op otherwise.
+void RefineApproach(const StepTask& next, double scale, StepTask* get_close);
+inline constexpr double kSitStartM = 0.36;
+inline constexpr double kLieStartFromPillowM = 0.65;
 
 /// Centre-to-surface distance of each body point when it touches something (m, scale 1).
 double BodyPointClearance(core::BodyJoint joint);

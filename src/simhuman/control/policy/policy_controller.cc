@@ -17,7 +17,51 @@ struct WalkPolicyController::Impl {
   bool has_target = false;
   std::array<double, kWalkActDim> ctrl{};
   bool started = false;
+  // navigation: the route to the current stand point and where it leads
+  bool navigate = true;
+  NavConfig nav;
+  RouteFollower follower;
+  Eigen::Vector2d route_goal = Eigen::Vector2d::Constant(1e9);
+  std::string route_error;
+
+  // the target the policy steers to this step: the stand point, or the carrot on the route
+  void SteerTo(const Observation& obs);
 };
+
+void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
+  const Eigen::Vector2d goal = obs.task->walk_point.head<2>();
+  const double goal_yaw = obs.task->walk_yaw_rad;
+  state.target_xy = goal;
+  state.target_yaw_rad = goal_yaw;
+  has_target = true;
+  if (!navigate) return;
+  const mjtNum* pelvis = obs.data->xpos + 3 * ix.agent.pelvis_body;
+  const Eigen::Vector2d here(pelvis[0], pelvis[1]);
+  bool replan = follower.empty() || (goal - route_goal).norm() > 0.05;
+  RouteFollower::Carrot carrot;
+  if (!replan) {
+    carrot = follower.Update(here);
+    // pushed off the route (or it was never followable): plan again from here
+    replan = carrot.off_route_m > kReplanOffRouteM;
+  }
+  if (replan) {
+    auto path = PlanRoute(obs.world->catalog(), here, goal, nav);
+    route_goal = goal;
+    if (!path.ok()) {
+      // no route (e.g. a huge scene): steer straight at the stand point, as without navigation
+      route_error = std::string(path.status().message());
+      follower = RouteFollower();
+      return;
+    }
+    route_error.clear();
+    follower = RouteFollower(*std::move(path), kRouteLookaheadM);
+    carrot = follower.Update(here);
+  }
+  if (!carrot.final) {
+    state.target_xy = carrot.point;
+    state.target_yaw_rad = carrot.heading_rad;
+  }
+}
 
 WalkPolicyController::WalkPolicyController(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 WalkPolicyController::~WalkPolicyController() = default;
@@ -54,17 +98,21 @@ void WalkPolicyController::Restart() {
   impl_->state.target_xy = t;
   impl_->state.target_yaw_rad = yaw;
   impl_->started = false;
+  impl_->follower = RouteFollower();
+  impl_->route_goal = Eigen::Vector2d::Constant(1e9);
+}
+
+void WalkPolicyController::set_navigation(bool on) { impl_->navigate = on; }
+
+const NavPath* WalkPolicyController::route() const {
+  return impl_->follower.empty() ? nullptr : &impl_->follower.path();
 }
 
 const WalkState& WalkPolicyController::state() const { return impl_->state; }
 
 absl::Status WalkPolicyController::Act(const Observation& obs) {
   Impl& m = *impl_;
-  if (!m.fixed_target && obs.task && obs.task->get_close) {
-    m.state.target_xy = obs.task->stand_point.head<2>();
-    m.state.target_yaw_rad = obs.task->stand_yaw_rad;
-    m.has_target = true;
-  }
+  if (!m.fixed_target && obs.task && obs.task->get_close) m.SteerTo(obs);
   if (!m.has_target) {
     return absl::FailedPreconditionError("walk policy: step " + std::to_string(obs.step_index) +
                                          " is not a get-close step and no target was set");

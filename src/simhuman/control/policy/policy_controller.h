@@ -10,6 +10,7 @@
 #include <string>
 
 #include "simhuman/control/controller.h"
+#include "simhuman/control/navigation.h"
 #include "simhuman/control/policy/walk_task.h"
 
 namespace simhuman::control {
@@ -44,8 +45,17 @@ class WalkPolicyController : public Controller {
   /// True when the agent stands within `tol` of the target, stopped and no longer stepping.
   bool Arrived(const mjData* d, const WalkTolerance& tol = {}) const;
   const WalkState& state() const;
-  /// Forgets the gait state (call when taking over from another controller).
+  /// Forgets the gait state and the route (call when taking over from another controller).
   void Restart();
+  /// With navigation on (the default), a get-close step is walked along an obstacle-avoiding
+  /// route over the scene catalog (control/navigation.h): the policy steers to a point
+  /// kRouteLookaheadM ahead on the route and to the stand point itself for the last stretch.
+  /// Off: straight at the stand point.
+  void set_navigation(bool on);
+  /// The route being followed (nullptr when none).
+  const NavPath* route() const;
+  static constexpr double kRouteLookaheadM = 1.2;
+  static constexpr double kReplanOffRouteM = 0.8;
 
   struct Impl;
 

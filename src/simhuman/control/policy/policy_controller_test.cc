@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "simhuman/control/policy/policy_net.h"
+#include "simhuman/world/objects.h"
 
 namespace simhuman::control {
 namespace {
@@ -50,6 +51,45 @@ TEST(WalkPolicyController, ActsWithFiniteTargetsAtItsOwnRate) {
   for (double v : ctrl) EXPECT_TRUE(std::isfinite(v));
   // standing on the target facing its heading, nearly untrained: not stepping
   EXPECT_FALSE((*c)->state().stepping);
+}
+
+TEST(WalkPolicyController, WalksAroundATableOnTheWayToTheStandPoint) {
+  world::ObjectSpec spec;
+  spec.id = "table000";
+  spec.type = "table";
+  spec.pos = Eigen::Vector3d(1.6, 0, 0);
+  auto table = world::BuildObject(spec);
+  ASSERT_TRUE(table.ok()) << table.status();
+  core::SceneCatalog scene;
+  scene.objects.push_back(*table);
+  world::ModelOptions o;
+  o.timestep_s = kWalkPhysicsDt;
+  auto world = world::SimWorld::Create(scene, {world::AgentPlacement()}, o);
+  ASSERT_TRUE(world.ok()) << world.status();
+  auto c = WalkPolicyController::Load(WritePolicy("route", "walk", kWalkObsDim), world->get(), 0);
+  ASSERT_TRUE(c.ok()) << c.status();
+  StepTask task;
+  task.get_close = true;
+  task.walk_point = Eigen::Vector3d(3.4, 0, 0);
+  Observation obs;
+  obs.world = world->get();
+  obs.data = (*world)->data();
+  obs.task = &task;
+  ASSERT_TRUE((*c)->Act(obs).ok());
+  const NavPath* route = (*c)->route();
+  ASSERT_NE(route, nullptr);
+  EXPECT_GT(route->points.size(), 2u);
+  EXPECT_EQ(route->blocked_m, 0);
+  // the policy steers to a point on the route 1.2 m ahead, beside the table, not through it
+  const Eigen::Vector2d carrot = (*c)->state().target_xy;
+  EXPECT_GT(std::abs(carrot.y()), 0.3);
+  EXPECT_NEAR(carrot.norm(), WalkPolicyController::kRouteLookaheadM, 0.15);
+  // without navigation it steers straight at the walk point
+  (*c)->Restart();
+  (*c)->set_navigation(false);
+  ASSERT_TRUE((*c)->Act(obs).ok());
+  EXPECT_EQ((*c)->route(), nullptr);
+  EXPECT_NEAR(((*c)->state().target_xy - Eigen::Vector2d(3.4, 0)).norm(), 0, 1e-12);
 }
 
 TEST(WalkPolicyController, NoTargetIsAnError) {
@@ -105,7 +145,7 @@ TEST(WalkThenContactController, WalksGetCloseStepsAndHandsOverOnlyWhenStopped) {
   WalkThenContactController c(walker->get(), &mpc);
   StepTask walk_task;
   walk_task.get_close = true;
-  walk_task.stand_point = Eigen::Vector3d(3, 0, 0);
+  walk_task.stand_point = walk_task.walk_point = Eigen::Vector3d(3, 0, 0);
   StepTask sit_task;
   Observation obs;
   obs.world = world.get();

@@ -1,0 +1,88 @@
+#include "simhuman/control/task.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "simhuman/plan/metrics.h"
+#include "simhuman/world/objects.h"
+
+namespace simhuman::control {
+namespace {
+
+core::CatalogObject Built(const std::string& type, double x, double y, double yaw_deg) {
+  world::ObjectSpec spec;
+  spec.id = type + "000";
+  spec.type = type;
+  spec.pos = Eigen::Vector3d(x, y, 0);
+  spec.yaw_rad = yaw_deg * M_PI / 180.0;
+  auto obj = world::BuildObject(spec);
+  EXPECT_TRUE(obj.ok()) << obj.status();
+  return *obj;
+}
+
+StepTask GetCloseFront(const core::CatalogObject& obj) {
+  plan::PairParams params;
+  StepTask t;
+  t.get_close = true;
+  t.focus = &obj;
+  t.side = plan::Direction::kFront;
+  t.stand_point = plan::StandPoint(obj, plan::Direction::kFront, params.stand_off_m);
+  t.stand_yaw_rad = plan::StandFacingYaw(obj, plan::Direction::kFront);
+  t.walk_point = t.stand_point;
+  t.walk_yaw_rad = t.stand_yaw_rad;
+  return t;
+}
+
+double AngleDiff(double a, double b) { return std::abs(std::remainder(a - b, 2 * M_PI)); }
+
+TEST(RefineApproach, StopsBackToTheSeatBeforeSitting) {
+  const core::CatalogObject chair = Built("chair", 1, 2, 30);
+  StepTask gc = GetCloseFront(chair);
+  StepTask sit;
+  sit.focus = &chair;
+  sit.posture = Posture::kSit;
+  RefineApproach(sit, 1.0, &gc);
+  EXPECT_NEAR(AngleDiff(gc.walk_yaw_rad, gc.stand_yaw_rad), M_PI, 1e-9);
+  // in front of the chair (its +x), closer than the stand point, within the get-close radius
+  Eigen::Vector3d local = chair.pose.ApplyInverse(gc.walk_point);
+  EXPECT_NEAR(local.x(), chair.LocalBounds().second.x() + kSitStartM, 1e-9);
+  EXPECT_LT((gc.walk_point - gc.stand_point).head<2>().norm(),
+            plan::PairParams().get_close_radius_m);
+}
+
+TEST(RefineApproach, StopsBesideThePillowEndBeforeLyingDown) {
+  const core::CatalogObject bed = Built("bed", 0, 0, 90);
+  StepTask gc = GetCloseFront(bed);
+  StepTask lie;
+  lie.focus = &bed;
+  lie.posture = Posture::kLieBack;
+  RefineApproach(lie, 1.0, &gc);
+  EXPECT_NEAR(AngleDiff(gc.walk_yaw_rad, gc.stand_yaw_rad), M_PI, 1e-9);
+  const core::CatalogPart* pillow = bed.FindPart("pillow");
+  ASSERT_NE(pillow, nullptr);
+  auto [plo, phi] = core::ShapesBounds(pillow->shapes);
+  Eigen::Vector3d local = bed.pose.ApplyInverse(gc.walk_point);
+  EXPECT_NEAR(std::abs(local.y() - 0.5 * (plo.y() + phi.y())), kLieStartFromPillowM, 1e-9);
+  EXPECT_LT((gc.walk_point - gc.stand_point).head<2>().norm(),
+            plan::PairParams().get_close_radius_m);
+}
+
+TEST(RefineApproach, LeavesOtherStepsAlone) {
+  const core::CatalogObject chair = Built("chair", 0, 0, 0);
+  const core::CatalogObject sofa = Built("sofa", 3, 0, 0);
+  StepTask gc = GetCloseFront(chair);
+  StepTask sit_elsewhere;
+  sit_elsewhere.focus = &sofa;
+  sit_elsewhere.posture = Posture::kSit;
+  RefineApproach(sit_elsewhere, 1.0, &gc);
+  StepTask reach;
+  reach.focus = &chair;
+  reach.posture = Posture::kStand;
+  RefineApproach(reach, 1.0, &gc);
+  EXPECT_EQ(gc.walk_point, gc.stand_point);
+  EXPECT_EQ(gc.walk_yaw_rad, gc.stand_yaw_rad);
+}
+
+}  // namespace
+}  // namespace simhuman::control
