@@ -131,20 +131,21 @@ void RefineApproach(const StepTask& next, double scale, StepTask* gc) {
   const core::CatalogObject& obj = *gc->focus;
   const auto [lo, hi] = obj.LocalBounds();
   Eigen::Vector3d local(hi.x() + scale * kSitStartM, 0.5 * (lo.y() + hi.y()), 0.0);
-  if (next.posture == Posture::kSit) {
+  const core::CatalogPart* pillow = obj.FindPart("pillow");
+  const core::CatalogPart* mattress = obj.FindPart("mattress");
+  const bool lie = next.posture == Posture::kLieBack || next.posture == Posture::kLieSide;
+  if (pillow != nullptr && mattress != nullptr && (lie || next.posture == Posture::kSit)) {
+    // a bed: sit down where lying back puts the head on the pillow
+    auto [plo, phi] = core::ShapesBounds(pillow->shapes);
+    auto [mlo, mhi] = core::ShapesBounds(mattress->shapes);
+    double py = 0.5 * (plo.y() + phi.y()), my = 0.5 * (mlo.y() + mhi.y());
+    local.y() = py + (py > my ? -1.0 : 1.0) * scale * kLieStartFromPillowM;
+  } else if (next.posture == Posture::kSit) {
     // in front of the middle of the seat surface
     if (const core::CatalogPart* seat = obj.FindPart("seat surface")) {
       auto [slo, shi] = core::ShapesBounds(seat->shapes);
       local.y() = 0.5 * (slo.y() + shi.y());
     }
-  } else if (next.posture == Posture::kLieBack || next.posture == Posture::kLieSide) {
-    const core::CatalogPart* pillow = obj.FindPart("pillow");
-    const core::CatalogPart* mattress = obj.FindPart("mattress");
-    if (pillow == nullptr || mattress == nullptr) return;
-    auto [plo, phi] = core::ShapesBounds(pillow->shapes);
-    auto [mlo, mhi] = core::ShapesBounds(mattress->shapes);
-    double py = 0.5 * (plo.y() + phi.y()), my = 0.5 * (mlo.y() + mhi.y());
-    local.y() = py + (py > my ? -1.0 : 1.0) * scale * kLieStartFromPillowM;
   } else {
     return;
   }

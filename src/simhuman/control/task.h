@@ -57,10 +57,10 @@ struct StepTask {
 
 /// Adapts a get-close step's walk point to the step after it: when `next` sits or lies on the
 /// object the walker is approaching, stop with the back to it where sitting down starts (a
-/// seat: `kSitStartM` in front of its front face; a bed: beside the pillow end, where sitting
-/// down and lying back puts the head on the pillow), so the contact controller does not have
-/// to turn round. Both points stay within the get-close radius of the stand point, so the
-/// plan's get-close test (position only by default) is unchanged. No-op otherwise.
+/// seat: `kSitStartM` in front of its front face; a bed, to sit or lie: also beside the pillow
+/// end, where sitting down and lying back puts the head on the pillow), so the contact controller
+/// does not have to turn round. Both points stay within the get-close radius of the stand point, so
+/// the plan's get-close test (position only by default) is unchanged. No-op otherwise.
 void RefineApproach(const StepTask& next, double scale, StepTask* get_close);
 inline constexpr double kSitStartM = 0.36;
 inline constexpr double kLieStartFromPillowM = 0.65;

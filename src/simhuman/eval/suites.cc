@@ -212,12 +212,10 @@ core::Status MakeScenePlanSimple(core::Rng& rng, EpisodeSpec* out) {
   return absl::OkStatus();
 }
 
-// sit-far: 1-6 m from the seat's front, within +-60 deg of its front direction, any heading
-core::Status MakeSitFar(core::Rng& rng, EpisodeSpec* out) {
-  std::string type = kSeatTypes[rng.UniformInt(0, kNumSeatTypes - 1)];
-  world::ObjectSpec o;
-  core::CatalogObject built;
-  SH_RETURN_IF_ERROR(RandomObject(type, rng, &o, &built));
+// a start 1-6 m from the point at the middle of `built`'s front face (object at `o`), within
+// +-60 deg of its front direction, with any heading
+world::HumanSpec FarStart(core::Rng& rng, const world::ObjectSpec& o,
+                          const core::CatalogObject& built) {
   auto [lo, hi] = built.LocalBounds();
   double r = rng.Uniform(kSitFarLoM, kSitFarHiM);
   double bearing = rng.Uniform(-kSitFarBearingDeg, kSitFarBearingDeg) * kDegToRad;
@@ -225,18 +223,71 @@ core::Status MakeSitFar(core::Rng& rng, EpisodeSpec* out) {
   h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, hi.x() + r * std::cos(bearing),
                           0.5 * (lo.y() + hi.y()) + r * std::sin(bearing));
   h.yaw_rad = WrapAngle(rng.Uniform(0.0, kTwoPi));
+  return h;
+}
+
+// sit-far: 1-6 m from the seat's front, within +-60 deg of its front direction, any heading
+core::Status MakeSitFar(core::Rng& rng, EpisodeSpec* out) {
+  std::string type = kSeatTypes[rng.UniformInt(0, kNumSeatTypes - 1)];
+  world::ObjectSpec o;
+  core::CatalogObject built;
+  SH_RETURN_IF_ERROR(RandomObject(type, rng, &o, &built));
   out->variant = type + ": walk, sit";
   out->object_id = o.id;
   out->scene.objects = {o};
-  out->scene.humans = {h};
+  out->scene.humans = {FarStart(rng, o, built)};
   out->plan = Plan({Step("walk to " + o.id, {GetClose(o.id, "front")}), SitStep(o.id)});
+  return absl::OkStatus();
+}
+
+// lie-far: as sit-far, for a bed: [get close (front)], [sit on the edge], [lie]
+core::Status MakeLieFar(core::Rng& rng, EpisodeSpec* out) {
+  world::ObjectSpec o;
+  core::CatalogObject built;
+  SH_RETURN_IF_ERROR(RandomObject("bed", rng, &o, &built));
+  out->variant = "bed: walk, sit on edge, lie";
+  out->object_id = o.id;
+  out->scene.objects = {o};
+  out->scene.humans = {FarStart(rng, o, built)};
+  std::vector<json> steps = {Step("walk to " + o.id, {GetClose(o.id, "front")})};
+  LieSteps(o.id, &steps);
+  out->plan = Plan(steps);
+  out->extra = ExtraCheck::kLieAlongBed;
+  return absl::OkStatus();
+}
+
+// reach-far: a marker point at the reach suite's heights, the human 1-6 m from the point
+// kReachFarStandM in front of it (the marker's yaw is random), any heading: [get close
+// (front)], [touch it with one hand]
+core::Status MakeReachFar(core::Rng& rng, EpisodeSpec* out) {
+  world::ObjectSpec m;
+  m.id = std::string(kMarkerType) + "000";
+  m.type = kMarkerType;
+  m.yaw_rad = WrapAngle(rng.Uniform(0.0, kTwoPi));
+  m.pos = Eigen::Vector3d(0, 0, rng.Uniform(kReachHeightLoM, kReachHeightHiM));
+  core::StatusOr<core::CatalogObject> built = world::BuildObject(m);
+  if (!built.ok()) {
+    return absl::InternalError("eval suite: cannot build a marker: " +
+                               std::string(built.status().message()));
+  }
+  bool left = rng.Uniform() < 0.5;
+  std::string hand = left ? "left hand" : "right hand";
+  out->variant = hand;
+  out->object_id = m.id;
+  out->joint = left ? core::BodyJoint::kLeftHand : core::BodyJoint::kRightHand;
+  out->scene.objects = {m};
+  out->scene.humans = {FarStart(rng, m, *built)};
+  out->plan = Plan({Step("walk to " + m.id, {GetClose(m.id, "front")}),
+                    Step("touch " + m.id + " with the " + hand,
+                         {Pair(m.id, kMarkerPart, hand, "contact", "none")})});
+  out->extra = ExtraCheck::kHandAtPoint;
   return absl::OkStatus();
 }
 
 }  // namespace
 
 std::vector<std::string> SuiteNames() {
-  return {"sit", "lie", "reach", "sceneplan-simple", "sit-far"};
+  return {"sit", "lie", "reach", "sceneplan-simple", "sit-far", "lie-far", "reach-far"};
 }
 
 std::string_view SuiteName(Suite suite) {
@@ -251,13 +302,17 @@ std::string_view SuiteName(Suite suite) {
       return "sceneplan-simple";
     case Suite::kSitFar:
       return "sit-far";
+    case Suite::kLieFar:
+      return "lie-far";
+    case Suite::kReachFar:
+      return "reach-far";
   }
   return "?";
 }
 
 std::optional<Suite> ParseSuite(std::string_view name) {
-  for (Suite s :
-       {Suite::kSit, Suite::kLie, Suite::kReach, Suite::kScenePlanSimple, Suite::kSitFar}) {
+  for (Suite s : {Suite::kSit, Suite::kLie, Suite::kReach, Suite::kScenePlanSimple, Suite::kSitFar,
+                  Suite::kLieFar, Suite::kReachFar}) {
     if (SuiteName(s) == name) return s;
   }
   return std::nullopt;
@@ -285,6 +340,12 @@ core::StatusOr<EpisodeSpec> MakeEpisodeSpec(Suite suite, uint64_t seed) {
       break;
     case Suite::kSitFar:
       SH_RETURN_IF_ERROR(MakeSitFar(rng, &spec));
+      break;
+    case Suite::kLieFar:
+      SH_RETURN_IF_ERROR(MakeLieFar(rng, &spec));
+      break;
+    case Suite::kReachFar:
+      SH_RETURN_IF_ERROR(MakeReachFar(rng, &spec));
       break;
   }
   return spec;

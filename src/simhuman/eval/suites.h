@@ -19,11 +19,14 @@
 namespace simhuman::eval {
 
 /// One benchmark suite.
-enum class Suite { kSit, kLie, kReach, kScenePlanSimple, kSitFar };
+enum class Suite { kSit, kLie, kReach, kScenePlanSimple, kSitFar, kLieFar, kReachFar };
 
-/// "sit", "lie", "reach", "sceneplan-simple", "sit-far", in enum order. sit-far starts the
-/// human 1-6 m from a seat's front (within +-60 deg of its front direction, any heading) with
-/// the plan [get close (front)], [sit]: it needs the walking policy.
+/// "sit", "lie", "reach", "sceneplan-simple", "sit-far", "lie-far", "reach-far", in enum order.
+/// The far suites start the human 1-6 m from the middle of the object's front face (within
+/// +-60 deg of its front direction, any heading) and put a get-close (front) step before the
+/// plan: sit-far [sit]; lie-far [sit on the edge], [lie] with the lie check; reach-far touches
+/// a marker (random yaw, 0.7-1.5 m high) with one hand, with the reach check. They need the
+/// walking policy.
 std::vector<std::string> SuiteNames();
 /// The name of `suite`.
 std::string_view SuiteName(Suite suite);

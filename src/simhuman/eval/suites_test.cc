@@ -194,6 +194,51 @@ TEST(SuitesTest, ScenePlanSimpleIsShortSingleObjectAndNear) {
   EXPECT_EQ(kinds.size(), 2u);
 }
 
+TEST(SuitesTest, FarSuitesStartOneToSixMetresAwayAndWalkFirst) {
+  struct Want {
+    Suite suite;
+    std::set<std::string> types;
+    ExtraCheck extra;
+    size_t steps;
+  };
+  for (const Want& w :
+       {Want{Suite::kSitFar,
+             {"chair", "armchair", "sofa", "stool", "high_stool"},
+             ExtraCheck::kNone,
+             2},
+        Want{Suite::kLieFar, {"bed"}, ExtraCheck::kLieAlongBed, 3},
+        Want{Suite::kReachFar, {std::string(kMarkerType)}, ExtraCheck::kHandAtPoint, 2}}) {
+    std::set<std::string> types;
+    std::set<int> hands;
+    for (int i = 0; i < kSamples; ++i) {
+      EpisodeSpec s = Make(w.suite, core::DeriveSeed(5, i));
+      ASSERT_EQ(s.scene.objects.size(), 1u);
+      types.insert(s.scene.objects[0].type);
+      hands.insert(static_cast<int>(s.joint));
+      EXPECT_EQ(s.extra, w.extra);
+      ASSERT_EQ(s.plan["steps"].size(), w.steps) << s.plan.dump();
+      EXPECT_EQ(s.plan["steps"][0]["pairs"][0]["part"], "none");
+      EXPECT_EQ(s.plan["steps"][0]["pairs"][0]["direction"], "front");
+      // 1-6 m beyond the middle of the front face, within +-60 deg of the front direction
+      auto [lo, hi] = Built(s).LocalBounds();
+      Eigen::Vector2d local = HumanInObjectFrame(s);
+      Eigen::Vector2d from_face(local.x() - hi.x(), local.y() - 0.5 * (lo.y() + hi.y()));
+      EXPECT_GE(from_face.norm(), 1.0 - kTol);
+      EXPECT_LE(from_face.norm(), 6.0 + kTol);
+      EXPECT_LE(std::abs(std::atan2(from_face.y(), from_face.x())), 60 * kDegToRad + kTol);
+      core::StatusOr<core::SceneCatalog> catalog = world::BuildCatalog(s.scene);
+      ASSERT_TRUE(catalog.ok()) << catalog.status();
+      core::StatusOr<plan::ContactChain> chain = plan::ParseContactChainJson(s.plan, "suite");
+      ASSERT_TRUE(chain.ok()) << chain.status();
+      EXPECT_TRUE(plan::ValidateAndGround(*chain, *catalog).ok());
+    }
+    EXPECT_EQ(types, w.types) << SuiteName(w.suite);
+    if (w.suite == Suite::kReachFar) {
+      EXPECT_EQ(hands.size(), 2u);
+    }
+  }
+}
+
 // a spec with one object, one standing human and an extra check, and its catalog
 struct ExtraCase {
   EpisodeSpec spec;

@@ -269,7 +269,7 @@ TEST(SceneTest, LivingRoomLeavesRoomToWalkAndSit) {
   ASSERT_TRUE(s.ok());
   core::StatusOr<core::SceneCatalog> cat = BuildCatalog(*s);
   ASSERT_TRUE(cat.ok());
-  // floor-standing objects are at least 0.4 m apart (0.4 m between the chair and the table)
+  // floor-standing objects are at least 0.4 m apart (0.65 m between the chair and the table)
   for (size_t a = 0; a < cat->objects.size(); ++a) {
     for (size_t b = a + 1; b < cat->objects.size(); ++b) {
       const auto& oa = cat->objects[a];
