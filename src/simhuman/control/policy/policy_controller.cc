@@ -156,13 +156,15 @@ bool WalkPolicyController::Arrived(const mjData* d, const WalkTolerance& tol) co
 }
 
 absl::Status WalkThenContactController::Act(const Observation& obs) {
+  const mjtNum* pelvis = obs.data->xpos + 3 * obs.world->agent(obs.agent).pelvis_body;
+  const bool standing = pelvis[2] > 0.8 * obs.world->agent(obs.agent).scale;
+  const bool get_close = obs.task && obs.task->get_close && obs.task->posture == Posture::kStand;
   if (obs.step_index != step_) {
     step_ = obs.step_index;
-    // walk only for get-close steps that start standing (not "stand up" from a seat or bed)
-    const mjtNum* pelvis = obs.data->xpos + 3 * obs.world->agent(obs.agent).pelvis_body;
-    bool walk = obs.task && obs.task->get_close && obs.task->posture == Posture::kStand &&
-                pelvis[2] > 0.8 * obs.world->agent(obs.agent).scale;
-    if (walk) {
+    stood_since_s_ = -1;
+    // walk get-close steps that start standing; "stand up" from a seat or bed is the contact
+    // controller's until the human stands (below)
+    if (get_close && standing) {
       walking_ = true;
       finishing_ = false;
       walker_->Restart();
@@ -171,6 +173,22 @@ absl::Status WalkThenContactController::Act(const Observation& obs) {
       // until stopped there, so the contact controller never takes over a moving human
       finishing_ = true;
       finish_deadline_s_ = obs.time_s + kMaxFinishS;
+    }
+  }
+  // a get-close step that began seated: once the human has stood for kStoodS and is still
+  // away from the walk point, walk the rest of the way
+  if (get_close && !walking_) {
+    if (!standing) {
+      stood_since_s_ = -1;
+    } else if (stood_since_s_ < 0) {
+      stood_since_s_ = obs.time_s;
+    } else if (obs.time_s - stood_since_s_ >= kStoodS) {
+      Eigen::Vector2d to = obs.task->walk_point.head<2>() - Eigen::Vector2d(pelvis[0], pelvis[1]);
+      if (to.norm() > kWalkAfterStandM) {
+        walking_ = true;
+        finishing_ = false;
+        walker_->Restart();
+      }
     }
   }
   if (finishing_ && (walker_->Arrived(obs.data) || obs.time_s > finish_deadline_s_)) {

@@ -79,6 +79,11 @@ class WalkThenContactController : public Controller {
   double physics_timestep_s() const override { return active()->physics_timestep_s(); }
   bool walking() const { return walking_; }
   static constexpr double kMaxFinishS = 6.0;
+  /// A get-close step that starts seated or lying is the contact controller's (it stands the
+  /// human up); after standing for kStoodS farther than kWalkAfterStandM from the walk point,
+  /// the walker takes over.
+  static constexpr double kStoodS = 0.5;
+  static constexpr double kWalkAfterStandM = 0.25;
 
  private:
   Controller* active() const { return walking_ ? static_cast<Controller*>(walker_) : contact_; }
@@ -87,6 +92,7 @@ class WalkThenContactController : public Controller {
   bool walking_ = false;
   bool finishing_ = false;
   double finish_deadline_s_ = 0;
+  double stood_since_s_ = -1;
   int step_ = -1;
 };
 

@@ -171,5 +171,44 @@ TEST(WalkThenContactController, WalksGetCloseStepsAndHandsOverOnlyWhenStopped) {
   EXPECT_DOUBLE_EQ(c.physics_timestep_s(), 0.0);
 }
 
+TEST(WalkThenContactController, StandUpIsTheContactControllersThenTheWalkerTakesOver) {
+  auto world = World();
+  auto walker =
+      WalkPolicyController::Load(WritePolicy("stand", "walk", kWalkObsDim), world.get(), 0);
+  ASSERT_TRUE(walker.ok());
+  FakeContact mpc;
+  WalkThenContactController c(walker->get(), &mpc);
+  StepTask stand_up;
+  stand_up.get_close = true;
+  stand_up.stand_point = stand_up.walk_point = Eigen::Vector3d(2, 0, 0);
+  mjData* d = world->data();
+  const int root = world->agent(0).root_qpos;
+  const double stand_z = d->qpos[root + 2];
+  Observation obs;
+  obs.world = world.get();
+  obs.data = d;
+  obs.task = &stand_up;
+  // seated: the pelvis is low, the contact controller stands the human up
+  d->qpos[root + 2] = 0.5;
+  mj_kinematics(world->model(), d);
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_FALSE(c.walking());
+  EXPECT_EQ(mpc.acts, 1);
+  // standing, but not yet for kStoodS
+  d->qpos[root + 2] = stand_z;
+  mj_kinematics(world->model(), d);
+  obs.time_s = 1.0;
+  ASSERT_TRUE(c.Act(obs).ok());
+  obs.time_s = 1.0 + 0.5 * WalkThenContactController::kStoodS;
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_FALSE(c.walking());
+  EXPECT_EQ(mpc.acts, 3);
+  // stood long enough, 2 m from the walk point: the walker takes the rest of the way
+  obs.time_s = 1.0 + WalkThenContactController::kStoodS + 0.01;
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_TRUE(c.walking());
+  EXPECT_EQ(mpc.acts, 3);
+}
+
 }  // namespace
 }  // namespace simhuman::control
