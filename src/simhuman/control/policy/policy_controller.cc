@@ -23,6 +23,7 @@ struct WalkPolicyController::Impl {
   RouteFollower follower;
   Eigen::Vector2d route_goal = Eigen::Vector2d::Constant(1e9);
   std::string route_error;
+  bool final_turn = false;  ///< close enough to turn to the walk point's heading
 
   // the target the policy steers to this step: the stand point, or the carrot on the route
   void SteerTo(const Observation& obs);
@@ -31,36 +32,49 @@ struct WalkPolicyController::Impl {
 void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
   const Eigen::Vector2d goal = obs.task->walk_point.head<2>();
   const double goal_yaw = obs.task->walk_yaw_rad;
-  state.target_xy = goal;
-  state.target_yaw_rad = goal_yaw;
-  has_target = true;
-  if (!navigate) return;
   const mjtNum* pelvis = obs.data->xpos + 3 * ix.agent.pelvis_body;
   const Eigen::Vector2d here(pelvis[0], pelvis[1]);
-  bool replan = follower.empty() || (goal - route_goal).norm() > 0.05;
-  RouteFollower::Carrot carrot;
-  if (!replan) {
-    carrot = follower.Update(here);
-    // pushed off the route (or it was never followable): plan again from here
-    replan = carrot.off_route_m > kReplanOffRouteM;
+  has_target = true;
+  if ((goal - route_goal).norm() > 0.05) {
+    follower = RouteFollower();
+    final_turn = false;
   }
-  if (replan) {
-    auto path = PlanRoute(obs.world->catalog(), here, goal, nav);
-    route_goal = goal;
-    if (!path.ok()) {
-      // no route (e.g. a huge scene): steer straight at the stand point, as without navigation
-      route_error = std::string(path.status().message());
-      follower = RouteFollower();
+  route_goal = goal;
+  if (navigate) {
+    bool replan = follower.empty();
+    RouteFollower::Carrot carrot;
+    if (!replan) {
+      carrot = follower.Update(here);
+      // pushed off the route: plan again from here
+      replan = carrot.off_route_m > kReplanOffRouteM;
+    }
+    if (replan) {
+      auto path = PlanRoute(obs.world->catalog(), here, goal, nav);
+      if (path.ok()) {
+        route_error.clear();
+        follower = RouteFollower(*std::move(path), kRouteLookaheadM);
+        carrot = follower.Update(here);
+      } else {
+        // no route (e.g. a huge scene): steer straight at the walk point
+        route_error = std::string(path.status().message());
+        follower = RouteFollower();
+        carrot.final = true;
+      }
+    }
+    if (!carrot.final) {
+      state.target_xy = carrot.point;
+      state.target_yaw_rad = carrot.heading_rad;
       return;
     }
-    route_error.clear();
-    follower = RouteFollower(*std::move(path), kRouteLookaheadM);
-    carrot = follower.Update(here);
   }
-  if (!carrot.final) {
-    state.target_xy = carrot.point;
-    state.target_yaw_rad = carrot.heading_rad;
-  }
+  // the last stretch: walk forwards to the point and turn to the final heading only there (the
+  // policy is poor at walking backwards, which a walk point "back to the seat" would ask for)
+  const Eigen::Vector2d to = goal - here;
+  const double dist = to.norm();
+  if (dist < kFinalTurnM) final_turn = true;
+  if (dist > 2.0 * kFinalTurnM) final_turn = false;
+  state.target_xy = goal;
+  state.target_yaw_rad = final_turn ? goal_yaw : std::atan2(to.y(), to.x());
 }
 
 WalkPolicyController::WalkPolicyController(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -100,6 +114,7 @@ void WalkPolicyController::Restart() {
   impl_->started = false;
   impl_->follower = RouteFollower();
   impl_->route_goal = Eigen::Vector2d::Constant(1e9);
+  impl_->final_turn = false;
 }
 
 void WalkPolicyController::set_navigation(bool on) { impl_->navigate = on; }

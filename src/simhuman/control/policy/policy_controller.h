@@ -54,6 +54,9 @@ class WalkPolicyController : public Controller {
   void set_navigation(bool on);
   /// The route being followed (nullptr when none).
   const NavPath* route() const;
+  /// On the last stretch the policy walks forwards, facing the walk point, and turns to the
+  /// walk point's heading within kFinalTurnM of it (until pushed 2 x kFinalTurnM away).
+  static constexpr double kFinalTurnM = 0.35;
   static constexpr double kRouteLookaheadM = 1.2;
   static constexpr double kReplanOffRouteM = 0.8;
 
