@@ -127,8 +127,29 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
 
 void RefineApproach(const StepTask& next, double scale, StepTask* gc) {
   if (!gc->get_close || gc->focus == nullptr || next.focus != gc->focus) return;
-  if (gc->side != plan::Direction::kFront) return;
   const core::CatalogObject& obj = *gc->focus;
+  // one hand reaching a part of the object: stand so that the point is ahead of that shoulder
+  if (next.posture == Posture::kStand && next.terms.size() == 1) {
+    const ContactTerm& t = next.terms[0];
+    const bool left = t.joint == core::BodyJoint::kLeftHand;
+    const bool right = t.joint == core::BodyJoint::kRightHand;
+    if ((left || right) && t.type == plan::ContactType::kContact && t.part != nullptr) {
+      const Eigen::Vector3d probe = gc->stand_point + Eigen::Vector3d(0, 0, 1.0 * scale);
+      const Eigen::Vector3d target = core::NearestPointOnShapes(t.part->shapes, obj.pose, probe);
+      const Eigen::Vector2d fwd(std::cos(gc->stand_yaw_rad), std::sin(gc->stand_yaw_rad));
+      const Eigen::Vector2d lft(-fwd.y(), fwd.x());
+      const Eigen::Vector2d rel = (target - gc->stand_point).head<2>();
+      const double ahead = rel.dot(fwd), across = rel.dot(lft);
+      // only a point in front, within arm's length of the stand point
+      if (ahead < 0.1 * scale || ahead > 0.9 * scale) return;
+      Eigen::Vector2d shift = fwd * (ahead - kReachAheadM * scale) +
+                              lft * (across - (left ? 1.0 : -1.0) * kReachAcrossM * scale);
+      if (shift.norm() > kReachMaxShiftM) shift *= kReachMaxShiftM / shift.norm();
+      gc->walk_point.head<2>() += shift;
+    }
+    return;
+  }
+  if (gc->side != plan::Direction::kFront) return;
   const auto [lo, hi] = obj.LocalBounds();
   Eigen::Vector3d local(hi.x() + scale * kSitStartM, 0.5 * (lo.y() + hi.y()), 0.0);
   const core::CatalogPart* pillow = obj.FindPart("pillow");

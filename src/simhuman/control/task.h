@@ -60,10 +60,16 @@ struct StepTask {
 /// seat: `kSitStartM` in front of its front face; a bed, to sit or lie: also beside the pillow
 /// end, where sitting down and lying back puts the head on the pillow), so the contact controller
 /// does not have to turn round. Both points stay within the get-close radius of the stand point, so
-/// the plan's get-close test (position only by default) is unchanged. No-op otherwise.
+/// the plan's get-close test (position only by default) is unchanged. When `next` is one hand
+/// touching a part of the object in front of the stand point (within 0.1-0.9 m), the walk point
+/// moves (at most kReachMaxShiftM) so that the part's point is kReachAheadM ahead and
+/// kReachAcrossM to that hand's side, still facing the object. No-op otherwise.
 void RefineApproach(const StepTask& next, double scale, StepTask* get_close);
 inline constexpr double kSitStartM = 0.36;
 inline constexpr double kLieStartFromPillowM = 0.65;
+inline constexpr double kReachAheadM = 0.45;
+inline constexpr double kReachAcrossM = 0.15;
+inline constexpr double kReachMaxShiftM = 0.25;
 
 /// Centre-to-surface distance of each body point when it touches something (m, scale 1).
 double BodyPointClearance(core::BodyJoint joint);

@@ -68,6 +68,38 @@ TEST(RefineApproach, StopsBesideThePillowEndBeforeLyingDown) {
             plan::PairParams().get_close_radius_m);
 }
 
+TEST(RefineApproach, PutsAReachedPointAheadOfTheReachingShoulder) {
+  world::ObjectSpec spec;
+  spec.id = "marker000";
+  spec.type = "marker";
+  spec.pos = Eigen::Vector3d(2, 1, 1.2);
+  spec.yaw_rad = 0.7;
+  auto built = world::BuildObject(spec);
+  ASSERT_TRUE(built.ok()) << built.status();
+  const core::CatalogObject& marker = *built;
+  for (core::BodyJoint hand : {core::BodyJoint::kLeftHand, core::BodyJoint::kRightHand}) {
+    StepTask gc = GetCloseFront(marker);
+    StepTask reach;
+    reach.focus = &marker;
+    ContactTerm t;
+    t.joint = hand;
+    t.type = plan::ContactType::kContact;
+    t.object = &marker;
+    t.part = &marker.parts.at(0);
+    reach.terms.push_back(t);
+    RefineApproach(reach, 1.0, &gc);
+    EXPECT_EQ(gc.walk_yaw_rad, gc.stand_yaw_rad);  // still facing it
+    Eigen::Vector2d fwd(std::cos(gc.walk_yaw_rad), std::sin(gc.walk_yaw_rad));
+    Eigen::Vector2d lft(-fwd.y(), fwd.x());
+    Eigen::Vector2d rel = marker.pose.pos.head<2>() - gc.walk_point.head<2>();
+    EXPECT_NEAR(rel.dot(fwd), kReachAheadM, 0.03);  // the marker's radius
+    double side = hand == core::BodyJoint::kLeftHand ? 1.0 : -1.0;
+    EXPECT_NEAR(rel.dot(lft), side * kReachAcrossM, 1e-6);
+    EXPECT_LT((gc.walk_point - gc.stand_point).head<2>().norm(),
+              plan::PairParams().get_close_radius_m);
+  }
+}
+
 TEST(RefineApproach, LeavesOtherStepsAlone) {
   const core::CatalogObject chair = Built("chair", 0, 0, 0);
   const core::CatalogObject sofa = Built("sofa", 3, 0, 0);
