@@ -171,8 +171,15 @@ bool WalkPolicyController::Arrived(const mjData* d, const WalkTolerance& tol) co
 }
 
 absl::Status WalkThenContactController::Act(const Observation& obs) {
-  const mjtNum* pelvis = obs.data->xpos + 3 * obs.world->agent(obs.agent).pelvis_body;
-  const bool standing = pelvis[2] > 0.8 * obs.world->agent(obs.agent).scale;
+  const world::AgentIndex& agent = obs.world->agent(obs.agent);
+  const mjtNum* pelvis = obs.data->xpos + 3 * agent.pelvis_body;
+  const bool standing = pelvis[2] > 0.8 * agent.scale;
+  // stood up: pelvis near standing height, trunk upright, not moving (a human half-way out of
+  // a seat, leaning forward, is not the walker's to take)
+  const mjtNum* v = obs.data->qvel + agent.root_qvel;
+  const bool stood_still = pelvis[2] > 0.9 * world::kPelvisStandHeight * agent.scale &&
+                           obs.data->xmat[9 * agent.torso_body + 8] > std::cos(kStoodTiltRad) &&
+                           std::hypot(v[0], v[1]) < 0.3;
   const bool get_close = obs.task && obs.task->get_close && obs.task->posture == Posture::kStand;
   if (obs.step_index != step_) {
     step_ = obs.step_index;
@@ -193,7 +200,7 @@ absl::Status WalkThenContactController::Act(const Observation& obs) {
   // a get-close step that began seated: once the human has stood for kStoodS and is still
   // away from the walk point, walk the rest of the way
   if (get_close && !walking_) {
-    if (!standing) {
+    if (!stood_still) {
       stood_since_s_ = -1;
     } else if (stood_since_s_ < 0) {
       stood_since_s_ = obs.time_s;

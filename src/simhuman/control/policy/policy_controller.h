@@ -83,9 +83,11 @@ class WalkThenContactController : public Controller {
   bool walking() const { return walking_; }
   static constexpr double kMaxFinishS = 6.0;
   /// A get-close step that starts seated or lying is the contact controller's (it stands the
-  /// human up); after standing for kStoodS farther than kWalkAfterStandM from the walk point,
-  /// the walker takes over.
+  /// human up); after standing still (pelvis above 90 % of standing height, trunk within
+  /// kStoodTiltRad of upright, below 0.3 m/s) for kStoodS farther than kWalkAfterStandM from the
+  /// walk point, the walker takes over.
   static constexpr double kStoodS = 0.5;
+  static constexpr double kStoodTiltRad = 20.0 * M_PI / 180.0;  ///< trunk from upright, at most
   static constexpr double kWalkAfterStandM = 0.25;
 
  private:
