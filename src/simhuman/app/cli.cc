@@ -100,6 +100,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                       "Walking policy for get-close steps (default assets/policies/walk.pt if "
                       "present)");
   run_cmd->add_flag("--no-walk", run.no_walk, "Do get-close steps with the MPC only");
+  run_cmd->add_option("--start", run.start,
+                      "Where the first human starts, standing: X,Y[,YAW_DEG] (m, degrees; "
+                      "overrides the scene)");
   run_cmd->add_option("--settle", run.settle_s, "Seconds to keep simulating after the last step")
       ->capture_default_str();
 

@@ -145,6 +145,20 @@ TEST(CliTest, RunUnknownSceneListsBuiltins) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+TEST(CliTest, RunStartIsCheckedBeforeAnythingRuns) {
+  std::string out = OutDir("bad_start");
+  for (const char* bad : {"1", "1,2,3,4", "1,x", "nan,0"}) {
+    CliRun r = Cli({"run", "--scene", "sit_demo", "--plan", kData + "sit_only.json", "--start", bad,
+                    "--out", out});
+    ExpectBadInput(r, {"--start", bad, "X,Y,YAW_DEG"});
+  }
+  // standing inside the chair
+  CliRun r = Cli({"run", "--scene", "sit_demo", "--plan", kData + "sit_only.json", "--start", "0,0",
+                  "--out", out});
+  ExpectBadInput(r, {"--start", "overlaps object 'chair000'"});
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(CliTest, RunMissingAndMalformedSceneFiles) {
   std::string out = OutDir("bad_scene");
   std::string missing = kData + "no_such_scene.json";

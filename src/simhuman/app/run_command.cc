@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "absl/strings/numbers.h"
+#include "absl/strings/str_split.h"
 #include "simhuman/app/common.h"
 #include "simhuman/app/plan_command.h"
 #include "simhuman/eval/episode.h"
@@ -14,6 +16,34 @@
 
 namespace simhuman::app {
 namespace {
+
+// --start "X,Y[,YAW_DEG]": the first human stands there (checked like a scene file's human)
+core::StatusOr<world::SceneSpec> PlaceFirstHuman(world::SceneSpec scene, const std::string& text) {
+  std::vector<double> v;
+  for (absl::string_view part : absl::StrSplit(text, ',')) {
+    double x = 0;
+    if (!absl::SimpleAtod(part, &x) || !std::isfinite(x)) {
+      v.clear();
+      break;
+    }
+    v.push_back(x);
+  }
+  if (v.size() != 2 && v.size() != 3) {
+    return absl::InvalidArgumentError("--start '" + text +
+                                      "' is invalid; valid: X,Y or X,Y,YAW_DEG (finite numbers, "
+                                      "metres and degrees), e.g. --start 0,-1,90");
+  }
+  if (scene.humans.empty()) scene.humans.emplace_back();
+  world::HumanSpec& h = scene.humans[0];
+  h.pos_xy = Eigen::Vector2d(v[0], v[1]);
+  if (v.size() == 3) h.yaw_rad = v[2] * M_PI / 180.0;
+  h.posture = "stand";
+  core::StatusOr<world::SceneSpec> checked =
+      world::ParseSceneJson(world::SceneToJson(scene), "--start");
+  if (!checked.ok()) return checked.status();
+  checked->name = scene.name;
+  return checked;
+}
 
 const char kCommand[] = "run";
 
@@ -66,6 +96,10 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   // scene, plan and whether it can be done from where the humans start
   core::StatusOr<world::SceneSpec> scene = world::LoadScene(flags.scene);
   if (!scene.ok()) return ReportError(err, kCommand, scene.status());
+  if (!flags.start.empty()) {
+    scene = PlaceFirstHuman(*scene, flags.start);
+    if (!scene.ok()) return ReportError(err, kCommand, scene.status());
+  }
   core::StatusOr<core::SceneCatalog> catalog = world::BuildCatalog(*scene);
   if (!catalog.ok()) return ReportError(err, kCommand, catalog.status());
   core::StatusOr<plan::ContactChain> chain = absl::UnknownError("no plan");
