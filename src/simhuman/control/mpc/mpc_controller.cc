@@ -175,6 +175,18 @@ void MpcController::StartStep(const Observation& obs, const StepTask& task) {
     keys.push_back(SolveReferencePose(*world_, agent_, task_, obs.data, scratch_, rise));
     rising = true;
   }
+  // lying down from standing sits on the edge first (as a person does), instead of toppling
+  // backwards onto the mattress
+  bool to_lie = task_.posture == Posture::kLieBack || task_.posture == Posture::kLieSide;
+  if (!seated && to_lie) {
+    StepTask sit = task_;
+    sit.posture = Posture::kSit;
+    sit.terms.erase(
+        std::remove_if(sit.terms.begin(), sit.terms.end(),
+                       [](const ContactTerm& t) { return t.joint != core::BodyJoint::kPelvis; }),
+        sit.terms.end());
+    keys.push_back(SolveReferencePose(*world_, agent_, sit, obs.data, scratch_));
+  }
   keys.push_back(goal);
   SetReference(obs.time_s, keys, obs.data);
   // when getting up, standing balance takes over once the reference lifts off the seat
