@@ -148,34 +148,11 @@ int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err
         << std::endl;
     if (!e.render_error.empty())
       out << "     (not rendered: " << e.render_error << ")" << std::endl;
-    nlohmann::ordered_json j;
-    j["episode"] = e.index;
-    j["dist_m"] = e.dist_m;
-    j["success"] = e.success;
-    j["fell"] = e.fell;
-    j["time_s"] = e.time_s;
-    j["final_dist_m"] = e.final_dist_m;
-    j["final_yaw_err_deg"] = e.final_yaw_err_deg;
-    j["mean_speed_mps"] = e.mean_speed_mps;
-    j["foot_skate_mps"] = e.foot_skate_mps;
-    if (!e.sheet_path.empty()) j["contact_sheet"] = e.sheet_path;
-    lines << j.dump() << "\n" << std::flush;
+    lines << eval::WalkEpisodeJson(e).dump() << "\n" << std::flush;
   });
   if (!summary.ok()) return ReportError(err, kCommand, summary.status());
-  nlohmann::ordered_json j;
-  j["suite"] = "walk";
-  j["episodes"] = summary->episodes;
-  j["success_rate"] = summary->success_rate;
-  j["fall_rate"] = summary->fall_rate;
-  j["mean_time_to_success_s"] = summary->mean_time_s;
-  j["foot_skate_mps"] = summary->foot_skate_mps;
-  j["final_dist_m"] = summary->final_dist_m;
-  j["final_yaw_err_deg"] = summary->final_yaw_err_deg;
-  j["policy"] = o.policy;
-  j["seed"] = o.seed;
-  const nlohmann::ordered_json provenance = eval::ProvenanceJson();
-  for (const auto& [k, v] : provenance.items()) j[k] = v;
-  absl::Status ws = eval::WriteJsonFile(o.sheet_dir + "/summary.json", j);
+  absl::Status ws =
+      eval::WriteJsonFile(o.sheet_dir + "/summary.json", eval::WalkSummaryJson(*summary, o));
   if (!ws.ok()) return ReportError(err, kCommand, ws);
   out << Row("\nsummary: success %.1f%%  falls %.1f%%  time %.1f s  skate %.3f m/s  end %.1f cm "
              "%.1f deg",

@@ -4,6 +4,7 @@
 
 #include "simhuman/control/policy/policy_controller.h"
 #include "simhuman/core/rng.h"
+#include "simhuman/eval/episode.h"
 #include "simhuman/eval/replay.h"
 #include "simhuman/world/sim_world.h"
 
@@ -140,6 +141,38 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
   }
   if (successes) sum.mean_time_s /= successes;
   return sum;
+}
+
+nlohmann::ordered_json WalkEpisodeJson(const WalkEpisode& e) {
+  nlohmann::ordered_json j;
+  j["episode"] = e.index;
+  j["dist_m"] = e.dist_m;
+  j["success"] = e.success;
+  j["fell"] = e.fell;
+  j["time_s"] = e.time_s;
+  j["final_dist_m"] = e.final_dist_m;
+  j["final_yaw_err_deg"] = e.final_yaw_err_deg;
+  j["mean_speed_mps"] = e.mean_speed_mps;
+  j["foot_skate_mps"] = e.foot_skate_mps;
+  if (!e.sheet_path.empty()) j["contact_sheet"] = e.sheet_path;
+  return j;
+}
+
+nlohmann::ordered_json WalkSummaryJson(const WalkEvalSummary& s, const WalkEvalOptions& options) {
+  nlohmann::ordered_json j;
+  j["suite"] = "walk";
+  j["episodes"] = s.episodes;
+  j["success_rate"] = s.success_rate;
+  j["fall_rate"] = s.fall_rate;
+  j["mean_time_to_success_s"] = s.mean_time_s;
+  j["foot_skate_mps"] = s.foot_skate_mps;
+  j["final_dist_m"] = s.final_dist_m;
+  j["final_yaw_err_deg"] = s.final_yaw_err_deg;
+  j["policy"] = options.policy;
+  j["seed"] = options.seed;
+  const nlohmann::ordered_json provenance = ProvenanceJson();
+  for (const auto& [k, v] : provenance.items()) j[k] = v;
+  return j;
 }
 
 }  // namespace simhuman::eval

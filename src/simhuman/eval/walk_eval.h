@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -50,5 +51,10 @@ struct WalkEvalSummary {
 core::StatusOr<WalkEvalSummary> RunWalkEval(
     const WalkEvalOptions& options, std::vector<WalkEpisode>* episodes,
     const std::function<void(const WalkEpisode&)>& on_episode = nullptr);
+
+/// One line of the suite's episodes.jsonl (docs/EVAL_PROTOCOLS.md, "walk").
+nlohmann::ordered_json WalkEpisodeJson(const WalkEpisode& e);
+/// The suite's summary.json: rates and means, the policy, the seed and provenance.
+nlohmann::ordered_json WalkSummaryJson(const WalkEvalSummary& s, const WalkEvalOptions& options);
 
 }  // namespace simhuman::eval

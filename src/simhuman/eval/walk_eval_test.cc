@@ -1,0 +1,39 @@
+#include "simhuman/eval/walk_eval.h"
+
+#include <gtest/gtest.h>
+
+namespace simhuman::eval {
+namespace {
+
+TEST(WalkEvalJson, EpisodeAndSummaryCarryTheDocumentedFields) {
+  WalkEpisode e;
+  e.index = 7;
+  e.dist_m = 3.5;
+  e.success = true;
+  e.final_dist_m = 0.11;
+  nlohmann::ordered_json j = WalkEpisodeJson(e);
+  EXPECT_EQ(j["episode"], 7);
+  EXPECT_EQ(j["success"], true);
+  EXPECT_DOUBLE_EQ(j["final_dist_m"].get<double>(), 0.11);
+  EXPECT_FALSE(j.contains("contact_sheet"));  // only for rendered episodes
+  e.sheet_path = "out/ep7.png";
+  EXPECT_EQ(WalkEpisodeJson(e)["contact_sheet"], "out/ep7.png");
+
+  WalkEvalSummary s;
+  s.episodes = 100;
+  s.success_rate = 0.99;
+  s.fall_rate = 0.01;
+  WalkEvalOptions o;
+  o.policy = "assets/policies/walk.pt";
+  o.seed = 2;
+  nlohmann::ordered_json sj = WalkSummaryJson(s, o);
+  EXPECT_EQ(sj["suite"], "walk");
+  EXPECT_EQ(sj["episodes"], 100);
+  EXPECT_DOUBLE_EQ(sj["success_rate"].get<double>(), 0.99);
+  EXPECT_EQ(sj["policy"], "assets/policies/walk.pt");
+  EXPECT_EQ(sj["seed"], 2);
+  EXPECT_TRUE(sj.contains("git_revision"));  // provenance
+}
+
+}  // namespace
+}  // namespace simhuman::eval
