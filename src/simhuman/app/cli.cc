@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "simhuman/app/clip_command.h"
 #include "simhuman/app/common.h"
 #include "simhuman/app/eval_command.h"
 #include "simhuman/app/plan_command.h"
@@ -165,6 +166,23 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   train_cmd->add_option("--envs", tf.envs, "Parallel environments")->check(CLI::Range(1, 4096));
   train_cmd->add_option("--threads", tf.threads, "Worker threads")->check(CLI::Range(1, 64));
   train_cmd->add_flag("--quiet", tf.quiet, "No progress bar");
+  train_cmd->add_option("--amp-clips", tf.amp_clips,
+                        "Comma-separated motion clips (.clip.json) or BVH files: turns on AMP "
+                        "(walk task)");
+
+  ClipFlags cf;
+  CLI::App* clip_cmd = app.add_subcommand("clip", "Make motion clips for AMP (convert, gait)");
+  clip_cmd->require_subcommand(1);
+  CLI::App* clip_convert = clip_cmd->add_subcommand("convert", "Retarget a BVH file to a clip");
+  clip_convert->add_option("--bvh", cf.bvh, "BVH file (CMU-style)")->required();
+  clip_convert->add_option("--out", cf.out, "Clip file to write (.clip.json)")->required();
+  clip_convert->add_option("--fps", cf.fps, "Resample to this frame rate (default: the BVH's)");
+  CLI::App* clip_gait =
+      clip_cmd->add_subcommand("gait", "Write the walking task's reference gait as a clip");
+  clip_gait->add_option("--out", cf.out, "Clip file to write (.clip.json)")->required();
+  clip_gait->add_option("--seconds", cf.seconds, "Length in seconds")->capture_default_str();
+  clip_gait->add_option("--speed", cf.speed_mps, "Forward speed, m/s")->capture_default_str();
+  clip_gait->add_option("--fps", cf.fps, "Frame rate (default 30)");
 
   std::string export_ckpt, export_out, export_eval;
   CLI::App* export_cmd =
@@ -213,10 +231,12 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     tf.seed_given = seed_opt->count() > 0;
     return TrainCommand(tf, out, err);
   }
+  if (clip_convert->parsed()) return ClipConvertCommand(cf, out, err);
+  if (clip_gait->parsed()) return ClipGaitCommand(cf, out, err);
   if (export_cmd->parsed())
     return ExportPolicyCommand(export_ckpt, export_out, export_eval, out, err);
   err << "simhuman: error: a command is required; valid commands are: run, plan, eval, scenes, "
-         "train, export-policy (or "
+         "train, export-policy, clip (or "
          "--version, --help)"
       << std::endl;
   return kExitBadInput;

@@ -60,7 +60,7 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
   core::StatusOr<std::unique_ptr<learn::PpoTrainer>> trainer;
   if (!flags.resume.empty()) {
     if (!flags.out.empty() || !flags.config.empty() || flags.seed_given || flags.envs ||
-        flags.threads) {
+        flags.threads || !flags.amp_clips.empty()) {
       return ReportError(err, "train",
                          absl::InvalidArgumentError("--resume continues a run with its own "
                                                     "settings; only --steps may be given"));
@@ -89,6 +89,25 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
     if (flags.envs) cfg.num_envs = flags.envs;
     if (flags.threads) cfg.threads = flags.threads;
     if (cfg.task == "reach") cfg.hidden = {64, 64};
+    if (!flags.amp_clips.empty()) {
+      cfg.amp_clips.clear();
+      std::stringstream list(flags.amp_clips);
+      std::string item;
+      while (std::getline(list, item, ',')) {
+        if (item.empty()) {
+          return ReportError(err, "train",
+                             absl::InvalidArgumentError("--amp-clips '" + flags.amp_clips +
+                                                        "' holds an empty path"));
+        }
+        cfg.amp_clips.push_back(item);
+      }
+    }
+    // clip paths are stored absolute, so --resume finds them from any directory
+    for (std::string& c : cfg.amp_clips) {
+      std::error_code ec;
+      std::filesystem::path abs = std::filesystem::absolute(c, ec);
+      if (!ec) c = abs.lexically_normal().string();
+    }
     trainer = learn::PpoTrainer::Create(cfg, flags.out);
   }
   if (!trainer.ok()) return ReportError(err, "train", trainer.status());
@@ -98,6 +117,8 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
       << " threads, seed " << cfg.seed << ", target " << cfg.total_steps << " steps, run "
       << tr.out_dir()
       << (flags.resume.empty() ? "" : " (resumed at " + std::to_string(tr.env_steps()) + ")")
+      << (cfg.amp_clips.empty() ? ""
+                                : ", AMP with " + std::to_string(cfg.amp_clips.size()) + " clip(s)")
       << std::endl;
   auto start = std::chrono::steady_clock::now();
   int64_t start_steps = tr.env_steps();
@@ -116,8 +137,12 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
            << std::fixed << std::setprecision(2) << st->env_steps / 1e6 << "M/"
            << cfg.total_steps / 1e6 << "M  " << std::setprecision(0) << rate << " st/s  ret "
            << std::setprecision(2) << st->mean_return << "  succ " << st->success_rate << "  fall "
-           << st->fall_rate << "  cur " << st->curriculum << "  ETA " << Duration(eta)
-           << (st->checkpointed ? "  [ckpt]" : "       ");
+           << st->fall_rate << "  cur " << st->curriculum;
+      if (st->amp) {
+        line << "  style " << st->amp_style_reward << "  D " << st->amp_d_expert << "/"
+             << st->amp_d_agent;
+      }
+      line << "  ETA " << Duration(eta) << (st->checkpointed ? "  [ckpt]" : "       ");
       out << line.str() << std::flush;
       if (st->iteration % 50 == 0) out << std::endl;
     }

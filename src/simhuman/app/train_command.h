@@ -20,7 +20,8 @@ struct TrainFlags {
   int envs = 0;     ///< 0: the config's default
   int threads = 0;  ///< 0: the config's default
   bool steps_given = false, seed_given = false;
-  bool quiet = false;  ///< no progress bar (logs still written)
+  bool quiet = false;     ///< no progress bar (logs still written)
+  std::string amp_clips;  ///< comma-separated clip/BVH paths (AMP on; replaces the config's)
 };
 
 /// Parses "30M", "500k", "1e6", "123" into a count. InvalidArgument naming the text.

@@ -14,6 +14,8 @@
 
 #include "simhuman/control/policy/policy_net.h"
 #include "simhuman/core/rng.h"
+#include "simhuman/learn/amp.h"
+#include "simhuman/learn/bvh.h"
 #include "simhuman/learn/reach_env.h"
 #include "simhuman/learn/vec_env.h"
 #include "simhuman/learn/walk_env.h"
@@ -88,6 +90,24 @@ absl::Status PpoConfig::Validate() const {
     return absl::InvalidArgumentError("hidden must list positive layer widths");
   }
   if (max_bad_updates <= 0) return absl::InvalidArgumentError("max_bad_updates must be positive");
+  if (!(amp_task_weight >= 0) || !(amp_style_weight >= 0) || !(amp_grad_penalty >= 0)) {
+    return absl::InvalidArgumentError(
+        "amp_task_weight, amp_style_weight and amp_grad_penalty must be >= 0");
+  }
+  if (amp_disc_hidden.empty() ||
+      *std::min_element(amp_disc_hidden.begin(), amp_disc_hidden.end()) <= 0) {
+    return absl::InvalidArgumentError("amp_disc_hidden must list positive layer widths");
+  }
+  if (!(amp_disc_lr > 0) || amp_disc_batch <= 0 || amp_disc_updates <= 0) {
+    return absl::InvalidArgumentError(
+        "amp_disc_lr, amp_disc_batch and amp_disc_updates must be positive");
+  }
+  if (amp_replay_size < amp_disc_batch) {
+    return absl::InvalidArgumentError("amp_replay_size must be >= amp_disc_batch");
+  }
+  for (const std::string& c : amp_clips) {
+    if (c.empty()) return absl::InvalidArgumentError("amp_clips holds an empty path");
+  }
   return absl::OkStatus();
 }
 
@@ -114,7 +134,16 @@ nlohmann::json PpoConfig::ToJson() const {
                         {"hidden", hidden},
                         {"checkpoint_every_s", checkpoint_every_s},
                         {"max_bad_updates", max_bad_updates},
-                        {"curriculum_max_steps", curriculum_max_steps}};
+                        {"curriculum_max_steps", curriculum_max_steps},
+                        {"amp_clips", amp_clips},
+                        {"amp_task_weight", amp_task_weight},
+                        {"amp_style_weight", amp_style_weight},
+                        {"amp_grad_penalty", amp_grad_penalty},
+                        {"amp_disc_hidden", amp_disc_hidden},
+                        {"amp_disc_lr", amp_disc_lr},
+                        {"amp_disc_batch", amp_disc_batch},
+                        {"amp_disc_updates", amp_disc_updates},
+                        {"amp_replay_size", amp_replay_size}};
 }
 
 core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
@@ -153,6 +182,15 @@ core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
     get("checkpoint_every_s", c.checkpoint_every_s);
     get("max_bad_updates", c.max_bad_updates);
     get("curriculum_max_steps", c.curriculum_max_steps);
+    get("amp_clips", c.amp_clips);
+    get("amp_task_weight", c.amp_task_weight);
+    get("amp_style_weight", c.amp_style_weight);
+    get("amp_grad_penalty", c.amp_grad_penalty);
+    get("amp_disc_hidden", c.amp_disc_hidden);
+    get("amp_disc_lr", c.amp_disc_lr);
+    get("amp_disc_batch", c.amp_disc_batch);
+    get("amp_disc_updates", c.amp_disc_updates);
+    get("amp_replay_size", c.amp_replay_size);
   } catch (const nlohmann::json::exception& e) {
     return absl::InvalidArgumentError(std::string("training config: ") + e.what());
   }
@@ -161,16 +199,28 @@ core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
 }
 
 nlohmann::json IterationStats::ToJson() const {
-  return nlohmann::json{{"iteration", iteration},     {"env_steps", env_steps},
-                        {"wall_s", wall_s},           {"return", mean_return},
-                        {"ep_length", mean_length},   {"success", success_rate},
-                        {"fall", fall_rate},          {"episodes", episodes},
-                        {"policy_loss", policy_loss}, {"value_loss", value_loss},
-                        {"entropy", entropy},         {"approx_kl", approx_kl},
-                        {"clip_frac", clip_frac},     {"lr", lr},
-                        {"action_std", action_std},   {"curriculum", curriculum},
-                        {"steps_per_s", steps_per_s}, {"collect_s", collect_s},
-                        {"update_s", update_s},       {"skipped", skipped_minibatches}};
+  nlohmann::json j{{"iteration", iteration},     {"env_steps", env_steps},
+                   {"wall_s", wall_s},           {"return", mean_return},
+                   {"ep_length", mean_length},   {"success", success_rate},
+                   {"fall", fall_rate},          {"episodes", episodes},
+                   {"policy_loss", policy_loss}, {"value_loss", value_loss},
+                   {"entropy", entropy},         {"approx_kl", approx_kl},
+                   {"clip_frac", clip_frac},     {"lr", lr},
+                   {"action_std", action_std},   {"curriculum", curriculum},
+                   {"steps_per_s", steps_per_s}, {"collect_s", collect_s},
+                   {"update_s", update_s},       {"skipped", skipped_minibatches}};
+  if (amp) {
+    j["amp_disc_loss"] = amp_disc_loss;
+    j["amp_grad_penalty"] = amp_grad_penalty;
+    j["amp_expert_acc"] = amp_expert_acc;
+    j["amp_agent_acc"] = amp_agent_acc;
+    j["amp_d_expert"] = amp_d_expert;
+    j["amp_d_agent"] = amp_d_agent;
+    j["amp_style_reward"] = amp_style_reward;
+    j["amp_task_reward"] = amp_task_reward;
+    j["amp_skipped"] = amp_skipped;
+  }
+  return j;
 }
 
 struct PpoTrainer::Impl {
@@ -190,6 +240,41 @@ struct PpoTrainer::Impl {
   int curr_count = 0, curr_success = 0;  // episodes since the last curriculum check
   int64_t curr_steps = 0;                // env steps at the current level
   Clock::time_point last_ckpt = Clock::now();
+  // AMP (null when off)
+  struct Amp {
+    AmpDiscriminator disc{nullptr};
+    std::unique_ptr<torch::optim::Adam> opt;
+    torch::Tensor expert;  // [M, 2F] expert pairs
+    std::unique_ptr<AmpReplayBuffer> replay;
+  };
+  std::unique_ptr<Amp> amp;
+
+  // loads the clips and builds the discriminator; call after Build, before ResetAll
+  absl::Status BuildAmp() {
+    if (cfg.amp_clips.empty()) return absl::OkStatus();
+    absl::Status on = env->EnableAmp();
+    if (!on.ok()) return absl::InvalidArgumentError("amp_clips: " + std::string(on.message()));
+    const int f = env->task().amp_feature_dim();
+    std::vector<std::vector<float>> feats;
+    for (const std::string& path : cfg.amp_clips) {
+      SH_ASSIGN_OR_RETURN(MotionClip clip, LoadAnyClip(path));
+      SH_ASSIGN_OR_RETURN(std::vector<float> ft, env->task().AmpClipFeatures(clip));
+      if (ft.size() < 2 * static_cast<size_t>(f)) {
+        return absl::InvalidArgumentError(path +
+                                          ": the clip is too short for AMP (it needs "
+                                          "two frames at the policy rate)");
+      }
+      feats.push_back(std::move(ft));
+    }
+    amp = std::make_unique<Amp>();
+    amp->expert = AmpExpertPairs(feats, f);
+    amp->disc = AmpDiscriminator(f, cfg.amp_disc_hidden);
+    amp->disc->FitNormalizer(amp->expert.slice(1, 0, f));
+    amp->opt = std::make_unique<torch::optim::Adam>(amp->disc->parameters(),
+                                                    torch::optim::AdamOptions(cfg.amp_disc_lr));
+    amp->replay = std::make_unique<AmpReplayBuffer>(cfg.amp_replay_size, 2 * f);
+    return absl::OkStatus();
+  }
 
   std::vector<torch::Tensor> Params() {
     std::vector<torch::Tensor> p = actor->parameters();
@@ -244,6 +329,13 @@ struct PpoTrainer::Impl {
       ar.write("best_success", c10::IValue(best_success));
       ar.write("curriculum", c10::IValue(env->task().curriculum()));
       ar.write("config", c10::IValue(cfg.ToJson().dump()));
+      if (amp) {
+        torch::serialize::OutputArchive d, dopt;
+        amp->disc->save(d);
+        ar.write("amp_disc", d);
+        amp->opt->save(dopt);
+        ar.write("amp_optim", dopt);
+      }
       return SaveAtomic(ar, path);
     } catch (const c10::Error& e) {
       return absl::InternalError(path + ": " + e.what_without_backtrace());
@@ -293,6 +385,7 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::CreateWithTask(
   impl->out = out_dir;
   impl->env = std::make_unique<VecEnv>(std::move(task), config.threads, config.seed);
   impl->Build();
+  SH_RETURN_IF_ERROR(impl->BuildAmp());
   impl->env->ResetAll(0);
   std::ofstream(out_dir + "/config.json") << config.ToJson().dump(2) << "\n";
   return std::unique_ptr<PpoTrainer>(new PpoTrainer(std::move(impl)));
@@ -325,6 +418,7 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
                         MakeTask(impl->cfg.task, impl->cfg.num_envs));
     impl->env = std::make_unique<VecEnv>(std::move(task), impl->cfg.threads, impl->cfg.seed);
     impl->Build();
+    SH_RETURN_IF_ERROR(impl->BuildAmp());
     auto meta = control::ReadPolicyMeta(ar);
     if (!meta.ok()) return core::Annotate(meta.status(), path);
     if (meta->obs_dim != impl->env->obs_dim() || meta->act_dim != impl->env->act_dim() ||
@@ -338,6 +432,16 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
     impl->actor->load(a);
     impl->critic->load(c);
     impl->opt->load(o);
+    if (impl->amp) {
+      torch::serialize::InputArchive d, dopt;
+      if (!ar.try_read("amp_disc", d) || !ar.try_read("amp_optim", dopt)) {
+        return absl::DataLossError(path +
+                                   ": the config has amp_clips but the checkpoint holds no "
+                                   "discriminator (amp_disc, amp_optim)");
+      }
+      impl->amp->disc->load(d);
+      impl->amp->opt->load(dopt);
+    }
     SH_RETURN_IF_ERROR(core::Annotate(impl->norm.Load(ar, impl->env->obs_dim()), path));
     std::istringstream r(rng.toStringRef());
     r >> impl->rng.engine();
@@ -406,6 +510,9 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   torch::Tensor b_val = torch::empty({T, E});
   torch::Tensor b_rew = torch::empty({T, E});
   torch::Tensor b_done = torch::empty({T, E});
+  const int F = m.amp ? m.env->amp_feature_dim() : 0;
+  torch::Tensor b_amp = m.amp ? torch::empty({T, E, 2 * F}) : torch::Tensor();
+  double style_sum = 0, task_sum = 0;
   IterationStats st;
 
   // rollout
@@ -428,6 +535,18 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
       m.env->Step(act.data_ptr<float>());
       torch::Tensor rew =
           torch::from_blob(const_cast<float*>(m.env->rewards().data()), {E}).clone();
+      if (m.amp) {
+        // style reward of the step's (s_t, s_t+1); the time-limit bootstrap below is added
+        // to the mixed reward
+        torch::Tensor pairs =
+            torch::from_blob(const_cast<float*>(m.env->amp_pairs().data()), {E, 2 * F}).clone();
+        torch::Tensor style = AmpStyleReward(m.amp->disc, pairs);
+        b_amp[t] = pairs;
+        style_sum += style.sum().item<double>();
+        task_sum += rew.sum().item<double>();
+        rew = static_cast<float>(m.cfg.amp_task_weight) * rew +
+              static_cast<float>(m.cfg.amp_style_weight) * style;
+      }
       torch::Tensor done = torch::zeros({E});
       std::vector<int64_t> trunc;
       for (int i = 0; i < E; ++i) {
@@ -564,6 +683,40 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
     }
   } else {
     m.bad_in_row = 0;
+  }
+  // discriminator: agent pairs of this rollout into the replay buffer, then a few updates
+  if (m.amp) {
+    m.amp->replay->Add(b_amp.reshape({N, 2 * F}));
+    AmpUpdateStats sum;
+    int n_ok = 0;
+    for (int k = 0; k < m.cfg.amp_disc_updates; ++k) {
+      torch::Tensor e = SampleRows(m.amp->expert, m.cfg.amp_disc_batch, m.rng);
+      torch::Tensor a = m.amp->replay->Sample(m.cfg.amp_disc_batch, m.rng);
+      AmpUpdateStats s1;
+      if (!AmpUpdate(m.amp->disc, *m.amp->opt, e, a, m.cfg.amp_grad_penalty, m.cfg.max_grad_norm,
+                     &s1)) {
+        ++st.amp_skipped;
+        continue;
+      }
+      sum.loss += s1.loss;
+      sum.grad_penalty += s1.grad_penalty;
+      sum.expert_acc += s1.expert_acc;
+      sum.agent_acc += s1.agent_acc;
+      sum.d_expert += s1.d_expert;
+      sum.d_agent += s1.d_agent;
+      ++n_ok;
+    }
+    st.amp = true;
+    if (n_ok > 0) {
+      st.amp_disc_loss = sum.loss / n_ok;
+      st.amp_grad_penalty = sum.grad_penalty / n_ok;
+      st.amp_expert_acc = sum.expert_acc / n_ok;
+      st.amp_agent_acc = sum.agent_acc / n_ok;
+      st.amp_d_expert = sum.d_expert / n_ok;
+      st.amp_d_agent = sum.d_agent / n_ok;
+    }
+    st.amp_style_reward = style_sum / static_cast<double>(N);
+    st.amp_task_reward = task_sum / static_cast<double>(N);
   }
   auto t2 = Clock::now();
   ++m.iteration;

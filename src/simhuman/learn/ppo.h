@@ -4,6 +4,12 @@
 /// clipping, running observation normalization, NaN guards, atomic checkpoints and resume.
 /// This header is torch-free (the trainer is a pimpl); only app/ drives it and prints.
 ///
+/// AMP: with `amp_clips` set, the task's AMP features (VecTask::AmpClipFeatures) of the clips
+/// are the expert data of a discriminator (learn/amp.h) trained after each PPO update on
+/// agent pairs from a replay buffer; its weights, normalizer and Adam state are part of the
+/// checkpoint, and resuming an AMP run from a checkpoint without them is DataLoss (the replay
+/// buffer is not saved: it refills from the first iteration after a resume).
+///
 /// Run folder `out/`: config.json (resolved config), log.jsonl (one line per iteration),
 /// checkpoint.pt (everything needed to resume), policy.pt (latest policy export) and
 /// best_policy.pt (the export with the best recent success rate).
@@ -51,6 +57,18 @@ struct PpoConfig {
   /// and at the latest after this many env steps at one level (0: only on success).
   int64_t curriculum_max_steps = 400'000;
 
+  // AMP (learn/amp.h): off while amp_clips is empty. Rewards become
+  // amp_task_weight * r_task + amp_style_weight * r_style, r_style in [0, 1].
+  std::vector<std::string> amp_clips;  ///< clip files (.clip.json) or BVH files (.bvh)
+  double amp_task_weight = 1.0;        ///< w_G
+  double amp_style_weight = 0.5;       ///< w_S
+  double amp_grad_penalty = 5.0;       ///< w_gp of (w_gp / 2) E_expert ||dD/dx||^2
+  std::vector<int> amp_disc_hidden = {256, 256};
+  double amp_disc_lr = 3e-4;
+  int amp_disc_batch = 512;         ///< expert and agent pairs per discriminator minibatch
+  int amp_disc_updates = 8;         ///< discriminator minibatches per iteration
+  int64_t amp_replay_size = 65536;  ///< agent pairs kept for discriminator training
+
   absl::Status Validate() const;
   nlohmann::json ToJson() const;
   /// Strict: unknown keys are InvalidArgument naming the key; missing keys keep defaults.
@@ -69,6 +87,13 @@ struct IterationStats {
   double steps_per_s = 0, collect_s = 0, update_s = 0;
   int skipped_minibatches = 0;
   bool checkpointed = false;
+  // AMP (logged only when AMP is on): discriminator loss and gradient penalty, accuracy and
+  // mean D on expert and agent pairs (means over the iteration's discriminator updates), and
+  // the rollout's mean style and task rewards (before the weights).
+  bool amp = false;
+  double amp_disc_loss = 0, amp_grad_penalty = 0, amp_expert_acc = 0, amp_agent_acc = 0;
+  double amp_d_expert = 0, amp_d_agent = 0, amp_style_reward = 0, amp_task_reward = 0;
+  int amp_skipped = 0;
   nlohmann::json ToJson() const;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "simhuman/core/check.h"
 #include "simhuman/core/rng.h"
 
 namespace simhuman::learn {
@@ -99,7 +100,29 @@ void VecEnv::ResetAll(uint64_t episode_base) {
                  obs_.data() + static_cast<size_t>(i) * d);
     ep_ret_[i] = 0;
     ep_len_[i] = 0;
+    if (amp_dim_ > 0) task_->AmpFeatures(i, amp_cur_.data() + static_cast<size_t>(i) * amp_dim_);
   });
+}
+
+absl::Status VecEnv::EnableAmp() {
+  const int f = task_->amp_feature_dim();
+  if (f <= 0) {
+    return absl::UnimplementedError("task '" + task_->name() +
+                                    "' has no AMP features; AMP needs the walk task");
+  }
+  amp_dim_ = f;
+  amp_cur_.assign(static_cast<size_t>(num_envs()) * f, 0.f);
+  amp_pairs_.assign(static_cast<size_t>(num_envs()) * 2 * f, 0.f);
+  return absl::OkStatus();
+}
+
+void VecTask::AmpFeatures(int, float*) {
+  SH_CHECK(false, "AmpFeatures called on a task without AMP features");
+}
+
+core::StatusOr<std::vector<float>> VecTask::AmpClipFeatures(const MotionClip&) const {
+  return absl::UnimplementedError("task '" + name() +
+                                  "' has no AMP features; AMP needs the walk task");
 }
 
 void VecEnv::Step(const float* actions) {
@@ -114,10 +137,19 @@ void VecEnv::Step(const float* actions) {
     ep_ret_[i] += info.reward;
     ++ep_len_[i];
     ended_[i] = info.terminated || info.truncated;
+    if (amp_dim_ > 0) {
+      const size_t f = static_cast<size_t>(amp_dim_);
+      float* pair = amp_pairs_.data() + i * 2 * f;
+      float* cur = amp_cur_.data() + i * f;
+      std::memcpy(pair, cur, sizeof(float) * f);
+      task_->AmpFeatures(i, pair + f);
+      std::memcpy(cur, pair + f, sizeof(float) * f);
+    }
     if (ended_[i]) {
       std::memcpy(terminal_obs_.data() + static_cast<size_t>(i) * d, o, sizeof(float) * d);
       ep_done_[i] = EpisodeStats{ep_ret_[i], ep_len_[i], info.success, info.terminated};
       task_->Reset(i, core::DeriveSeed(seed_, static_cast<uint64_t>(i), ep_count_[i]++), o);
+      if (amp_dim_ > 0) task_->AmpFeatures(i, amp_cur_.data() + static_cast<size_t>(i) * amp_dim_);
       ep_ret_[i] = 0;
       ep_len_[i] = 0;
     }

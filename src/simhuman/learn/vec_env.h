@@ -15,7 +15,11 @@
 #include <thread>
 #include <vector>
 
+#include "simhuman/core/status.h"
+
 namespace simhuman::learn {
+
+struct MotionClip;
 
 /// What one env step reports.
 struct StepInfo {
@@ -42,6 +46,18 @@ class VecTask {
   /// Curriculum level in [0, 1] (tasks without one ignore it).
   virtual double curriculum() const { return 1.0; }
   virtual void set_curriculum(double) {}
+
+  // AMP (learn/amp.h). Tasks without AMP features keep these defaults: amp_feature_dim() 0
+  // and AmpClipFeatures Unimplemented, which PpoTrainer reports when amp_clips is set.
+
+  /// Floats per AMP feature vector (0: the task has no AMP features).
+  virtual int amp_feature_dim() const { return 0; }
+  /// Writes env i's AMP features of its current state (after Reset or Step of env i, from the
+  /// same thread; may update env i's kinematics). Only called when amp_feature_dim() > 0.
+  virtual void AmpFeatures(int i, float* out);
+  /// The features of `clip` resampled at the task's policy rate, [frames x dim] row-major.
+  /// Unimplemented (naming the task) by default.
+  virtual core::StatusOr<std::vector<float>> AmpClipFeatures(const MotionClip& clip) const;
 };
 
 /// A fixed pool of threads running index ranges (the calling thread takes part).
@@ -100,6 +116,15 @@ class VecEnv {
   const std::vector<EpisodeStats>& finished() const { return finished_; }
   uint64_t episodes_started() const;
 
+  /// Turns on AMP feature pairs (Unimplemented naming the task when it has none). Call before
+  /// ResetAll.
+  absl::Status EnableAmp();
+  bool amp_enabled() const { return amp_dim_ > 0; }
+  int amp_feature_dim() const { return amp_dim_; }
+  /// After Step: per env the pair (s_t, s_t+1) of the step, [E x 2F]; s_t+1 is the state the
+  /// step reached (before any reset), like terminal_obs().
+  const std::vector<float>& amp_pairs() const { return amp_pairs_; }
+
  private:
   std::unique_ptr<VecTask> task_;
   WorkerPool pool_;
@@ -111,6 +136,8 @@ class VecEnv {
   std::vector<uint64_t> ep_count_;
   std::vector<EpisodeStats> ep_done_;  // per env, valid where ended_
   std::vector<EpisodeStats> finished_;
+  int amp_dim_ = 0;
+  std::vector<float> amp_cur_, amp_pairs_;  // [E x F] current state, [E x 2F] last step
 };
 
 }  // namespace simhuman::learn

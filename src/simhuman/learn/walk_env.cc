@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "simhuman/learn/amp_features.h"
+#include "simhuman/learn/motion_clip.h"
+
 namespace simhuman::learn {
 namespace {
 
@@ -105,6 +108,19 @@ void WalkTask::Reset(int i, uint64_t seed, float* obs) {
   DrawTarget(e);
   control::UpdateWalkCommand(params_, d, ix_, &e.s);
   control::WalkObservation(params_, d, ix_, e.s, obs);
+}
+
+int WalkTask::amp_feature_dim() const { return kAmpFeatureDim; }
+
+void WalkTask::AmpFeatures(int i, float* out) {
+  const mjModel* m = world_->model();
+  mj_kinematics(m, envs_[i].d);
+  learn::AmpFeatures(m, envs_[i].d, ix_.agent, out);
+}
+
+core::StatusOr<std::vector<float>> WalkTask::AmpClipFeatures(const MotionClip& clip) const {
+  SH_ASSIGN_OR_RETURN(MotionClip at_rate, ResampleClip(clip, 1.0 / control::kWalkPolicyDt));
+  return ClipAmpFeatures(world_->model(), ix_.agent, at_rate);
 }
 
 bool WalkTask::Fallen(int i) const {

@@ -49,6 +49,11 @@ class WalkTask : public VecTask {
   void Step(int i, const float* action, float* obs, StepInfo* info) override;
   double curriculum() const override { return curriculum_; }
   void set_curriculum(double c) override { curriculum_ = c; }
+  /// AMP features (learn/amp_features.h) at the policy rate; AmpFeatures runs mj_kinematics on
+  /// env i first (physics steps leave positions one step behind qpos).
+  int amp_feature_dim() const override;
+  void AmpFeatures(int i, float* out) override;
+  core::StatusOr<std::vector<float>> AmpClipFeatures(const MotionClip& clip) const override;
 
   const mjModel* model() const { return world_->model(); }
   const mjData* data(int i) const { return envs_[i].d; }
