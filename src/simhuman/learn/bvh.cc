@@ -35,9 +35,12 @@ class Lexer {
     std::istringstream in(text);
     std::string line;
     int n = 0;
+    bool header = true;  // the frame values after "Frame Time:" are read from lines_
     while (std::getline(in, line)) {
       ++n;
       lines_.push_back(line);
+      if (!header) continue;
+      const size_t before = toks_.size();
       std::string cur;
       auto flush = [&] {
         if (!cur.empty()) toks_.push_back({cur, n});
@@ -54,6 +57,10 @@ class Lexer {
         }
       }
       flush();
+      if (toks_.size() >= before + 2 && toks_[before].text == "Frame" &&
+          toks_[before + 1].text == "Time:") {
+        header = false;
+      }
     }
     last_line_ = n;
   }
@@ -108,7 +115,7 @@ core::StatusOr<BvhChannel> ChannelOf(const std::string& s) {
   return it->second;
 }
 
-absl::Status ParseJoint(Lexer& lx, BvhMotion* bvh, int parent, bool root, int line) {
+absl::Status ParseJoint(Lexer& lx, BvhMotion* bvh, int parent, bool root) {
   SH_ASSIGN_OR_RETURN(Token name, lx.Next("a joint name"));
   BvhJoint j;
   j.name = name.text;
@@ -151,12 +158,11 @@ absl::Status ParseJoint(Lexer& lx, BvhMotion* bvh, int parent, bool root, int li
   bvh->num_channels += static_cast<int>(n);
   const int self = static_cast<int>(bvh->joints.size());
   bvh->joints.push_back(j);
-  (void)line;
   for (;;) {
     SH_ASSIGN_OR_RETURN(Token t, lx.Next("JOINT, End Site or '}'"));
     if (t.text == "}") return absl::OkStatus();
     if (t.text == "JOINT") {
-      SH_RETURN_IF_ERROR(ParseJoint(lx, bvh, self, false, t.line));
+      SH_RETURN_IF_ERROR(ParseJoint(lx, bvh, self, false));
     } else if (t.text == "End") {
       SH_RETURN_IF_ERROR(lx.Expect("Site"));
       SH_RETURN_IF_ERROR(lx.Expect("{"));
@@ -295,7 +301,7 @@ core::StatusOr<BvhMotion> ParseBvh(const std::string& text, const std::string& w
   BvhMotion bvh;
   SH_RETURN_IF_ERROR(lx.Expect("HIERARCHY"));
   SH_RETURN_IF_ERROR(lx.Expect("ROOT"));
-  SH_RETURN_IF_ERROR(ParseJoint(lx, &bvh, -1, true, lx.line()));
+  SH_RETURN_IF_ERROR(ParseJoint(lx, &bvh, -1, true));
   if (!lx.done() && lx.Peek().text == "ROOT") {
     return lx.Error(lx.line(), "a second ROOT is not supported (one skeleton per file)");
   }
@@ -378,10 +384,6 @@ core::StatusOr<MotionClip> RetargetBvh(const BvhMotion& bvh, const std::string& 
         " (names compare without case, '_', '-', spaces and a 'prefix:')");
   }
   const int hips = jt["hips"], head = jt["head"];
-  if (hips != 0) {
-    return absl::InvalidArgumentError(where + ": the hips joint '" + bvh.joints[hips].name +
-                                      "' must be the ROOT");
-  }
   const int neck = jt["neck"] >= 0 && IsAncestor(bvh, jt["neck"], head) ? jt["neck"] : head;
   const int chest = bvh.joints[neck].parent;
   if (chest <= 0) {
@@ -483,13 +485,15 @@ core::StatusOr<MotionClip> RetargetBvh(const BvhMotion& bvh, const std::string& 
   clip.source = where;
   clip.frames.resize(bvh.frames.size());
   std::vector<Matrix3d> G(nj);
+  std::vector<Vector3d> P(nj);  // global joint positions (file units)
   Vector3d origin_xy = Vector3d::Zero();
   for (size_t f = 0; f < bvh.frames.size(); ++f) {
     const std::vector<double>& row = bvh.frames[f];
-    Vector3d root_pos = bvh.joints[0].offset;
     for (size_t i = 0; i < nj; ++i) {
       const BvhJoint& j = bvh.joints[i];
       Matrix3d L = Matrix3d::Identity();
+      // position channels replace the OFFSET (the root's are its position)
+      Vector3d local = j.offset;
       for (size_t c = 0; c < j.channels.size(); ++c) {
         double v = row[j.first_channel + c];
         switch (j.channels[c]) {
@@ -503,22 +507,23 @@ core::StatusOr<MotionClip> RetargetBvh(const BvhMotion& bvh, const std::string& 
             L = L * AxisRot(2, v * kDeg);
             break;
           case BvhChannel::kXpos:
-            if (i == 0) root_pos.x() = v;
+            local.x() = v;
             break;
           case BvhChannel::kYpos:
-            if (i == 0) root_pos.y() = v;
+            local.y() = v;
             break;
           case BvhChannel::kZpos:
-            if (i == 0) root_pos.z() = v;
+            local.z() = v;
             break;
         }
       }
       G[i] = j.parent < 0 ? L : G[j.parent] * L;
+      P[i] = j.parent < 0 ? local : P[j.parent] + G[j.parent] * local;
     }
     Matrix3d R[kNumSegs];
     for (int s = 0; s < kNumSegs; ++s) R[s] = A * G[segs[s].joint] * A.transpose() * C[s];
     ClipFrame& fr = clip.frames[f];
-    Vector3d p = scale * (A * root_pos);
+    Vector3d p = scale * (A * P[hips]);
     if (f == 0) origin_xy = Vector3d(p.x(), p.y(), 0);
     p -= origin_xy;
     for (int k = 0; k < 3; ++k) fr.root_pos_m[k] = p[k];

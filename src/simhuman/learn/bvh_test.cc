@@ -157,6 +157,28 @@ TEST(Bvh, MixamoNamesAndSixChannelJoints) {
   ExpectRetargeted(*clip);
 }
 
+// hips below another root, with 6 channels (their positions move them)
+TEST(Bvh, HipsBelowAReferenceRoot) {
+  std::string t = ThreeFrames();
+  t.replace(t.find("ROOT Hips"), 9,
+            "ROOT Reference\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition "
+            "Xrotation Yrotation Zrotation\n  JOINT Hips");
+  t.replace(t.find("MOTION"), 6, "}\nMOTION");
+  // every frame line gets the reference's six zeros in front
+  std::istringstream in(t);
+  std::string line, out;
+  bool frames = false;
+  while (std::getline(in, line)) {
+    out += (frames ? "0 0 0 0 0 0 " : "") + line + "\n";
+    frames = frames || line.rfind("Frame Time:", 0) == 0;
+  }
+  auto bvh = ParseBvh(out, "ref.bvh");
+  ASSERT_TRUE(bvh.ok()) << bvh.status();
+  auto clip = RetargetBvh(*bvh, "ref.bvh");
+  ASSERT_TRUE(clip.ok()) << clip.status();
+  ExpectRetargeted(*clip);
+}
+
 TEST(Bvh, LoadsFileAndRetargetsThroughLoadAnyClip) {
   std::string path = (std::filesystem::temp_directory_path() /
                       ("simhuman_bvh_test_" + std::to_string(getpid()) + ".BVH"))
