@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include "simhuman/learn/walk_env.h"
 #include "simhuman/world/sim_world.h"
 
 namespace simhuman::learn {
@@ -48,17 +49,7 @@ core::StatusOr<MotionClip> GaitClip(const GaitClipOptions& o) {
     for (int k = 0; k < 3; ++k) d->qpos[a.root_qpos + k] = fr.root_pos_m[k];
     for (int j = 0; j < world::kHumanoidDofs; ++j) d->qpos[a.hinge_qpos[j]] = fr.q_rad[j];
     mj_kinematics(m, d);
-    double lowest = 1e9;
-    for (int g : feet) {
-      const mjtNum* R = d->geom_xmat + 9 * g;
-      const mjtNum* sz = m->geom_size + 3 * g;
-      for (int c = 0; c < 8; ++c) {
-        double z = d->geom_xpos[3 * g + 2];
-        for (int k = 0; k < 3; ++k) z += ((c >> k) & 1 ? 1 : -1) * sz[k] * R[6 + k];
-        lowest = std::min(lowest, z);
-      }
-    }
-    fr.root_pos_m[2] -= lowest;
+    fr.root_pos_m[2] -= LowestBoxCornerZ(m, d, {feet[0], feet[1]});
     clip.frames.push_back(fr);
   }
   return clip;

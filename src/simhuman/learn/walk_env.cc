@@ -89,16 +89,7 @@ void WalkTask::Reset(int i, uint64_t seed, float* obs) {
   }
   // put the lowest foot corner on the floor
   mj_forward(m, d);
-  double lowest = 1e9;
-  for (int g : {ix_.left_foot_geom, ix_.right_foot_geom}) {
-    const mjtNum* R = d->geom_xmat + 9 * g;
-    const mjtNum* sz = m->geom_size + 3 * g;
-    for (int c = 0; c < 8; ++c) {
-      double z = d->geom_xpos[3 * g + 2];
-      for (int k = 0; k < 3; ++k) z += ((c >> k) & 1 ? 1 : -1) * sz[k] * R[6 + k];
-      lowest = std::min(lowest, z);
-    }
-  }
+  const double lowest = LowestBoxCornerZ(m, d, {ix_.left_foot_geom, ix_.right_foot_geom});
   d->qpos[a.root_qpos + 2] -= lowest - 0.001;
   mj_forward(m, d);
   e.s = control::WalkState();
@@ -246,6 +237,20 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   info->terminated = fell;
   info->truncated = e.steps >= kMaxSteps;
   info->success = e.success;
+}
+
+double LowestBoxCornerZ(const mjModel* m, const mjData* d, const std::vector<int>& geoms) {
+  double lowest = 1e9;
+  for (int g : geoms) {
+    const mjtNum* R = d->geom_xmat + 9 * g;
+    const mjtNum* sz = m->geom_size + 3 * g;
+    for (int c = 0; c < 8; ++c) {
+      double z = d->geom_xpos[3 * g + 2];
+      for (int k = 0; k < 3; ++k) z += ((c >> k) & 1 ? 1 : -1) * sz[k] * R[6 + k];
+      lowest = std::min(lowest, z);
+    }
+  }
+  return lowest;
 }
 
 }  // namespace simhuman::learn
