@@ -313,4 +313,41 @@ TEST(CliIntegrationTest, TrainResumeAndCorruptCheckpoint) {
   EXPECT_NE(walk_no_policy.err.find("--policy"), std::string::npos);
 }
 
+TEST(CliIntegrationTest, ClipGaitConvertAndBadInput) {
+  std::string dir = TempDir("clip");
+  std::filesystem::create_directories(dir);
+  const std::string gait = dir + "/gait.clip.json";
+  Proc p = RunBin({"clip", "gait", "--out", gait, "--seconds", "1"});
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  std::ifstream in(gait);
+  nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["format"], "simhuman-clip-v1");
+  EXPECT_GE(j["frames"].size(), 30u);
+  // a CMU-style BVH with hips and one leg only: refused, naming the file and the missing joints
+  const std::string bvh = dir + "/leg.bvh";
+  {
+    std::ofstream out(bvh);
+    out << "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition Yposition Zposition "
+           "Zrotation Xrotation Yrotation\n JOINT LeftUpLeg\n {\n  OFFSET 1.5 -1 0\n  CHANNELS 3 "
+           "Zrotation Xrotation Yrotation\n  JOINT LeftLeg\n  {\n   OFFSET 0 -7 0\n   CHANNELS 3 "
+           "Zrotation Xrotation Yrotation\n   End Site\n   {\n    OFFSET 0 -7 0\n   }\n  }\n "
+           "}\n}\nMOTION\nFrames: 2\nFrame Time: 0.0333\n0 15 0 0 0 0 0 0 0 0 30 0\n"
+           "0 15 0 0 0 0 0 0 0 0 30 0\n";
+  }
+  Proc conv = RunBin({"clip", "convert", "--bvh", bvh, "--out", dir + "/leg.clip.json"});
+  EXPECT_EQ(conv.exit_code, 2) << conv.out;
+  EXPECT_NE(conv.err.find("leg.bvh"), std::string::npos) << conv.err;
+  EXPECT_NE(conv.err.find("leftarm"), std::string::npos) << conv.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/leg.clip.json"));
+  Proc missing = RunBin({"clip", "convert", "--bvh", dir + "/none.bvh", "--out", dir + "/x.json"});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("none.bvh"), std::string::npos) << missing.err;
+  Proc bad = RunBin({"clip", "gait", "--out", gait, "--seconds", "-1"});
+  Proc fast = RunBin({"clip", "gait", "--out", gait, "--speed", "50"});
+  EXPECT_EQ(fast.exit_code, 2);
+  EXPECT_NE(fast.err.find("--speed"), std::string::npos) << fast.err;
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--seconds"), std::string::npos) << bad.err;
+}
+
 }  // namespace

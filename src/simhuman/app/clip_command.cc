@@ -53,12 +53,22 @@ int ClipGaitCommand(const ClipFlags& flags, std::ostream& out, std::ostream& err
   if (flags.out.empty()) {
     return ReportError(err, "clip gait", absl::InvalidArgumentError("--out is required"));
   }
+  if (!(flags.seconds > 0 && flags.seconds <= 3600)) {
+    return ReportError(err, "clip gait",
+                       absl::InvalidArgumentError("--seconds " + std::to_string(flags.seconds) +
+                                                  " is invalid; valid: (0, 3600]"));
+  }
+  if (flags.fps < 0 || !std::isfinite(flags.fps) || flags.fps > 1000) {
+    return ReportError(err, "clip gait",
+                       absl::InvalidArgumentError("--fps must be in (0, 1000] (0: 30 fps)"));
+  }
+  // with --seconds and --fps checked, GaitClip can only refuse the speed
   learn::GaitClipOptions o;
   o.seconds = flags.seconds;
   o.speed_mps = flags.speed_mps;
   if (flags.fps > 0) o.fps = flags.fps;
   auto clip = learn::GaitClip(o);
-  if (!clip.ok()) return ReportError(err, "clip gait", clip.status());
+  if (!clip.ok()) return ReportError(err, "clip gait", core::Annotate(clip.status(), "--speed"));
   absl::Status s = MakeParentDir(flags.out);
   if (s.ok()) s = learn::SaveMotionClip(*clip, flags.out);
   if (!s.ok()) return ReportError(err, "clip gait", s);
