@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -12,6 +11,7 @@
 #include "simhuman/core/json_io.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/core/scene_catalog.h"
+#include "simhuman/core/testing_temp.h"
 #include "simhuman/core/version.h"
 
 namespace simhuman::core {
@@ -141,7 +141,7 @@ TEST(JsonIoTest, MissingFileAndStrictKeys) {
 }
 
 TEST(JsonIoTest, AtomicWriteReplacesTheFile) {
-  std::string path = ::testing::TempDir() + std::to_string(getpid()) + "_simhuman_atomic.txt";
+  std::string path = core::testing::UniqueTempPath("simhuman_atomic.txt");
   ASSERT_TRUE(WriteFileAtomic(path, "one").ok());
   ASSERT_TRUE(WriteFileAtomic(path, "two").ok());
   auto r = ReadFile(path);

@@ -1,12 +1,12 @@
 #include "simhuman/learn/amp.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "simhuman/core/testing_temp.h"
 #include "simhuman/learn/amp_features.h"
 #include "simhuman/learn/gait_clip.h"
 #include "simhuman/learn/motion_clip.h"
@@ -20,8 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string TempDir(const std::string& name) {
-  fs::path p =
-      fs::temp_directory_path() / ("simhuman_amp_test_" + std::to_string(getpid()) + "_" + name);
+  fs::path p = core::testing::UniqueTempPath("amp_test_" + name);
   fs::remove_all(p);
   return p.string();
 }

@@ -1,13 +1,14 @@
 #include "simhuman/learn/bvh.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include "simhuman/core/testing_temp.h"
 
 namespace simhuman::learn {
 namespace {
@@ -180,9 +181,7 @@ TEST(Bvh, HipsBelowAReferenceRoot) {
 }
 
 TEST(Bvh, LoadsFileAndRetargetsThroughLoadAnyClip) {
-  std::string path = (std::filesystem::temp_directory_path() /
-                      ("simhuman_bvh_test_" + std::to_string(getpid()) + ".BVH"))
-                         .string();
+  std::string path = core::testing::UniqueTempPath("bvh_test.BVH");
   std::ofstream(path) << ThreeFrames();
   auto clip = LoadAnyClip(path);
   ASSERT_TRUE(clip.ok()) << clip.status();

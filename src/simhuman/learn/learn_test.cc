@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
@@ -8,6 +7,7 @@
 #include <fstream>
 
 #include "simhuman/control/policy/walk_task.h"
+#include "simhuman/core/testing_temp.h"
 #include "simhuman/learn/ppo.h"
 #include "simhuman/learn/reach_env.h"
 #include "simhuman/learn/vec_env.h"
@@ -19,8 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string TempDir(const std::string& name) {
-  fs::path p =
-      fs::temp_directory_path() / ("simhuman_learn_test_" + std::to_string(getpid()) + "_" + name);
+  fs::path p = core::testing::UniqueTempPath("learn_test_" + name);
   fs::remove_all(p);
   return p.string();
 }

@@ -1,7 +1,6 @@
 #include "simhuman/learn/motion_clip.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -9,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "simhuman/core/rng.h"
+#include "simhuman/core/testing_temp.h"
 
 namespace simhuman::learn {
 namespace {
@@ -16,9 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string TempPath(const std::string& name) {
-  return (fs::temp_directory_path() /
-          ("simhuman_clip_test_" + std::to_string(getpid()) + "_" + name))
-      .string();
+  return core::testing::UniqueTempPath("clip_test_" + name);
 }
 
 MotionClip RandomClip(int frames, uint64_t seed) {

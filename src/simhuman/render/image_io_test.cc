@@ -1,11 +1,12 @@
 #include "simhuman/render/image_io.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include "simhuman/core/testing_temp.h"
 
 namespace simhuman::render {
 namespace {
@@ -24,8 +25,7 @@ std::vector<uint8_t> Gradient(int w, int h, int seed) {
 }
 
 TEST(ImageIoTest, PngRoundTripIsExact) {
-  const std::string path =
-      ::testing::TempDir() + std::to_string(getpid()) + "_simhuman_roundtrip.png";
+  const std::string path = core::testing::UniqueTempPath("simhuman_roundtrip.png");
   const int w = 37, h = 21;  // odd sizes: no row padding anywhere
   const std::vector<uint8_t> rgb = Gradient(w, h, 5);
   ASSERT_TRUE(WritePng(path, rgb, w, h).ok());
@@ -41,7 +41,7 @@ TEST(ImageIoTest, PngRoundTripIsExact) {
 
 TEST(ImageIoTest, WritePngErrorsNameTheCulprit) {
   const std::vector<uint8_t> rgb = Gradient(4, 4, 0);
-  absl::Status s = WritePng(::testing::TempDir() + std::to_string(getpid()) + "_x.png", rgb, 5, 4);
+  absl::Status s = WritePng(core::testing::UniqueTempPath("x.png"), rgb, 5, 4);
   EXPECT_EQ(s.code(), absl::StatusCode::kInvalidArgument);
   s = WritePng("/nonexistent_dir_simhuman/x.png", rgb, 4, 4);
   EXPECT_EQ(s.code(), absl::StatusCode::kNotFound);
@@ -49,7 +49,7 @@ TEST(ImageIoTest, WritePngErrorsNameTheCulprit) {
 }
 
 TEST(ImageIoTest, ReadPngRejectsNonPng) {
-  const std::string path = ::testing::TempDir() + std::to_string(getpid()) + "_malformed_not_a.png";
+  const std::string path = core::testing::UniqueTempPath("malformed_not_a.png");
   std::FILE* f = std::fopen(path.c_str(), "wb");
   ASSERT_NE(f, nullptr);
   std::fputs("this is not a png", f);
@@ -120,7 +120,7 @@ TEST(ImageIoTest, ContactSheetRejectsBadInput) {
 }
 
 TEST(ImageIoTest, WriteContactSheetWritesPngOfSheetSize) {
-  const std::string path = ::testing::TempDir() + std::to_string(getpid()) + "_simhuman_sheet.png";
+  const std::string path = core::testing::UniqueTempPath("simhuman_sheet.png");
   std::vector<std::vector<uint8_t>> frames(6, Gradient(16, 12, 1));
   ASSERT_TRUE(WriteContactSheet(path, frames, 16, 12, 3, 2, 1).ok());
   std::vector<uint8_t> rgb;

@@ -1,13 +1,13 @@
 #include "simhuman/render/offscreen.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "simhuman/core/testing_temp.h"
 #include "simhuman/render/image_io.h"
 #include "simhuman/render/test_scene.h"
 
@@ -168,9 +168,8 @@ TEST_F(OffscreenTest, CaptionChangesTopRowsOnly) {
   EXPECT_GT(changed_top_band, 20);
   EXPECT_EQ(changed_below, 0);
   if (HasFailure()) {
-    ASSERT_TRUE(WritePng(::testing::TempDir() + "caption_test_" + std::to_string(getpid()) + ".png",
-                         captioned, 160, 120)
-                    .ok());
+    ASSERT_TRUE(
+        WritePng(core::testing::UniqueTempPath("caption_test.png"), captioned, 160, 120).ok());
   }
 }
 

@@ -2,11 +2,12 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include "simhuman/core/testing_temp.h"
 
 namespace simhuman::render {
 namespace {
@@ -27,8 +28,7 @@ std::vector<uint8_t> Frame(int w, int h, int t) {
 
 TEST(VideoTest, WritesNonEmptyMp4) {
   SKIP_WITHOUT_FFMPEG();
-  const std::string path =
-      ::testing::TempDir() + std::to_string(getpid()) + "_simhuman_video_test.mp4";
+  const std::string path = core::testing::UniqueTempPath("simhuman_video_test.mp4");
   std::remove(path.c_str());
   auto writer = VideoWriter::Open(path, 64, 48, 30);
   ASSERT_TRUE(writer.ok()) << writer.status();
@@ -43,8 +43,7 @@ TEST(VideoTest, WritesNonEmptyMp4) {
 
 TEST(VideoTest, OddSizesArePadded) {
   SKIP_WITHOUT_FFMPEG();
-  const std::string path =
-      ::testing::TempDir() + std::to_string(getpid()) + "_simhuman_video_odd.mp4";
+  const std::string path = core::testing::UniqueTempPath("simhuman_video_odd.mp4");
   auto writer = VideoWriter::Open(path, 33, 17, 10);
   ASSERT_TRUE(writer.ok()) << writer.status();
   for (int t = 0; t < 3; ++t) ASSERT_TRUE((*writer)->AddFrame(Frame(33, 17, t)).ok());
@@ -56,8 +55,7 @@ TEST(VideoTest, OddSizesArePadded) {
 
 TEST(VideoTest, WrongFrameSizeIsAnError) {
   SKIP_WITHOUT_FFMPEG();
-  const std::string path =
-      ::testing::TempDir() + std::to_string(getpid()) + "_simhuman_video_size.mp4";
+  const std::string path = core::testing::UniqueTempPath("simhuman_video_size.mp4");
   auto writer = VideoWriter::Open(path, 16, 16, 10);
   ASSERT_TRUE(writer.ok()) << writer.status();
   EXPECT_EQ((*writer)->AddFrame(Frame(16, 15, 0)).code(), absl::StatusCode::kInvalidArgument);
@@ -70,8 +68,7 @@ TEST(VideoTest, FailingFfmpegIsAnErrorNotACrash) {
   SKIP_WITHOUT_FFMPEG();
   // ffmpeg cannot guess a container for this extension: it exits with an error at once, and
   // later frames hit a closed socket (which must not raise SIGPIPE)
-  const std::string path =
-      ::testing::TempDir() + std::to_string(getpid()) + "_simhuman_video_bad.notavideoformat";
+  const std::string path = core::testing::UniqueTempPath("simhuman_video_bad.notavideoformat");
   auto writer = VideoWriter::Open(path, 64, 64, 10);
   ASSERT_TRUE(writer.ok()) << writer.status();
   absl::Status s;
@@ -86,8 +83,7 @@ TEST(VideoTest, FailingFfmpegIsAnErrorNotACrash) {
 TEST(VideoTest, MissingFfmpegOrFolderIsAClearError) {
   VideoOptions options;
   options.ffmpeg = "simhuman-no-such-ffmpeg";
-  auto writer = VideoWriter::Open(::testing::TempDir() + std::to_string(getpid()) + "_x.mp4", 16,
-                                  16, 10, options);
+  auto writer = VideoWriter::Open(core::testing::UniqueTempPath("x.mp4"), 16, 16, 10, options);
   EXPECT_EQ(writer.status().code(), absl::StatusCode::kNotFound);
   EXPECT_NE(writer.status().message().find("Debian package ffmpeg"), std::string::npos)
       << writer.status();

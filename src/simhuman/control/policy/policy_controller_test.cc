@@ -1,23 +1,19 @@
 #include "simhuman/control/policy/policy_controller.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
 #include "simhuman/control/policy/policy_net.h"
+#include "simhuman/core/testing_temp.h"
 #include "simhuman/world/objects.h"
 
 namespace simhuman::control {
 namespace {
 
-namespace fs = std::filesystem;
-
 std::string WritePolicy(const std::string& name, const std::string& task, int obs_dim) {
-  std::string path = (fs::temp_directory_path() /
-                      ("simhuman_policy_test_" + std::to_string(getpid()) + "_" + name))
-                         .string();
+  std::string path = core::testing::UniqueTempPath("policy_test_" + name);
   torch::manual_seed(1);
   GaussianActor actor(obs_dim, kWalkActDim, std::vector<int>{16, 16}, 0.5);
   ObsNormalizer norm(obs_dim);
@@ -109,9 +105,7 @@ TEST(WalkPolicyController, WrongTaskMissingAndCorruptFilesAreErrors) {
   EXPECT_NE(reach.status().message().find("reach"), std::string::npos);
   auto missing = WalkPolicyController::Load("/nonexistent/walk.pt", world.get(), 0);
   EXPECT_EQ(missing.status().code(), absl::StatusCode::kNotFound);
-  std::string bad = (fs::temp_directory_path() /
-                     ("simhuman_policy_test_malformed_" + std::to_string(getpid()) + ".pt"))
-                        .string();
+  std::string bad = core::testing::UniqueTempPath("policy_test_malformed.pt");
   std::ofstream(bad) << "not a torch archive";
   auto corrupt = WalkPolicyController::Load(bad, world.get(), 0);
   EXPECT_EQ(corrupt.status().code(), absl::StatusCode::kDataLoss);
