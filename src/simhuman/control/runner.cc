@@ -182,6 +182,7 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
   auto ce = tracker.contact_error_m();
   res.contact_error_m = ce ? *ce : -1;
   res.step_completion_s = tracker.completion_times_s();
+  for (const plan::StepRecord& s : tracker.records()) res.pair_errors_m.push_back(s.errors_m);
   res.sim_time_s = d->time - t_start;
   res.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   if (options.progress) {

@@ -67,6 +67,9 @@ struct EpisodeResult {
   double sim_time_s = 0;
   double wall_time_s = 0;
   std::vector<double> step_completion_s;
+  /// Per step, the er_i (Eq. 11) recorded for its contact and not-contact pairs, in pair order
+  /// (not-care and get-close pairs have none); empty for a step never reached.
+  std::vector<std::vector<double>> pair_errors_m;
 };
 
 /// Runs `chain` (grounded against world.catalog()) with one controller per agent.

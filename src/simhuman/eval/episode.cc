@@ -134,6 +134,7 @@ nlohmann::ordered_json EpisodeResultJson(const control::EpisodeResult& r) {
   j["wall_per_sim"] = r.sim_time_s > 0 ? nlohmann::ordered_json(r.wall_time_s / r.sim_time_s)
                                        : nlohmann::ordered_json();
   j["step_completion_s"] = r.step_completion_s;
+  j["pair_errors_m"] = r.pair_errors_m;
   return j;
 }
 

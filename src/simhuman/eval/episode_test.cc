@@ -131,18 +131,21 @@ TEST(EpisodeTest, ResultJsonUsesNullForMissingValues) {
   nlohmann::ordered_json j = EpisodeResultJson(r);
   for (const char* key :
        {"success", "steps_completed", "steps_total", "contact_error_m", "fell", "end_reason",
-        "sim_time_s", "wall_time_s", "wall_per_sim", "step_completion_s"}) {
+        "sim_time_s", "wall_time_s", "wall_per_sim", "step_completion_s", "pair_errors_m"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_TRUE(j["contact_error_m"].is_null());
   EXPECT_TRUE(j["wall_per_sim"].is_null());
   EXPECT_EQ(j["end_reason"], r.end_reason);
   r.contact_error_m = 0.04;
+  r.pair_errors_m = {{0.03, 0.0}, {0.09}};
   r.sim_time_s = 2.0;
   r.wall_time_s = 1.0;
   j = EpisodeResultJson(r);
   EXPECT_DOUBLE_EQ(j["contact_error_m"].get<double>(), 0.04);
   EXPECT_DOUBLE_EQ(j["wall_per_sim"].get<double>(), 0.5);
+  ASSERT_EQ(j["pair_errors_m"].size(), 2u);
+  EXPECT_DOUBLE_EQ(j["pair_errors_m"][1][0].get<double>(), 0.09);
   nlohmann::ordered_json p = ProvenanceJson();
   EXPECT_FALSE(p["git_revision"].get<std::string>().empty());
   EXPECT_EQ(p["mujoco_version"], mj_versionString());

@@ -40,6 +40,8 @@ const std::vector<Field>& Fields() {
       {"w_com_velocity", &MpcConfig::w_com_velocity, nullptr, 0, 1e6},
       {"w_fall", &MpcConfig::w_fall, nullptr, 0, 1e6},
       {"aim_gain", &MpcConfig::aim_gain, nullptr, 0, 2},
+      {"hand_servo_gain", &MpcConfig::hand_servo_gain, nullptr, 0, 1},
+      {"hand_servo_max_rad", &MpcConfig::hand_servo_max_rad, nullptr, 0, 1.5},
       {"fall_head_height_m", &MpcConfig::fall_head_height_m, nullptr, 0, 2},
   };
   return f;

@@ -38,6 +38,14 @@ struct MpcConfig {
   /// target moves past the contact point by this fraction of the remaining miss (position
   /// servos under gravity leave a reaching hand short). 0 disables it.
   double aim_gain = 0.8;
+  /// Hand servo for hand contacts: once the reference has arrived and the hand is within
+  /// 0.15 m (scaled) of its contact point, each replan adds this fraction of the damped
+  /// least-squares arm joint change that would close the miss (shoulder and elbow of that
+  /// hand) to an offset on those servo targets, an integral action against the sag of a
+  /// position servo under gravity and against the trunk's sway. 0 disables it.
+  double hand_servo_gain = 0.3;
+  /// Largest offset (rad) the hand servo may add to one arm joint's servo target.
+  double hand_servo_max_rad = 0.6;
 
   /// Every field finite and in range; the message names the field and the valid range.
   absl::Status Validate() const;

@@ -34,6 +34,23 @@ constexpr std::array<double, core::kNumBodyJoints> kTrackWeight = {
     0.6, 1.0, 1.0,  // right hip, knee, foot
 };
 
+// Where joint `p` of a contact term touches: the target's nearest point, backed off by the
+// term's clearance along its direction (or straight away from the target if it has none).
+Eigen::Vector3d TouchPoint(const ContactTerm& term, const Eigen::Vector3d& p,
+                           const std::array<Eigen::Vector3d, core::kNumBodyJoints>& pts) {
+  Eigen::Vector3d np = term.Nearest(p, pts);
+  Eigen::Vector3d dir = term.dir;
+  if (dir.squaredNorm() < 0.5) {
+    Eigen::Vector3d away = p - np;
+    dir = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
+  }
+  return np + dir * term.clearance_m;
+}
+
+bool IsHand(core::BodyJoint j) {
+  return j == core::BodyJoint::kLeftHand || j == core::BodyJoint::kRightHand;
+}
+
 }  // namespace
 
 absl::StatusOr<std::unique_ptr<MpcController>> MpcController::Create(const world::SimWorld* world,
@@ -63,6 +80,15 @@ absl::StatusOr<std::unique_ptr<MpcController>> MpcController::Create(const world
                names[j].find("elbow") != std::string::npos;
     bool neck = names[j].find("neck") != std::string::npos;
     c->noise_scale_[j] = arm ? 1.5 : (neck ? 0.5 : 1.0);
+  }
+  for (int side = 0; side < 2; ++side) {
+    const std::string s = side == 0 ? "right_" : "left_";
+    int k = 0;
+    for (const char* n : {"shoulder_x", "shoulder_y", "shoulder_z", "elbow"}) {
+      auto it = std::find(names.begin(), names.end(), s + n);
+      if (it == names.end()) return absl::InternalError("mpc: humanoid has no joint " + s + n);
+      c->arm_dofs_[side][k++] = static_cast<int>(it - names.begin());
+    }
   }
   return c;
 }
@@ -225,13 +251,24 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
   const double scale = a.scale;
   const bool standing = task_.posture == Posture::kStand || task_.posture == Posture::kLean;
   const bool sitting = task_.posture == Posture::kSit;
-  std::array<double, kDofs> u;
+  std::array<double, kDofs> raw, u;
   std::array<Eigen::Vector3d, core::kNumBodyJoints> pts, ref;
   Eigen::Vector3d com_prev = Eigen::Vector3d::Zero();
+  // an arm the hand servo holds on its contact is not pulled back to the reference's elbow and
+  // hand points (that would undo the servo's offsets); its contact term places the hand
+  std::array<double, core::kNumBodyJoints> track_weight = kTrackWeight;
+  for (int side = 0; side < 2; ++side) {
+    if (!servo_active_[side]) continue;
+    track_weight[static_cast<int>(side == 0 ? core::BodyJoint::kRightElbow
+                                            : core::BodyJoint::kLeftElbow)] = 0;
+    track_weight[static_cast<int>(side == 0 ? core::BodyJoint::kRightHand
+                                            : core::BodyJoint::kLeftHand)] = 0;
+  }
   double cost = 0;
   for (int h = 0; h < steps; ++h) {
     double t = d->time;
-    Interp(knots, t0, config_.horizon_s, t, u.data());
+    Interp(knots, t0, config_.horizon_s, t, raw.data());
+    WithServo(raw.data(), u.data());
     for (int j = 0; j < kDofs; ++j) d->ctrl[a.actuator[j]] = u[j];
     mj_step(m, d);
     if (!world::AllFinite(d->qpos, m->nq) || !world::AllFinite(d->qvel, m->nv)) {
@@ -248,26 +285,20 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
     // reference tracking
     double track = 0;
     for (int b = 0; b < core::kNumBodyJoints; ++b) {
-      track += kTrackWeight[b] * SmoothL1((pts[b] - ref[b]).norm(), 0.05);
+      track += track_weight[b] * SmoothL1((pts[b] - ref[b]).norm(), 0.05);
     }
     c += config_.w_track * track;
     // contact terms with adaptive weights
     for (size_t k = 0; k < task_.terms.size(); ++k) {
       const ContactTerm& term = task_.terms[k];
       const Eigen::Vector3d& p = pts[static_cast<int>(term.joint)];
-      Eigen::Vector3d np = term.Nearest(p, pts);
       // contacts pull gently early in the reference ramp and fully at its end, so the body
       // follows the reference instead of diving at the target
       double w = config_.w_contact * (0.3 + term_weights_[k]) * (0.25 + 0.75 * progress);
       if (term.type == plan::ContactType::kContact) {
-        Eigen::Vector3d dir = term.dir;
-        if (dir.squaredNorm() < 0.5) {
-          Eigen::Vector3d away = p - np;
-          dir = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
-        }
-        c += w * SmoothL1((p - (np + dir * term.clearance_m)).norm(), 0.03);
+        c += w * SmoothL1((p - TouchPoint(term, p, pts)).norm(), 0.03);
       } else {
-        c += w * std::max(0.0, 0.18 * scale - (p - np).norm());
+        c += w * std::max(0.0, 0.18 * scale - (p - term.Nearest(p, pts)).norm());
       }
     }
     // balance: capture point over the middle of the feet, while standing (or not yet seated)
@@ -312,7 +343,7 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
       double lim = m->actuator_forcerange[2 * a.actuator[j] + 1];
       double f = d->actuator_force[a.actuator[j]] / lim;
       effort += f * f;
-      dev += (u[j] - qref[j]) * (u[j] - qref[j]);
+      dev += (raw[j] - qref[j]) * (raw[j] - qref[j]);
       double qd = d->qvel[a.hinge_qvel[j]];
       vel += qd * qd;
     }
@@ -370,6 +401,7 @@ absl::Status MpcController::Act(const Observation& obs) {
   }
 
   if (!recovering_) CorrectAim(obs);
+  ServoHands(obs);
 
   // shift the nominal to start now
   const int K = config_.knots;
@@ -392,16 +424,23 @@ absl::Status MpcController::Act(const Observation& obs) {
   cand[0] = shifted;
   cand[1] = reference;
   const int n_small = static_cast<int>(std::round(config_.small_noise_fraction * (n - 2)));
-  double noise = config_.noise_rad * (recovering_ ? 1.5 : 1.0);
+  std::array<double, kDofs> noise;
+  for (int j = 0; j < kDofs; ++j) {
+    noise[j] = config_.noise_rad * (recovering_ ? 1.5 : 1.0) * noise_scale_[j];
+  }
+  // an arm the hand servo holds on its contact is perturbed little: its hand stays put
+  for (int side = 0; side < 2; ++side) {
+    if (!servo_active_[side]) continue;
+    for (int j : arm_dofs_[side]) noise[j] *= 0.2;
+  }
   for (int c = 2; c < n; ++c) {
     core::Rng rng(
         core::DeriveSeed(seed_, static_cast<uint64_t>(iteration_), static_cast<uint64_t>(c)));
-    double sigma = noise * (c - 2 < n_small ? 0.3 : 1.0);
+    double sigma = c - 2 < n_small ? 0.3 : 1.0;
     cand[c] = shifted;
     for (int k = 1; k < K; ++k) {
       for (int j = 0; j < kDofs; ++j) {
-        cand[c][k][j] =
-            std::clamp(shifted[k][j] + rng.Normal(sigma * noise_scale_[j]), lo_[j], hi_[j]);
+        cand[c][k][j] = std::clamp(shifted[k][j] + rng.Normal(sigma * noise[j]), lo_[j], hi_[j]);
       }
     }
   }
@@ -436,16 +475,9 @@ void MpcController::CorrectAim(const Observation& obs) {
   const double scale = world_->agent(agent_).scale;
   bool changed = false;
   for (ContactTerm& t : task_.terms) {
-    bool hand = t.joint == core::BodyJoint::kLeftHand || t.joint == core::BodyJoint::kRightHand;
-    if (t.type != plan::ContactType::kContact || !hand) continue;
+    if (t.type != plan::ContactType::kContact || !IsHand(t.joint)) continue;
     const Eigen::Vector3d& p = obs.body_points[static_cast<int>(t.joint)];
-    Eigen::Vector3d np = t.Nearest(p, obs.body_points);
-    Eigen::Vector3d dir = t.dir;
-    if (dir.squaredNorm() < 0.5) {
-      Eigen::Vector3d away = p - np;
-      dir = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
-    }
-    Eigen::Vector3d miss = np + dir * t.clearance_m - p;
+    Eigen::Vector3d miss = TouchPoint(t, p, obs.body_points) - p;
     // a miss this large is not a steady sag but a reach still under way (or out of range)
     if (miss.norm() < 0.01 * scale || miss.norm() > 0.15 * scale) continue;
     t.aim_offset += config_.aim_gain * miss;
@@ -463,8 +495,63 @@ void MpcController::CorrectAim(const Observation& obs) {
   progress_floor_ = 1.0;
 }
 
+void MpcController::ServoHands(const Observation& obs) {
+  const world::AgentIndex& a = world_->agent(agent_);
+  const mjModel* m = world_->model();
+  std::array<bool, 2> active = {false, false};
+  // the reference has arrived at the goal (aim corrections restart a short ramp from there)
+  const bool arrived = progress_floor_ >= 1.0 || obs.time_s >= ramp_t0_ + ramp_s_;
+  if (config_.hand_servo_gain > 0 && arrived && !recovering_) {
+    bool kinematics = false;
+    std::vector<mjtNum> jacp(3 * m->nv);
+    for (const ContactTerm& t : task_.terms) {
+      if (t.type != plan::ContactType::kContact || !IsHand(t.joint)) continue;
+      const Eigen::Vector3d& p = obs.body_points[static_cast<int>(t.joint)];
+      Eigen::Vector3d miss = TouchPoint(t, p, obs.body_points) - p;
+      // a miss this large is a reach still under way (or out of range): the MPC's job
+      if (miss.norm() > 0.15 * a.scale) continue;
+      const int side = t.joint == core::BodyJoint::kRightHand ? 0 : 1;
+      if (!kinematics) {
+        std::memcpy(scratch_->qpos, obs.data->qpos, sizeof(mjtNum) * m->nq);
+        mj_kinematics(m, scratch_);
+        mj_comPos(m, scratch_);
+        kinematics = true;
+      }
+      mj_jacSite(m, scratch_, jacp.data(), nullptr, a.site[static_cast<int>(t.joint)]);
+      Eigen::Matrix<double, 3, 4> J;
+      for (int r = 0; r < 3; ++r) {
+        for (int k = 0; k < 4; ++k) {
+          J(r, k) = jacp[r * m->nv + a.hinge_qvel[arm_dofs_[side][k]]];
+        }
+      }
+      // damped least squares: the smallest joint change that moves the hand by `miss`
+      constexpr double kDamping = 0.05;
+      Eigen::Matrix3d JJt = J * J.transpose() + kDamping * kDamping * Eigen::Matrix3d::Identity();
+      Eigen::Vector4d dq = J.transpose() * JJt.ldlt().solve(miss);
+      for (int k = 0; k < 4; ++k) {
+        double& o = servo_[arm_dofs_[side][k]];
+        o = std::clamp(o + config_.hand_servo_gain * dq[k], -config_.hand_servo_max_rad,
+                       config_.hand_servo_max_rad);
+      }
+      active[side] = true;
+    }
+  }
+  servo_active_ = active;
+  // an arm with no hand contact to hold lets its offsets fade out smoothly
+  for (int side = 0; side < 2; ++side) {
+    if (active[side]) continue;
+    for (int j : arm_dofs_[side]) servo_[j] *= 0.9;
+  }
+}
+
+void MpcController::WithServo(const double* knot, double* out) const {
+  for (int j = 0; j < kDofs; ++j) out[j] = std::clamp(knot[j] + servo_[j], lo_[j], hi_[j]);
+}
+
 void MpcController::Targets(double time_s, double* ctrl28) const {
-  Interp(nominal_, nominal_t0_, config_.horizon_s, time_s, ctrl28);
+  std::array<double, kDofs> raw;
+  Interp(nominal_, nominal_t0_, config_.horizon_s, time_s, raw.data());
+  WithServo(raw.data(), ctrl28);
 }
 
 }  // namespace simhuman::control

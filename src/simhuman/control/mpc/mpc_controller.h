@@ -46,6 +46,11 @@ class MpcController : public Controller {
   void StartStep(const Observation& obs, const StepTask& task);
   /// Moves the reference's hand targets past their contact points by the steady miss.
   void CorrectAim(const Observation& obs);
+  /// Updates the hand servo's arm offsets from the current hand misses
+  /// (MpcConfig::hand_servo_gain).
+  void ServoHands(const Observation& obs);
+  /// Servo targets `knot` plus the hand servo's offsets, within the actuator ranges.
+  void WithServo(const double* knot, double* out) const;
   ReferencePose RefPose(double t) const;
   std::array<double, world::kHumanoidDofs> RefHinges(double t) const;
   double SegmentSeconds(const ReferencePose& a, const ReferencePose& b) const;
@@ -75,7 +80,10 @@ class MpcController : public Controller {
   double stand_balance_from_s_ =
       1e9;  // after ramp_t0_; see StartStep  // seat height for sit postures (balance gating)
   bool recovering_ = false;
-  double next_aim_s_ = 0;      // next aim correction (see MpcConfig::aim_gain)
+  double next_aim_s_ = 0;  // next aim correction (see MpcConfig::aim_gain)
+  std::array<double, world::kHumanoidDofs> servo_{};  // hand servo offsets on servo targets
+  std::array<std::array<int, 4>, 2> arm_dofs_{};      // hinge indices: right, left arm
+  std::array<bool, 2> servo_active_{};                // right, left hand held by the servo
   double progress_floor_ = 0;  // 1 once the goal has been reached and is only being refined
 
   // plan
