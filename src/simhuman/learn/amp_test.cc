@@ -187,6 +187,7 @@ PpoConfig TinyAmpConfig(const std::string& clip) {
   c.task = "walk";
   c.num_envs = 8;
   c.threads = 1;
+  c.update_torch_threads = 1;
   c.seed = 5;
   c.rollout_steps = 8;
   c.epochs = 1;

@@ -130,6 +130,7 @@ PpoConfig ReachConfig(const std::string&) {
   c.task = "reach";
   c.num_envs = 32;
   c.threads = 1;
+  c.update_torch_threads = 1;
   c.seed = 3;
   c.rollout_steps = 64;
   c.minibatches = 4;

@@ -68,8 +68,10 @@ absl::Status PpoConfig::Validate() const {
   if (total_steps <= 0) return absl::InvalidArgumentError("total_steps must be positive");
   if (num_envs <= 0 || num_envs > 4096)
     return absl::InvalidArgumentError("num_envs must be in [1, 4096]");
-  if (threads <= 0 || threads > 64 || torch_threads <= 0 || torch_threads > 64) {
-    return absl::InvalidArgumentError("threads and torch_threads must be in [1, 64]");
+  if (threads <= 0 || threads > 64 || torch_threads <= 0 || torch_threads > 64 ||
+      update_torch_threads <= 0 || update_torch_threads > 64) {
+    return absl::InvalidArgumentError(
+        "threads, torch_threads and update_torch_threads must be in [1, 64]");
   }
   if (rollout_steps <= 0 || epochs <= 0 || minibatches <= 0) {
     return absl::InvalidArgumentError("rollout_steps, epochs and minibatches must be positive");
@@ -117,6 +119,7 @@ nlohmann::json PpoConfig::ToJson() const {
                         {"num_envs", num_envs},
                         {"threads", threads},
                         {"torch_threads", torch_threads},
+                        {"update_torch_threads", update_torch_threads},
                         {"seed", seed},
                         {"rollout_steps", rollout_steps},
                         {"epochs", epochs},
@@ -164,6 +167,7 @@ core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
     get("num_envs", c.num_envs);
     get("threads", c.threads);
     get("torch_threads", c.torch_threads);
+    get("update_torch_threads", c.update_torch_threads);
     get("seed", c.seed);
     get("rollout_steps", c.rollout_steps);
     get("epochs", c.epochs);
@@ -589,6 +593,8 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   }
   m.env_steps += static_cast<int64_t>(T) * E;
   auto t1 = Clock::now();
+  // the env threads are idle during the update: it gets the cores
+  torch::set_num_threads(m.cfg.update_torch_threads);
 
   // curriculum: widen when more than half of recent episodes succeed
   m.curr_steps += static_cast<int64_t>(T) * E;
@@ -718,6 +724,7 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
     st.amp_style_reward = style_sum / static_cast<double>(N);
     st.amp_task_reward = task_sum / static_cast<double>(N);
   }
+  torch::set_num_threads(m.cfg.torch_threads);
   auto t2 = Clock::now();
   ++m.iteration;
   double collect = std::chrono::duration<double>(t1 - t0).count();
