@@ -166,6 +166,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   train_cmd->add_option("--envs", tf.envs, "Parallel environments")->check(CLI::Range(1, 4096));
   train_cmd->add_option("--threads", tf.threads, "Worker threads")->check(CLI::Range(1, 64));
   train_cmd->add_flag("--quiet", tf.quiet, "No progress bar");
+  train_cmd->add_option("--init-from", tf.init_from,
+                        "Policy file (e.g. assets/policies/walk.pt) a new run's policy starts from "
+                        "(fine-tuning; the value network starts fresh)");
   train_cmd->add_option("--amp-clips", tf.amp_clips,
                         "Comma-separated motion clips (.clip.json) or BVH files: turns on AMP "
                         "(walk task)");

@@ -60,7 +60,7 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
   core::StatusOr<std::unique_ptr<learn::PpoTrainer>> trainer;
   if (!flags.resume.empty()) {
     if (!flags.out.empty() || !flags.config.empty() || flags.seed_given || flags.envs ||
-        flags.threads || !flags.amp_clips.empty()) {
+        flags.threads || !flags.amp_clips.empty() || !flags.init_from.empty()) {
       return ReportError(err, "train",
                          absl::InvalidArgumentError("--resume continues a run with its own "
                                                     "settings; only --steps may be given"));
@@ -102,12 +102,15 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
         cfg.amp_clips.push_back(item);
       }
     }
-    // clip paths are stored absolute, so --resume finds them from any directory
-    for (std::string& c : cfg.amp_clips) {
+    if (!flags.init_from.empty()) cfg.init_from = flags.init_from;
+    // paths are stored absolute, so the run's config names them from any directory
+    auto absolute = [](std::string& c) {
       std::error_code ec;
       std::filesystem::path abs = std::filesystem::absolute(c, ec);
       if (!ec) c = abs.lexically_normal().string();
-    }
+    };
+    for (std::string& c : cfg.amp_clips) absolute(c);
+    if (!cfg.init_from.empty()) absolute(cfg.init_from);
     trainer = learn::PpoTrainer::Create(cfg, flags.out);
   }
   if (!trainer.ok()) return ReportError(err, "train", trainer.status());

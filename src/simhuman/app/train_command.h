@@ -22,6 +22,7 @@ struct TrainFlags {
   bool steps_given = false, seed_given = false;
   bool quiet = false;     ///< no progress bar (logs still written)
   std::string amp_clips;  ///< comma-separated clip/BVH paths (AMP on; replaces the config's)
+  std::string init_from;  ///< policy file to start a new run's policy from (fine-tuning)
 };
 
 /// Parses "30M", "500k", "1e6", "123" into a count. InvalidArgument naming the text.

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "simhuman/control/policy/policy_net.h"
 #include "simhuman/control/policy/walk_task.h"
 #include "simhuman/core/testing_temp.h"
 #include "simhuman/learn/ppo.h"
@@ -209,6 +210,59 @@ TEST(Ppo, NonFiniteUpdatesAbortAfterSeveral) {
   EXPECT_TRUE((*tr)->Iterate().ok());
   auto st = (*tr)->Iterate();
   EXPECT_EQ(st.status().code(), absl::StatusCode::kInternal);
+}
+
+// a run started from a policy file has that policy's actor and normalizer; during the critic
+// warm-up only the value network learns; a policy of other sizes is refused, naming init_from
+TEST(Ppo, InitFromCopiesThePolicyAndWarmsUpTheCritic) {
+  std::string src_dir = TempDir("init_src"), dir = TempDir("init_dst");
+  PpoConfig a = ReachConfig(src_dir);
+  a.num_envs = 4;
+  a.rollout_steps = 8;
+  auto src = PpoTrainer::Create(a, src_dir);
+  ASSERT_TRUE(src.ok()) << src.status();
+  ASSERT_TRUE((*src)->Iterate().ok());
+  ASSERT_TRUE((*src)->Checkpoint().ok());
+  const std::string policy = src_dir + "/policy.pt";
+
+  PpoConfig b = a;
+  b.seed = 99;  // other random weights, were they not replaced
+  b.init_from = policy;
+  b.critic_warmup_iters = 2;
+  auto dst = PpoTrainer::Create(b, dir);
+  ASSERT_TRUE(dst.ok()) << dst.status();
+  ASSERT_TRUE((*dst)->Iterate().ok());
+  ASSERT_TRUE((*dst)->Checkpoint().ok());
+  auto p0 = control::LoadPolicyFile(policy);
+  auto p1 = control::LoadPolicyFile(dir + "/policy.pt");
+  ASSERT_TRUE(p0.ok() && p1.ok());
+  auto w0 = p0->actor->named_parameters(), w1 = p1->actor->named_parameters();
+  ASSERT_EQ(w0.size(), w1.size());
+  for (const auto& kv : w0) {
+    EXPECT_TRUE(torch::equal(kv.value(), w1[kv.key()])) << kv.key() << " changed in warm-up";
+  }
+  // after the warm-up the policy learns
+  ASSERT_TRUE((*dst)->Iterate().ok());
+  ASSERT_TRUE((*dst)->Iterate().ok());
+  ASSERT_TRUE((*dst)->Checkpoint().ok());
+  auto p2 = control::LoadPolicyFile(dir + "/policy.pt");
+  ASSERT_TRUE(p2.ok());
+  bool changed = false;
+  for (const auto& kv : w0)
+    changed |= !torch::equal(kv.value(), p2->actor->named_parameters()[kv.key()]);
+  EXPECT_TRUE(changed);
+
+  PpoConfig wrong = b;
+  wrong.hidden = {32, 32};
+  auto bad = PpoTrainer::Create(wrong, TempDir("init_bad"));
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("init_from"), std::string::npos) << bad.status();
+  EXPECT_NE(bad.status().message().find("hidden"), std::string::npos) << bad.status();
+  PpoConfig missing = b;
+  missing.init_from = src_dir + "/no_such_policy.pt";
+  auto gone = PpoTrainer::Create(missing, TempDir("init_missing"));
+  ASSERT_FALSE(gone.ok());
+  EXPECT_NE(gone.status().message().find("no_such_policy.pt"), std::string::npos);
 }
 
 TEST(PpoConfig, StrictJson) {

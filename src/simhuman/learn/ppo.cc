@@ -73,6 +73,9 @@ absl::Status PpoConfig::Validate() const {
     return absl::InvalidArgumentError(
         "threads, torch_threads and update_torch_threads must be in [1, 64]");
   }
+  if (critic_warmup_iters < 0) {
+    return absl::InvalidArgumentError("critic_warmup_iters must not be negative");
+  }
   if (rollout_steps <= 0 || epochs <= 0 || minibatches <= 0) {
     return absl::InvalidArgumentError("rollout_steps, epochs and minibatches must be positive");
   }
@@ -138,6 +141,8 @@ nlohmann::json PpoConfig::ToJson() const {
                         {"checkpoint_every_s", checkpoint_every_s},
                         {"max_bad_updates", max_bad_updates},
                         {"curriculum_max_steps", curriculum_max_steps},
+                        {"init_from", init_from},
+                        {"critic_warmup_iters", critic_warmup_iters},
                         {"amp_clips", amp_clips},
                         {"amp_task_weight", amp_task_weight},
                         {"amp_style_weight", amp_style_weight},
@@ -186,6 +191,8 @@ core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
     get("checkpoint_every_s", c.checkpoint_every_s);
     get("max_bad_updates", c.max_bad_updates);
     get("curriculum_max_steps", c.curriculum_max_steps);
+    get("init_from", c.init_from);
+    get("critic_warmup_iters", c.critic_warmup_iters);
     get("amp_clips", c.amp_clips);
     get("amp_task_weight", c.amp_task_weight);
     get("amp_style_weight", c.amp_style_weight);
@@ -277,6 +284,42 @@ struct PpoTrainer::Impl {
     amp->opt = std::make_unique<torch::optim::Adam>(amp->disc->parameters(),
                                                     torch::optim::AdamOptions(cfg.amp_disc_lr));
     amp->replay = std::make_unique<AmpReplayBuffer>(cfg.amp_replay_size, 2 * f);
+    return absl::OkStatus();
+  }
+
+  // copies the policy of cfg.init_from (if any) into the fresh actor and normalizer
+  absl::Status InitFrom() {
+    if (cfg.init_from.empty()) return absl::OkStatus();
+    const std::string where = "init_from '" + cfg.init_from + "'";
+    core::StatusOr<control::LoadedPolicy> p = control::LoadPolicyFile(cfg.init_from);
+    if (!p.ok())
+      return absl::InvalidArgumentError(where + ": " + std::string(p.status().message()));
+    const int d = env->obs_dim(), a = env->act_dim();
+    if (p->meta.task != cfg.task || p->meta.obs_dim != d || p->meta.act_dim != a ||
+        p->meta.hidden != cfg.hidden) {
+      auto dims = [](const std::vector<int>& h) {
+        std::string s;
+        for (int x : h) s += (s.empty() ? "" : ",") + std::to_string(x);
+        return s;
+      };
+      return absl::InvalidArgumentError(
+          where + " holds a '" + p->meta.task + "' policy (obs " + std::to_string(p->meta.obs_dim) +
+          ", act " + std::to_string(p->meta.act_dim) + ", hidden " + dims(p->meta.hidden) +
+          ") but this run is '" + cfg.task + "' (obs " + std::to_string(d) + ", act " +
+          std::to_string(a) + ", hidden " + dims(cfg.hidden) + "); set \"hidden\" to match");
+    }
+    torch::NoGradGuard no_grad;
+    auto src = p->actor->named_parameters();
+    for (auto& dst : actor->named_parameters()) {
+      const torch::Tensor* s = src.find(dst.key());
+      if (!s || s->sizes() != dst.value().sizes()) {
+        return absl::InvalidArgumentError(where + ": parameter '" + dst.key() +
+                                          "' missing or of "
+                                          "another shape");
+      }
+      dst.value().copy_(*s);
+    }
+    norm = p->norm;
     return absl::OkStatus();
   }
 
@@ -389,6 +432,7 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::CreateWithTask(
   impl->out = out_dir;
   impl->env = std::make_unique<VecEnv>(std::move(task), config.threads, config.seed);
   impl->Build();
+  SH_RETURN_IF_ERROR(impl->InitFrom());
   SH_RETURN_IF_ERROR(impl->BuildAmp());
   impl->env->ResetAll(0);
   std::ofstream(out_dir + "/config.json") << config.ToJson().dump(2) << "\n";
@@ -629,6 +673,8 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   int n_mb = 0, skipped = 0;
   const int64_t mb = N / m.cfg.minibatches;
   std::vector<int64_t> perm(N);
+  // a run started from a given policy first fits its fresh value network
+  const bool critic_only = !m.cfg.init_from.empty() && m.iteration < m.cfg.critic_warmup_iters;
   for (int ep = 0; ep < m.cfg.epochs && rollout_finite; ++ep) {
     std::iota(perm.begin(), perm.end(), 0);
     std::shuffle(perm.begin(), perm.end(), m.rng.engine());
@@ -648,7 +694,9 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
       torch::Tensor vc = ov + torch::clamp(v - ov, -m.cfg.value_clip, m.cfg.value_clip);
       torch::Tensor vloss = 0.5 * torch::max((v - r).pow(2), (vc - r).pow(2)).mean();
       torch::Tensor entropy = (log_std + 0.5 + 0.5 * kLog2Pi).sum();
-      torch::Tensor loss = pg + m.cfg.value_coef * vloss - m.cfg.entropy_coef * entropy;
+      torch::Tensor loss = critic_only
+                               ? m.cfg.value_coef * vloss
+                               : pg + m.cfg.value_coef * vloss - m.cfg.entropy_coef * entropy;
       if (!torch::isfinite(loss).item<bool>()) {
         ++skipped;
         continue;

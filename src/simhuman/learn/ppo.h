@@ -54,6 +54,13 @@ struct PpoConfig {
   double max_grad_norm = 1.0;
   double init_std = 0.5;
   std::vector<int> hidden = {256, 256};
+  /// A new run starts its policy (actor weights, action std and observation normalizer) from
+  /// this policy file or checkpoint instead of random weights (fine-tuning); the value network
+  /// starts fresh. Its task and sizes must match. Empty: random initialization.
+  std::string init_from;
+  /// With init_from: the first this many iterations train only the value network, so the
+  /// fresh critic's advantages do not wreck the policy it was given.
+  int critic_warmup_iters = 20;
   double checkpoint_every_s = 180;
   int max_bad_updates = 5;  ///< abort after this many non-finite updates in a row
   /// The curriculum level rises by 1/9 when more than half of >= 64 recent episodes succeed,

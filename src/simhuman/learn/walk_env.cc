@@ -197,6 +197,9 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   };
   t.contact = 0.5 * (match(el, lc) + match(er, rc));
   t.upright = std::max(0.0, d->xmat[9 * a.torso_body + 8]);
+  // 1 - cos(10 deg) = 0.0152: each factor is 1/e at a 10 degree tilt
+  t.posture = std::exp(-(1.0 - d->xmat[9 * a.head_body + 8]) / 0.0152) *
+              std::exp(-(1.0 - d->xmat[9 * a.torso_body + 8]) / 0.0152);
   double dh = (pos.z() - 0.93) / 0.07;
   t.height = std::exp(-dh * dh);
   double dist = (e.s.target_xy - pos.head<2>()).norm();
@@ -218,8 +221,8 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
       w_.scale * (w_.velocity * t.velocity + w_.progress * t.progress + w_.yaw_rate * t.yaw_rate +
                   w_.facing * t.facing + w_.gait_legs * t.gait_legs + w_.gait_upper * t.gait_upper +
                   w_.contact * t.contact + w_.upright * t.upright + w_.height * t.height +
-                  w_.alive + w_.at_target * t.at_target - w_.action_rate * t.action_rate -
-                  w_.power * t.power - w_.foot_slip * t.foot_slip);
+                  w_.posture * t.posture + w_.alive + w_.at_target * t.at_target -
+                  w_.action_rate * t.action_rate - w_.power * t.power - w_.foot_slip * t.foot_slip);
 
   // success: inside the tolerances and stopped for 0.5 s; a new target after 1.5 s
   if (inside && speed2 < kStoppedSpeed * kStoppedSpeed) {

@@ -36,8 +36,9 @@ struct MpcConfig {
   double fall_head_height_m = 0.5;  ///< head below this (scaled) ends the episode as a fall
   /// Aim correction for hand contacts: once the reference has arrived, the reference's hand
   /// target moves past the contact point by this fraction of the remaining miss (position
-  /// servos under gravity leave a reaching hand short). 0 disables it.
-  double aim_gain = 0.8;
+  /// servos under gravity leave a reaching hand short). 0 (the default) disables it: the hand
+  /// servo below holds hands better (reach 99 % vs 96 % with both, 100 episodes).
+  double aim_gain = 0.0;
   /// Hand servo for hand contacts: once the reference has arrived and the hand is within
   /// 0.15 m (scaled) of its contact point, each replan adds this fraction of the damped
   /// least-squares arm joint change that would close the miss (shoulder and elbow of that
