@@ -303,6 +303,17 @@ TEST(CliIntegrationTest, TrainResumeAndCorruptCheckpoint) {
   Proc bad_steps = RunBin({"train", "--task", "reach", "--steps", "lots", "--out", dir + "x"});
   EXPECT_EQ(bad_steps.exit_code, 2);
   EXPECT_NE(bad_steps.err.find("--steps 'lots'"), std::string::npos) << bad_steps.err;
+  // fine-tuning from the run's policy; a walk policy refused for the reach task, naming the flag
+  Proc tuned = RunBin({"train", "--task", "reach", "--steps", "8k", "--out", dir + "_ft", "--envs",
+                       "16", "--quiet", "--init-from", dir + "/policy.pt"});
+  EXPECT_EQ(tuned.exit_code, 0) << tuned.err;
+  Proc wrong = RunBin({"train", "--task", "reach", "--steps", "8k", "--out", dir + "_ft2",
+                       "--init-from", kSource + "/assets/policies/walk.pt"});
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_NE(wrong.err.find("init_from"), std::string::npos) << wrong.err;
+  Proc both = RunBin({"train", "--resume", dir, "--init-from", dir + "/policy.pt"});
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("--resume"), std::string::npos) << both.err;
   std::filesystem::resize_file(dir + "/checkpoint.pt", 100);
   Proc corrupt = RunBin({"train", "--resume", dir});
   EXPECT_NE(corrupt.exit_code, 0);
