@@ -99,6 +99,41 @@ TEST(ReferencePoseTest, SitPoseTouchesTheSeatWithFeetOnTheFloor) {
   mj_deleteData(scratch);
 }
 
+// on a deep sofa the sitting pelvis stays near the front (as a person sits upright), not at the
+// seat's centre, from where the feet could not be drawn back under the knees to stand up
+TEST(ReferencePoseTest, SitsNoDeeperThanAQuarterMetreOnADeepSofa) {
+  world::SceneSpec spec;
+  world::ObjectSpec sofa;
+  sofa.id = "sofa000";
+  sofa.type = "sofa";
+  sofa.pos = Eigen::Vector3d(1.0, 0, 0);
+  sofa.yaw_rad = M_PI;  // front towards -x, where the human stands with its back to it
+  sofa.size["seat_depth"] = 0.65;
+  spec.objects = {sofa};
+  spec.humans = {world::HumanSpec{}};
+  auto cat = world::BuildCatalog(spec);
+  ASSERT_TRUE(cat.ok()) << cat.status();
+  auto w = world::SimWorld::Create(*cat, {{0.3, 0, M_PI, 1.0}});
+  ASSERT_TRUE(w.ok()) << w.status();
+  auto chain = plan::ParseAndGround(
+      "[[[\"sofa000\", \"seat surface\", \"pelvis\", \"contact\", \"up\"]]]", "<test>", *cat);
+  ASSERT_TRUE(chain.ok()) << chain.status();
+  StepTask task = BuildStepTask(chain->steps[0], *cat, 0, 1.0, plan::PairParams());
+  mjData* scratch = mj_makeData((*w)->model());
+  ReferencePose ref = SolveReferencePose(**w, 0, task, (*w)->data(), scratch);
+  SetAgentPose((*w)->agent(0), ref, scratch);
+  mj_kinematics((*w)->model(), scratch);
+  Eigen::Vector3d pelvis = (*w)->BodyPoints(scratch, 0)[static_cast<int>(core::BodyJoint::kPelvis)];
+  const core::CatalogObject& o = cat->objects[0];
+  auto [lo, hi] = core::ShapesBounds(o.FindPart("seat surface")->shapes);
+  Eigen::Vector3d local = o.pose.quat.inverse() * (pelvis - o.pose.pos);
+  double behind_edge = hi.x() - local.x();
+  EXPECT_LT(behind_edge, 0.30) << "seat centre is " << 0.5 * (hi.x() - lo.x()) << " m behind";
+  EXPECT_GT(behind_edge, 0.15);
+  EXPECT_GT(pelvis.z(), o.pose.pos.z() + hi.z());  // on the seat, not in it
+  mj_deleteData(scratch);
+}
+
 TEST(MpcControllerTest, SameSeedSameTrajectoryWithOneOrTwoThreadsIntegration) {
   std::vector<double> one = RunFor(1, 0.6);
   std::vector<double> two = RunFor(2, 0.6);

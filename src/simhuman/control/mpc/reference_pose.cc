@@ -7,6 +7,9 @@
 namespace simhuman::control {
 namespace {
 
+// deepest a sitting pelvis goes behind a seat's front edge (m, x scale)
+constexpr double kMaxSitDepthM = 0.25;
+
 constexpr double kDeg = M_PI / 180.0;
 using world::kHumanoidDofs;
 
@@ -332,8 +335,18 @@ ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const 
       auto top = part_top(core::BodyJoint::kPelvis);
       Eigen::Vector3d seat = top ? *top : cur_pos;
       v.quat = YawQuat(obj_yaw);
-      // pelvis a little behind the seat centre; thighs horizontal
-      v.pos = seat + YawQuat(obj_yaw) * Eigen::Vector3d(-0.04 * s, 0, 0);
+      // pelvis a little behind the seat centre, but on a deep seat (sofa, armchair) no deeper
+      // than a person sits upright: kMaxSitDepthM behind the front edge, so the feet can be
+      // drawn back under the knees to stand up again; thighs horizontal
+      double back = 0.04 * s;
+      for (const ContactTerm& t : task.terms) {
+        if (t.joint != core::BodyJoint::kPelvis || !t.part || !top) continue;
+        auto [lo, hi] = core::ShapesBounds(t.part->shapes);
+        double centre_to_edge = 0.5 * (hi.x() - lo.x());
+        back = std::min(back, kMaxSitDepthM * s - centre_to_edge);
+        break;
+      }
+      v.pos = seat + YawQuat(obj_yaw) * Eigen::Vector3d(-back, 0, 0);
       // on a bed, sit on the front edge where lying back later puts the head on the pillow
       const core::CatalogPart* pillow = focus ? focus->FindPart("pillow") : nullptr;
       const core::CatalogPart* mattress = focus ? focus->FindPart("mattress") : nullptr;
