@@ -197,9 +197,10 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   };
   t.contact = 0.5 * (match(el, lc) + match(er, rc));
   t.upright = std::max(0.0, d->xmat[9 * a.torso_body + 8]);
-  // 1 - cos(10 deg) = 0.0152: each factor is 1/e at a 10 degree tilt
-  t.posture = std::exp(-(1.0 - d->xmat[9 * a.head_body + 8]) / 0.0152) *
-              std::exp(-(1.0 - d->xmat[9 * a.torso_body + 8]) / 0.0152);
+  // 1 - cos(20 deg) = 0.0603: each factor is 1/e at a 20 degree tilt (wide enough to pull a
+  // hunched 30-40 degree posture up; a 10 degree kernel gave no gradient there)
+  t.posture = std::exp(-(1.0 - d->xmat[9 * a.head_body + 8]) / 0.0603) *
+              std::exp(-(1.0 - d->xmat[9 * a.torso_body + 8]) / 0.0603);
   double dh = (pos.z() - 0.93) / 0.07;
   t.height = std::exp(-dh * dh);
   double dist = (e.s.target_xy - pos.head<2>()).norm();

@@ -24,7 +24,7 @@ namespace simhuman::learn {
 struct WalkRewardWeights {
   double velocity = 1.0, progress = 1.5, yaw_rate = 0.5, facing = 0.5, gait_legs = 1.0,
          gait_upper = 0.3, contact = 0.3, upright = 0.5, height = 0.3, alive = 0.5, at_target = 1.0;
-  /// head and trunk held upright, as a person walks (1/e at about 10 degrees of tilt each)
+  /// head and trunk held upright, as a person walks (1/e at about 20 degrees of tilt each)
   double posture = 1.0;
   double action_rate = 0.02, power = 2e-5, foot_slip = 0.5;
   double scale = 0.1;
