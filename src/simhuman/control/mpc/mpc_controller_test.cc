@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "simhuman/control/runner.h"
@@ -174,8 +175,9 @@ TEST(MpcControllerTest, SitsOnTheChairIntegration) {
 }
 
 // the human's right hand on a marker 0.45 m ahead, 0.2 m to the right, at 1.3 m (a reach
-// whose hand a position servo leaves short under gravity); returns the hand's mean distance
-// to the marker's centre over the last 1.5 s of 2.5 s of holding after the plan completed
+// whose hand a position servo leaves short under gravity); returns the hand's median distance
+// to the marker's centre over the last 1.5 s of 2.5 s of holding after the plan completed (the
+// median, as the trunk's occasional balance shifts move the hand for a moment)
 double HoldReach(const MpcConfig& cfg) {
   world::SceneSpec spec;
   world::ObjectSpec m;
@@ -204,17 +206,17 @@ double HoldReach(const MpcConfig& cfg) {
   mjData* d = (*w)->data();
   const mjModel* model = (*w)->model();
   const double end = traj.time_s.empty() ? 0 : traj.time_s.back();
-  double sum = 0;
-  int n = 0;
+  std::vector<double> dist;
   for (size_t f = 0; f < traj.time_s.size(); ++f) {
     if (traj.time_s[f] < end - 1.5) continue;
     std::copy(traj.qpos[f].begin(), traj.qpos[f].end(), d->qpos);
     mj_kinematics(model, d);
     auto pts = (*w)->BodyPoints(d, 0);
-    sum += (pts[static_cast<int>(core::BodyJoint::kRightHand)] - m.pos).norm();
-    ++n;
+    dist.push_back((pts[static_cast<int>(core::BodyJoint::kRightHand)] - m.pos).norm());
   }
-  return n ? sum / n : 1e9;
+  if (dist.empty()) return 1e9;
+  std::nth_element(dist.begin(), dist.begin() + dist.size() / 2, dist.end());
+  return dist[dist.size() / 2];
 }
 
 TEST(MpcControllerTest, HandServoHoldsTheHandOnItsTargetIntegration) {
@@ -224,7 +226,7 @@ TEST(MpcControllerTest, HandServoHoldsTheHandOnItsTargetIntegration) {
   double with = HoldReach(servo), without = HoldReach(off);
   // the marker sphere is 1.5 cm in radius: a held hand rests on or in it
   EXPECT_LT(with, 0.03) << "without the servo: " << without;
-  EXPECT_LT(with, without);
+  EXPECT_LT(with + 0.01, without);
 }
 
 }  // namespace
