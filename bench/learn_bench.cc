@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "simhuman/control/policy/policy_net.h"
@@ -46,6 +47,21 @@ double RawStepsPerSecond(learn::WalkTask& task, double seconds) {
     }
   }
   double rate = steps / Since(t0);
+  // where the time of one mj_step goes (MuJoCo's own timers, on for this loop only)
+  const std::pair<int, const char*> stages[] = {
+      {mjTIMER_POS_KINEMATICS, "kinematics"}, {mjTIMER_POS_INERTIA, "inertia"},
+      {mjTIMER_POS_COLLISION, "collision"},   {mjTIMER_POS_MAKE, "make_constraints"},
+      {mjTIMER_POS_PROJECT, "project"},       {mjTIMER_VELOCITY, "velocity"},
+      {mjTIMER_ACTUATION, "actuation"},       {mjTIMER_ACCELERATION, "acceleration"},
+      {mjTIMER_CONSTRAINT, "constraint_solver"}};
+  double total = d->timer[mjTIMER_STEP].duration;
+  if (total > 0) {
+    std::fprintf(stderr, "mj_step stages (share of step time, %d contacts at the end):", d->ncon);
+    for (const auto& [id, name] : stages) {
+      std::fprintf(stderr, " %s %.0f%%", name, 100.0 * d->timer[id].duration / total);
+    }
+    std::fprintf(stderr, "\n");
+  }
   mj_deleteData(d);
   return rate;
 }
@@ -78,6 +94,10 @@ double EnvStepsPerSecond(int envs, int threads, double seconds, control::Gaussia
 
 }  // namespace
 
+double NowMs() {
+  return std::chrono::duration<double, std::milli>(Clock::now().time_since_epoch()).count();
+}
+
 int main(int argc, char** argv) {
   int envs = argc > 1 ? std::atoi(argv[1]) : 128;
   double secs = argc > 2 ? std::atof(argv[2]) : 10.0;
@@ -96,6 +116,9 @@ int main(int argc, char** argv) {
   }
   auto task = learn::WalkTask::Create(1);
   if (!task.ok()) return 2;
+  mjcb_time = NowMs;
+  RawStepsPerSecond(**task, secs / 2);  // timer breakdown only: the timers cost time
+  mjcb_time = nullptr;
   double raw = RawStepsPerSecond(**task, secs);
   double env1 = EnvStepsPerSecond(envs, 1, secs, nullptr, nullptr);
   double env2 = EnvStepsPerSecond(envs, 2, secs, nullptr, nullptr);
