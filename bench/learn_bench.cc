@@ -35,6 +35,8 @@ double RawStepsPerSecond(learn::WalkTask& task, double seconds) {
   const mjData* start = task.data(0);
   core::Rng rng(3);
   long steps = 0;
+  // constraint rows per step by kind (what the solver works on)
+  double rows_contact = 0, rows_limit = 0, rows_other = 0;
   auto t0 = Clock::now();
   while (Since(t0) < seconds) {
     mj_copyData(d, m, start);
@@ -44,15 +46,27 @@ double RawStepsPerSecond(learn::WalkTask& task, double seconds) {
       }
       mj_step(m, d);
       ++steps;
+      for (int r = 0; r < d->nefc; ++r) {
+        const int type = d->efc_type[r];
+        if (type == mjCNSTR_LIMIT_JOINT) {
+          ++rows_limit;
+        } else if (type >= mjCNSTR_CONTACT_FRICTIONLESS) {
+          ++rows_contact;
+        } else {
+          ++rows_other;
+        }
+      }
     }
   }
   double rate = steps / Since(t0);
+  std::fprintf(stderr, "constraint rows per mj_step: contact %.1f, joint limit %.1f, other %.1f\n",
+               rows_contact / steps, rows_limit / steps, rows_other / steps);
   // where the time of one mj_step goes (MuJoCo's own timers, on for this loop only)
   const std::pair<int, const char*> stages[] = {
-      {mjTIMER_POS_KINEMATICS, "kinematics"}, {mjTIMER_POS_INERTIA, "inertia"},
-      {mjTIMER_POS_COLLISION, "collision"},   {mjTIMER_POS_MAKE, "make_constraints"},
-      {mjTIMER_POS_PROJECT, "project"},       {mjTIMER_VELOCITY, "velocity"},
-      {mjTIMER_ACTUATION, "actuation"},       {mjTIMER_ACCELERATION, "acceleration"},
+      {mjTIMER_POS_KINEMATICS, "kinematics"},   {mjTIMER_POS_INERTIA, "inertia"},
+      {mjTIMER_POS_COLLISION, "collision"},     {mjTIMER_POS_MAKE, "make_constraints"},
+      {mjTIMER_POS_PROJECT, "project"},         {mjTIMER_VELOCITY, "velocity"},
+      {mjTIMER_ACTUATION, "actuation"},         {mjTIMER_ACCELERATION, "acceleration"},
       {mjTIMER_CONSTRAINT, "constraint_solver"}};
   double total = d->timer[mjTIMER_STEP].duration;
   if (total > 0) {

@@ -108,7 +108,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       ->capture_default_str();
 
   EvalFlags ev;
-  std::string suites = core::JoinNames(eval::SuiteNames()) + ", " + kLanguageSuite + ", walk";
+  std::string suites =
+      core::JoinNames(eval::SuiteNames()) + ", " + kLanguageSuite + ", walk, walk-step";
   CLI::App* eval_cmd = app.add_subcommand("eval", "Run a benchmark suite of random episodes");
   eval_cmd->add_option("--suite", ev.suite, "Suite: " + suites)->required();
   eval_cmd->add_option("--episodes", ev.episodes, "Number of episodes")->capture_default_str();
@@ -133,6 +134,11 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   eval_cmd->add_option("--policy", ev.policy,
                        "Walking policy file (walk suite; get-close steps of other suites)");
   eval_cmd->add_flag("--video", ev.video, "walk suite: also write MP4s of rendered episodes");
+  eval_cmd
+      ->add_option("--physics-solver", ev.physics_solver,
+                   "walk suites: MuJoCo solver, newton or pgs (e.g. to check a policy trained "
+                   "with physics_solver pgs)")
+      ->capture_default_str();
 
   PlanFlags pl;
   CLI::App* plan_cmd =

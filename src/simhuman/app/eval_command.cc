@@ -120,31 +120,40 @@ int LanguageEval(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
   return 0;
 }
 
-// the `walk` suite: the walking policy alone (eval/walk_eval.h)
+// the `walk` and `walk-step` suites: the walking policy alone (eval/walk_eval.h)
 int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
   if (flags.policy.empty()) {
+    return ReportError(
+        err, kCommand,
+        absl::InvalidArgumentError("--suite " + flags.suite + " needs --policy <file>"));
+  }
+  if (flags.physics_solver != "newton" && flags.physics_solver != "pgs") {
     return ReportError(err, kCommand,
-                       absl::InvalidArgumentError("--suite walk needs --policy <file>"));
+                       absl::InvalidArgumentError("--physics-solver '" + flags.physics_solver +
+                                                  "' is unknown; valid: newton, pgs"));
   }
   eval::WalkEvalOptions o;
+  o.step_suite = flags.suite == "walk-step";
+  o.physics_solver = flags.physics_solver;
   o.policy = flags.policy;
   o.episodes = flags.episodes;
   o.seed = flags.seed;
   o.video_every = flags.video_every;
   o.video = flags.video;
-  o.sheet_dir = flags.out.empty() ? "out/eval_walk" : flags.out;
+  o.sheet_dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
   absl::Status dir = MakeOutputDir(o.sheet_dir);
   if (!dir.ok()) return ReportError(err, kCommand, dir);
   std::ofstream lines(o.sheet_dir + "/episodes.jsonl", std::ios::trunc);
-  out << "simhuman eval: suite walk, " << o.episodes << " episodes, seed " << o.seed << ", policy "
-      << o.policy << " -> " << o.sheet_dir << std::endl;
-  out << Row("%4s %7s %-4s %-4s %7s %8s %8s %9s %9s", "ep", "dist_m", "ok", "fell", "time_s",
-             "end_cm", "end_deg", "speed_ms", "skate_ms")
+  out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes, seed "
+      << o.seed << ", policy " << o.policy << " -> " << o.sheet_dir << std::endl;
+  out << Row("%4s %7s %8s %-4s %-4s %7s %8s %8s %9s %9s %8s", "ep", "dist_m", "bear_deg", "ok",
+             "fell", "time_s", "end_cm", "end_deg", "speed_ms", "skate_ms", "turn_deg")
       << std::endl;
   auto summary = eval::RunWalkEval(o, nullptr, [&](const eval::WalkEpisode& e) {
-    out << Row("%4d %7.2f %-4s %-4s %7.2f %8.1f %8.1f %9.2f %9.3f", e.index, e.dist_m,
-               e.success ? "yes" : "no", e.fell ? "yes" : "no", e.time_s, 100 * e.final_dist_m,
-               e.final_yaw_err_deg, e.mean_speed_mps, e.foot_skate_mps)
+    out << Row("%4d %7.2f %8.0f %-4s %-4s %7.2f %8.1f %8.1f %9.2f %9.3f %8.0f", e.index, e.dist_m,
+               e.bearing_deg, e.success ? "yes" : "no", e.fell ? "yes" : "no", e.time_s,
+               100 * e.final_dist_m, e.final_yaw_err_deg, e.mean_speed_mps, e.foot_skate_mps,
+               e.max_turn_deg)
         << std::endl;
     if (!e.render_error.empty())
       out << "     (not rendered: " << e.render_error << ")" << std::endl;
@@ -155,9 +164,10 @@ int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err
       eval::WriteJsonFile(o.sheet_dir + "/summary.json", eval::WalkSummaryJson(*summary, o));
   if (!ws.ok()) return ReportError(err, kCommand, ws);
   out << Row("\nsummary: success %.1f%%  falls %.1f%%  time %.1f s  skate %.3f m/s  end %.1f cm "
-             "%.1f deg",
+             "%.1f deg  turn %.0f deg (no turn >= 45 deg: %.0f%% of successes)",
              100 * summary->success_rate, 100 * summary->fall_rate, summary->mean_time_s,
-             summary->foot_skate_mps, 100 * summary->final_dist_m, summary->final_yaw_err_deg)
+             summary->foot_skate_mps, 100 * summary->final_dist_m, summary->final_yaw_err_deg,
+             summary->max_turn_deg, 100 * summary->no_turn_rate)
       << std::endl;
   return kExitOk;
 }
@@ -166,7 +176,7 @@ int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err
 
 int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
   if (flags.suite == kLanguageSuite) return LanguageEval(flags, out, err);
-  if (flags.suite == "walk") {
+  if (flags.suite == "walk" || flags.suite == "walk-step") {
     if (flags.episodes < 1) {
       return ReportError(err, kCommand, absl::InvalidArgumentError("--episodes must be >= 1"));
     }
@@ -178,7 +188,7 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
         err, kCommand,
         absl::InvalidArgumentError("--suite: unknown suite '" + flags.suite +
                                    "'; valid suites are: " + core::JoinNames(eval::SuiteNames()) +
-                                   ", " + kLanguageSuite + ", walk"));
+                                   ", " + kLanguageSuite + ", walk, walk-step"));
   }
   if (flags.episodes < 1) {
     return ReportError(err, kCommand,

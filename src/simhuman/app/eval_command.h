@@ -25,7 +25,8 @@ struct EvalFlags {
   /// Walking policy file: required by the `walk` suite; other suites walk their get-close
   /// steps with it when given (default assets/policies/walk.pt when that file exists).
   std::string policy;
-  bool video = false;  ///< walk suite: also write MP4s of rendered episodes
+  bool video = false;                     ///< walk suite: also write MP4s of rendered episodes
+  std::string physics_solver = "newton";  ///< walk suites: world::ModelOptions::solver
 };
 
 /// The suite name of the language benchmark (no episodes: a corpus of commands).

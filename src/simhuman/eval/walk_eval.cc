@@ -1,8 +1,10 @@
 #include "simhuman/eval/walk_eval.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "simhuman/control/policy/policy_controller.h"
+#include "simhuman/control/policy/walk_task.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/replay.h"
@@ -16,23 +18,34 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
   using control::kWalkPhysicsDt;
   using control::kWalkSubsteps;
   WalkEvalSummary sum;
-  int successes = 0;
+  int successes = 0, no_turn = 0;
   for (int i = 0; i < options.episodes; ++i) {
     core::Rng rng(core::DeriveSeed(options.seed, static_cast<uint64_t>(i)));
     world::AgentPlacement start;
     start.yaw_rad = rng.Uniform(-M_PI, M_PI);
     world::ModelOptions mo;
     mo.timestep_s = kWalkPhysicsDt;
+    mo.solver = options.physics_solver;
     SH_ASSIGN_OR_RETURN(auto world, world::SimWorld::Create(core::SceneCatalog(), {start}, mo));
     world->mutable_model()->nstack = 150000;
     SH_ASSIGN_OR_RETURN(auto walker,
                         control::WalkPolicyController::Load(options.policy, world.get(), 0));
     WalkEpisode ep;
     ep.index = i;
-    ep.dist_m = rng.Uniform(options.min_dist_m, options.max_dist_m);
-    double bearing = rng.Uniform(-M_PI, M_PI);
+    double bearing, tyaw;
+    if (options.step_suite) {
+      ep.dist_m = rng.Uniform(0.5, 1.5);
+      ep.bearing_deg = rng.Uniform(60.0, 300.0);
+      bearing = start.yaw_rad + ep.bearing_deg * M_PI / 180;
+      tyaw = start.yaw_rad;
+    } else {
+      ep.dist_m = rng.Uniform(options.min_dist_m, options.max_dist_m);
+      bearing = rng.Uniform(-M_PI, M_PI);
+      tyaw = rng.Uniform(-M_PI, M_PI);
+      ep.bearing_deg = std::remainder(bearing - start.yaw_rad, 2 * M_PI) * 180 / M_PI;
+    }
+    if (ep.bearing_deg > 180) ep.bearing_deg -= 360;
     double tx = ep.dist_m * std::cos(bearing), ty = ep.dist_m * std::sin(bearing);
-    double tyaw = rng.Uniform(-M_PI, M_PI);
     walker->SetTarget(tx, ty, tyaw);
     mjData* d = world->data();
     const mjModel* m = world->model();
@@ -53,6 +66,7 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
       traj.qpos.emplace_back(d->qpos, d->qpos + m->nq);
       traj.step_index.push_back(0);
     };
+    SH_ASSIGN_OR_RETURN(const control::WalkIndex wix, control::MakeWalkIndex(*world, 0));
     const int floor = mj_name2id(m, mjOBJ_GEOM, "floor");
     int lf = mj_name2id(m, mjOBJ_GEOM, "left_foot_geom"),
         rf = mj_name2id(m, mjOBJ_GEOM, "right_foot_geom");
@@ -76,6 +90,13 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
       const mjtNum* v = d->qvel + ix.root_qvel;
       path += std::hypot(v[0], v[1]) * kWalkPhysicsDt;
       world::HealthReport h = world->Step();
+      if (k % kWalkSubsteps == 0) {
+        Eigen::Vector3d pelvis;
+        double yaw;
+        control::PelvisPose(d, wix, &pelvis, &yaw);
+        ep.max_turn_deg = std::max(
+            ep.max_turn_deg, std::abs(std::remainder(yaw - start.yaw_rad, 2 * M_PI)) * 180 / M_PI);
+      }
       if (!h.ok() || d->xpos[3 * ix.head_body + 2] < 0.8) {
         ep.fell = true;
         break;
@@ -115,7 +136,7 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
       }
     }
     double dist, yaw_err;
-    control::WalkErrors(d, *control::MakeWalkIndex(*world, 0), walker->state(), &dist, &yaw_err);
+    control::WalkErrors(d, wix, walker->state(), &dist, &yaw_err);
     ep.final_dist_m = dist;
     ep.final_yaw_err_deg = std::abs(yaw_err) * 180 / M_PI;
     ep.foot_skate_mps = skate_n ? skate / skate_n : 0;
@@ -127,8 +148,10 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
     sum.foot_skate_mps += ep.foot_skate_mps;
     sum.final_dist_m += ep.final_dist_m;
     sum.final_yaw_err_deg += ep.final_yaw_err_deg;
+    sum.max_turn_deg += ep.max_turn_deg;
     if (ep.success) {
       ++successes;
+      no_turn += ep.max_turn_deg < 45.0;
       sum.mean_time_s += ep.time_s;
     }
   }
@@ -138,8 +161,12 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
     sum.foot_skate_mps /= sum.episodes;
     sum.final_dist_m /= sum.episodes;
     sum.final_yaw_err_deg /= sum.episodes;
+    sum.max_turn_deg /= sum.episodes;
   }
-  if (successes) sum.mean_time_s /= successes;
+  if (successes) {
+    sum.mean_time_s /= successes;
+    sum.no_turn_rate = static_cast<double>(no_turn) / successes;
+  }
   return sum;
 }
 
@@ -154,13 +181,15 @@ nlohmann::ordered_json WalkEpisodeJson(const WalkEpisode& e) {
   j["final_yaw_err_deg"] = e.final_yaw_err_deg;
   j["mean_speed_mps"] = e.mean_speed_mps;
   j["foot_skate_mps"] = e.foot_skate_mps;
+  j["bearing_deg"] = e.bearing_deg;
+  j["max_turn_deg"] = e.max_turn_deg;
   if (!e.sheet_path.empty()) j["contact_sheet"] = e.sheet_path;
   return j;
 }
 
 nlohmann::ordered_json WalkSummaryJson(const WalkEvalSummary& s, const WalkEvalOptions& options) {
   nlohmann::ordered_json j;
-  j["suite"] = "walk";
+  j["suite"] = options.step_suite ? "walk-step" : "walk";
   j["episodes"] = s.episodes;
   j["success_rate"] = s.success_rate;
   j["fall_rate"] = s.fall_rate;
@@ -168,6 +197,9 @@ nlohmann::ordered_json WalkSummaryJson(const WalkEvalSummary& s, const WalkEvalO
   j["foot_skate_mps"] = s.foot_skate_mps;
   j["final_dist_m"] = s.final_dist_m;
   j["final_yaw_err_deg"] = s.final_yaw_err_deg;
+  j["max_turn_deg"] = s.max_turn_deg;
+  j["no_turn_rate"] = s.no_turn_rate;
+  j["physics_solver"] = options.physics_solver;
   j["policy"] = options.policy;
   j["seed"] = options.seed;
   const nlohmann::ordered_json provenance = ProvenanceJson();

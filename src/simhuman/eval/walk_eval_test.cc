@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+#include <vector>
+
 namespace simhuman::eval {
 namespace {
 
@@ -33,6 +37,32 @@ TEST(WalkEvalJson, EpisodeAndSummaryCarryTheDocumentedFields) {
   EXPECT_EQ(sj["policy"], "assets/policies/walk.pt");
   EXPECT_EQ(sj["seed"], 2);
   EXPECT_TRUE(sj.contains("git_revision"));  // provenance
+}
+
+TEST(WalkEval, StepSuiteAsksForShortStepsBehindOrBesideIntegration) {
+  WalkEvalOptions o;
+  o.policy = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/walk.pt";
+  o.episodes = 3;
+  o.seed = 5;
+  o.time_limit_s = 6;
+  o.step_suite = true;
+  std::vector<WalkEpisode> eps;
+  auto sum = RunWalkEval(o, &eps);
+  ASSERT_TRUE(sum.ok()) << sum.status();
+  ASSERT_EQ(eps.size(), 3u);
+  for (const WalkEpisode& e : eps) {
+    EXPECT_GE(e.dist_m, 0.5);
+    EXPECT_LE(e.dist_m, 1.5);
+    EXPECT_GE(std::abs(e.bearing_deg), 60.0) << e.index;
+    EXPECT_LE(std::abs(e.bearing_deg), 180.0) << e.index;
+    EXPECT_GE(e.max_turn_deg, 0.0);
+    EXPECT_LE(e.max_turn_deg, 180.0);
+  }
+  EXPECT_EQ(WalkSummaryJson(*sum, o)["suite"], "walk-step");
+  o.physics_solver = "cg";
+  auto bad = RunWalkEval(o, nullptr);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("cg"), std::string::npos) << bad.status();
 }
 
 }  // namespace

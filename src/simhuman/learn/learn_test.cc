@@ -48,6 +48,35 @@ TEST(VecEnv, SameSeedSameTrajectoryWithOneOrTwoThreads) {
   }
 }
 
+TEST(VecEnv, ChunkedStepMatchesStepAndSeesEachEnvsObservationOnce) {
+  // a feedback policy (the action depends on the observation) over 5 uneven chunks of 11 envs
+  VecEnv a(std::make_unique<ReachTask>(11), 2, 9), b(std::make_unique<ReachTask>(11), 2, 9);
+  a.ResetAll();
+  b.ResetAll();
+  const int d = a.obs_dim(), na = a.act_dim();
+  auto policy = [&](int i, const float* o, float* out) {
+    for (int k = 0; k < na; ++k) out[k] = std::tanh(o[k % d] - 0.3f * o[(k + 1) % d]) + 0.01f * i;
+  };
+  std::vector<float> act(static_cast<size_t>(11) * na);
+  for (int t = 0; t < 300; ++t) {
+    for (int i = 0; i < 11; ++i) policy(i, a.obs().data() + i * d, act.data() + i * na);
+    a.Step(act.data());
+    std::vector<std::atomic<int>> seen(11);
+    b.StepChunked(
+        [&](int begin, int end, const float* obs, float* actions) {
+          for (int i = begin; i < end; ++i) {
+            ++seen[i];
+            policy(i, obs + i * d, actions + i * na);
+          }
+        },
+        5);
+    for (auto& s : seen) ASSERT_EQ(s.load(), 1);
+    ASSERT_EQ(a.obs(), b.obs()) << t;
+    ASSERT_EQ(a.rewards(), b.rewards()) << t;
+    ASSERT_EQ(a.finished().size(), b.finished().size()) << t;
+  }
+}
+
 TEST(VecEnv, TimeLimitTruncatesAndResets) {
   VecEnv env(std::make_unique<ReachTask>(3), 1, 1);
   env.ResetAll();
@@ -260,13 +289,24 @@ TEST(Ppo, InitFromCopiesThePolicyAndWarmsUpTheCritic) {
   EXPECT_NE(bad.status().message().find("hidden"), std::string::npos) << bad.status();
   PpoConfig missing = b;
   missing.init_from = src_dir + "/no_such_policy.pt";
-  auto gone = PpoTrainer::Create(missing, TempDir("init_missing"));
+  const std::string gone_dir = TempDir("init_missing");
+  auto gone = PpoTrainer::Create(missing, gone_dir);
   ASSERT_FALSE(gone.ok());
   EXPECT_NE(gone.status().message().find("no_such_policy.pt"), std::string::npos);
+  // a run that could not start leaves no folder behind
+  EXPECT_FALSE(fs::exists(gone_dir));
 }
 
 TEST(PpoConfig, StrictJson) {
   EXPECT_TRUE(PpoConfig::FromJson(nlohmann::json{{"lr", 1e-4}}).ok());
+  auto solver = PpoConfig::FromJson(nlohmann::json{{"physics_solver", "cg"}});
+  ASSERT_FALSE(solver.ok());
+  EXPECT_NE(solver.status().message().find("cg"), std::string::npos) << solver.status();
+  auto pgs_reach =
+      PpoConfig::FromJson(nlohmann::json{{"physics_solver", "pgs"}, {"task", "reach"}});
+  ASSERT_FALSE(pgs_reach.ok());
+  EXPECT_NE(pgs_reach.status().message().find("walk task only"), std::string::npos);
+  EXPECT_FALSE(PpoConfig::FromJson(nlohmann::json{{"rollout_chunks", -1}}).ok());
   auto bad = PpoConfig::FromJson(nlohmann::json{{"learning_rate", 1e-4}});
   EXPECT_NE(bad.status().message().find("learning_rate"), std::string::npos);
   EXPECT_FALSE(PpoConfig::FromJson(nlohmann::json{{"task", "fly"}}).ok());

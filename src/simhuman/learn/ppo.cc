@@ -1,5 +1,6 @@
 #include "simhuman/learn/ppo.h"
 
+#include <omp.h>
 #include <torch/torch.h>
 
 #include <algorithm>
@@ -30,9 +31,12 @@ constexpr char kCheckpointName[] = "checkpoint.pt";
 constexpr int kStatsWindow = 200;
 constexpr double kLog2Pi = 1.8378770664093453;
 
-core::StatusOr<std::unique_ptr<VecTask>> MakeTask(const std::string& name, int envs) {
+core::StatusOr<std::unique_ptr<VecTask>> MakeTask(const std::string& name, int envs,
+                                                  const std::string& solver) {
   if (name == "walk") {
-    SH_ASSIGN_OR_RETURN(std::unique_ptr<WalkTask> t, WalkTask::Create(envs));
+    SH_ASSIGN_OR_RETURN(std::unique_ptr<WalkTask> t,
+                        WalkTask::Create(envs, solver == "pgs" ? WalkPhysicsSolver::kPgs
+                                                               : WalkPhysicsSolver::kNewton));
     return std::unique_ptr<VecTask>(std::move(t));
   }
   if (name == "reach") return std::unique_ptr<VecTask>(new ReachTask(envs));
@@ -72,6 +76,17 @@ absl::Status PpoConfig::Validate() const {
       update_torch_threads <= 0 || update_torch_threads > 64) {
     return absl::InvalidArgumentError(
         "threads, torch_threads and update_torch_threads must be in [1, 64]");
+  }
+  if (physics_solver != "newton" && physics_solver != "pgs") {
+    return absl::InvalidArgumentError("physics_solver '" + physics_solver +
+                                      "' is unknown; valid: newton, pgs");
+  }
+  if (physics_solver != "newton" && task != "walk") {
+    return absl::InvalidArgumentError("physics_solver '" + physics_solver +
+                                      "' applies to the walk task only; task is '" + task + "'");
+  }
+  if (rollout_chunks < 0 || rollout_chunks > num_envs) {
+    return absl::InvalidArgumentError("rollout_chunks must be in [0, num_envs]");
   }
   if (critic_warmup_iters < 0) {
     return absl::InvalidArgumentError("critic_warmup_iters must not be negative");
@@ -123,6 +138,8 @@ nlohmann::json PpoConfig::ToJson() const {
                         {"threads", threads},
                         {"torch_threads", torch_threads},
                         {"update_torch_threads", update_torch_threads},
+                        {"rollout_chunks", rollout_chunks},
+                        {"physics_solver", physics_solver},
                         {"seed", seed},
                         {"rollout_steps", rollout_steps},
                         {"epochs", epochs},
@@ -173,6 +190,8 @@ core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
     get("threads", c.threads);
     get("torch_threads", c.torch_threads);
     get("update_torch_threads", c.update_torch_threads);
+    get("rollout_chunks", c.rollout_chunks);
+    get("physics_solver", c.physics_solver);
     get("seed", c.seed);
     get("rollout_steps", c.rollout_steps);
     get("epochs", c.epochs);
@@ -412,7 +431,8 @@ const std::string& PpoTrainer::out_dir() const { return impl_->out; }
 core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Create(const PpoConfig& config,
                                                                const std::string& out_dir) {
   SH_RETURN_IF_ERROR(config.Validate());
-  SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task, MakeTask(config.task, config.num_envs));
+  SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task,
+                      MakeTask(config.task, config.num_envs, config.physics_solver));
   return CreateWithTask(config, out_dir, std::move(task));
 }
 
@@ -425,8 +445,6 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::CreateWithTask(
                                     " already holds a checkpoint; continue it with "
                                     "--resume or choose another --out");
   }
-  fs::create_directories(out_dir, ec);
-  if (ec) return absl::PermissionDeniedError(out_dir + ": cannot create: " + ec.message());
   auto impl = std::make_unique<Impl>();
   impl->cfg = config;
   impl->out = out_dir;
@@ -434,6 +452,9 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::CreateWithTask(
   impl->Build();
   SH_RETURN_IF_ERROR(impl->InitFrom());
   SH_RETURN_IF_ERROR(impl->BuildAmp());
+  // the run's folder appears only once its inputs (init_from, AMP clips) have loaded
+  fs::create_directories(out_dir, ec);
+  if (ec) return absl::PermissionDeniedError(out_dir + ": cannot create: " + ec.message());
   impl->env->ResetAll(0);
   std::ofstream(out_dir + "/config.json") << config.ToJson().dump(2) << "\n";
   return std::unique_ptr<PpoTrainer>(new PpoTrainer(std::move(impl)));
@@ -463,7 +484,7 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
     impl->cfg = *cfg;
     if (total_steps > 0) impl->cfg.total_steps = total_steps;
     SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task,
-                        MakeTask(impl->cfg.task, impl->cfg.num_envs));
+                        MakeTask(impl->cfg.task, impl->cfg.num_envs, impl->cfg.physics_solver));
     impl->env = std::make_unique<VecEnv>(std::move(task), impl->cfg.threads, impl->cfg.seed);
     impl->Build();
     SH_RETURN_IF_ERROR(impl->BuildAmp());
@@ -570,17 +591,37 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
     torch::Tensor log_std = m.actor->log_std();
     torch::Tensor std_dev = torch::exp(log_std);
     for (int t = 0; t < T; ++t) {
-      torch::Tensor raw = torch::from_blob(const_cast<float*>(m.env->obs().data()), {E, D}).clone();
+      torch::Tensor raw = torch::from_blob(const_cast<float*>(m.env->obs().data()), {E, D});
       m.norm.Update(raw);
-      torch::Tensor obs = m.norm.Normalize(raw);
-      torch::Tensor mean = m.actor->forward(obs);
-      torch::Tensor act = mean + std_dev * m.Gaussian(E, A);
-      b_obs[t] = obs;
-      b_act[t] = act;
-      b_logp[t] = LogProb(act, mean, log_std);
-      b_val[t] = m.critic->forward(obs).squeeze(-1);
-      act = act.contiguous();
-      m.env->Step(act.data_ptr<float>());
+      // the exploration noise is drawn here, in env order, so results do not depend on chunks
+      torch::Tensor noise = m.Gaussian(E, A);
+      torch::Tensor t_obs = b_obs[t], t_act = b_act[t], t_logp = b_logp[t], t_val = b_val[t];
+      // policy and value of envs [b, e): reads their raw observations, fills the buffers
+      auto infer = [&](int b, int e, const float* obs_rows, float* act_rows) {
+        torch::NoGradGuard ng_thread;  // grad mode is per thread
+        torch::Tensor o = m.norm.Normalize(torch::from_blob(
+            const_cast<float*>(obs_rows) + static_cast<int64_t>(b) * D, {e - b, D}));
+        torch::Tensor mean = m.actor->forward(o);
+        torch::Tensor act = mean + std_dev * noise.slice(0, b, e);
+        t_obs.slice(0, b, e).copy_(o);
+        t_act.slice(0, b, e).copy_(act);
+        t_logp.slice(0, b, e).copy_(LogProb(act, mean, log_std));
+        t_val.slice(0, b, e).copy_(m.critic->forward(o).squeeze(-1));
+        torch::from_blob(act_rows + static_cast<int64_t>(b) * A, {e - b, A}).copy_(act);
+      };
+      if (m.cfg.rollout_chunks > 0) {
+        m.env->StepChunked(
+            [&](int b, int e, const float* obs_rows, float* act_rows) {
+              // OpenMP thread counts are per thread (LibTorch's and OpenBLAS's): one per worker
+              if (omp_get_max_threads() != 1) omp_set_num_threads(1);
+              infer(b, e, obs_rows, act_rows);
+            },
+            m.cfg.rollout_chunks);
+      } else {
+        std::vector<float> actions(static_cast<size_t>(E) * A);
+        infer(0, E, m.env->obs().data(), actions.data());
+        m.env->Step(actions.data());
+      }
       torch::Tensor rew =
           torch::from_blob(const_cast<float*>(m.env->rewards().data()), {E}).clone();
       if (m.amp) {
@@ -731,6 +772,7 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
     }
     if (!rollout_finite) skipped = m.cfg.epochs * m.cfg.minibatches;
     if (++m.bad_in_row >= m.cfg.max_bad_updates) {
+      torch::set_num_threads(m.cfg.torch_threads);
       return absl::InternalError("training aborted: " + std::to_string(m.bad_in_row) +
                                  " non-finite updates in a row at iteration " +
                                  std::to_string(m.iteration));

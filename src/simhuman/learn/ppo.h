@@ -40,6 +40,14 @@ struct PpoConfig {
   /// LibTorch intra-op threads for the PPO and AMP updates, when the env threads are idle
   /// (2 on 2 quiet cores: the update is 1.5x faster; on a busy machine 1 can be faster)
   int update_torch_threads = 2;
+  /// Collection splits the envs into this many chunks; each worker runs the policy on a chunk
+  /// and steps it at once, so inference runs on every core and overlaps physics
+  /// (VecEnv::StepChunked). 0: the whole batch is inferred on the calling thread, then stepped.
+  int rollout_chunks = 0;
+  /// Walk task only: MuJoCo solver of the training physics, "newton" (as at run time) or
+  /// "pgs" (about 1.4x faster env steps; the shipped policy, trained with Newton, walks as
+  /// well under PGS: docs/BENCHMARKS.md).
+  std::string physics_solver = "newton";
   uint64_t seed = 1;
   int rollout_steps = 32;  ///< per env per iteration
   int epochs = 5;

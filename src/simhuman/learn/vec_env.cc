@@ -125,39 +125,60 @@ core::StatusOr<std::vector<float>> VecTask::AmpClipFeatures(const MotionClip&) c
                                   "' has no AMP features; AMP needs the walk task");
 }
 
-void VecEnv::Step(const float* actions) {
-  const int d = obs_dim(), a = act_dim();
-  pool_.ParallelFor(num_envs(), [&](int i) {
-    float* o = obs_.data() + static_cast<size_t>(i) * d;
-    StepInfo info;
-    task_->Step(i, actions + static_cast<size_t>(i) * a, o, &info);
-    rewards_[i] = info.reward;
-    terminated_[i] = info.terminated;
-    truncated_[i] = info.truncated && !info.terminated;
-    ep_ret_[i] += info.reward;
-    ++ep_len_[i];
-    ended_[i] = info.terminated || info.truncated;
-    if (amp_dim_ > 0) {
-      const size_t f = static_cast<size_t>(amp_dim_);
-      float* pair = amp_pairs_.data() + i * 2 * f;
-      float* cur = amp_cur_.data() + i * f;
-      std::memcpy(pair, cur, sizeof(float) * f);
-      task_->AmpFeatures(i, pair + f);
-      std::memcpy(cur, pair + f, sizeof(float) * f);
-    }
-    if (ended_[i]) {
-      std::memcpy(terminal_obs_.data() + static_cast<size_t>(i) * d, o, sizeof(float) * d);
-      ep_done_[i] = EpisodeStats{ep_ret_[i], ep_len_[i], info.success, info.terminated};
-      task_->Reset(i, core::DeriveSeed(seed_, static_cast<uint64_t>(i), ep_count_[i]++), o);
-      if (amp_dim_ > 0) task_->AmpFeatures(i, amp_cur_.data() + static_cast<size_t>(i) * amp_dim_);
-      ep_ret_[i] = 0;
-      ep_len_[i] = 0;
-    }
-  });
+void VecEnv::StepOne(int i, const float* action) {
+  const int d = obs_dim();
+  float* o = obs_.data() + static_cast<size_t>(i) * d;
+  StepInfo info;
+  task_->Step(i, action, o, &info);
+  rewards_[i] = info.reward;
+  terminated_[i] = info.terminated;
+  truncated_[i] = info.truncated && !info.terminated;
+  ep_ret_[i] += info.reward;
+  ++ep_len_[i];
+  ended_[i] = info.terminated || info.truncated;
+  if (amp_dim_ > 0) {
+    const size_t f = static_cast<size_t>(amp_dim_);
+    float* pair = amp_pairs_.data() + i * 2 * f;
+    float* cur = amp_cur_.data() + i * f;
+    std::memcpy(pair, cur, sizeof(float) * f);
+    task_->AmpFeatures(i, pair + f);
+    std::memcpy(cur, pair + f, sizeof(float) * f);
+  }
+  if (ended_[i]) {
+    std::memcpy(terminal_obs_.data() + static_cast<size_t>(i) * d, o, sizeof(float) * d);
+    ep_done_[i] = EpisodeStats{ep_ret_[i], ep_len_[i], info.success, info.terminated};
+    task_->Reset(i, core::DeriveSeed(seed_, static_cast<uint64_t>(i), ep_count_[i]++), o);
+    if (amp_dim_ > 0) task_->AmpFeatures(i, amp_cur_.data() + static_cast<size_t>(i) * amp_dim_);
+    ep_ret_[i] = 0;
+    ep_len_[i] = 0;
+  }
+}
+
+void VecEnv::CollectFinished() {
   finished_.clear();
   for (int i = 0; i < num_envs(); ++i) {
     if (ended_[i]) finished_.push_back(ep_done_[i]);
   }
+}
+
+void VecEnv::Step(const float* actions) {
+  const int a = act_dim();
+  pool_.ParallelFor(num_envs(), [&](int i) { StepOne(i, actions + static_cast<size_t>(i) * a); });
+  CollectFinished();
+}
+
+void VecEnv::StepChunked(const ChunkPolicy& policy, int chunks) {
+  const int e = num_envs(), a = act_dim();
+  chunks = std::clamp(chunks, 1, e);
+  chunk_actions_.resize(static_cast<size_t>(e) * a);
+  pool_.ParallelFor(chunks, [&](int c) {
+    const int begin = static_cast<int>(static_cast<int64_t>(e) * c / chunks);
+    const int end = static_cast<int>(static_cast<int64_t>(e) * (c + 1) / chunks);
+    policy(begin, end, obs_.data(), chunk_actions_.data());
+    for (int i = begin; i < end; ++i)
+      StepOne(i, chunk_actions_.data() + static_cast<size_t>(i) * a);
+  });
+  CollectFinished();
 }
 
 }  // namespace simhuman::learn

@@ -108,6 +108,16 @@ class VecEnv {
   /// in this step, in env order.
   void Step(const float* actions);
 
+  /// Computes a chunk's actions: reads obs rows [begin, end) of `obs` (the observations before
+  /// the step) and writes action rows [begin, end) of `actions` ([E * act_dim]).
+  using ChunkPolicy = std::function<void(int begin, int end, const float* obs, float* actions)>;
+  /// Like Step, but the actions come from `policy`, called on the worker threads for
+  /// `chunks` contiguous chunks of envs, each chunk stepped right after its actions are known:
+  /// the inference of one chunk overlaps the physics of another, so no core idles while a
+  /// single thread runs the policy. `policy` must be safe to call concurrently for distinct
+  /// chunks. Same results as Step with the same actions.
+  void StepChunked(const ChunkPolicy& policy, int chunks);
+
   const std::vector<float>& obs() const { return obs_; }
   const std::vector<float>& terminal_obs() const { return terminal_obs_; }
   const std::vector<float>& rewards() const { return rewards_; }
@@ -126,6 +136,9 @@ class VecEnv {
   const std::vector<float>& amp_pairs() const { return amp_pairs_; }
 
  private:
+  void StepOne(int i, const float* action);  // one env's step, reset and bookkeeping
+  void CollectFinished();
+
   std::unique_ptr<VecTask> task_;
   WorkerPool pool_;
   uint64_t seed_;
@@ -138,6 +151,7 @@ class VecEnv {
   std::vector<EpisodeStats> finished_;
   int amp_dim_ = 0;
   std::vector<float> amp_cur_, amp_pairs_;  // [E x F] current state, [E x 2F] last step
+  std::vector<float> chunk_actions_;        // StepChunked's action buffer [E x act_dim]
 };
 
 }  // namespace simhuman::learn

@@ -21,11 +21,12 @@ double Wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
 
 }  // namespace
 
-core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs) {
+core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs, WalkPhysicsSolver solver) {
   if (num_envs <= 0) return absl::InvalidArgumentError("walk task: --envs must be positive");
   std::unique_ptr<WalkTask> t(new WalkTask());
   world::ModelOptions opt;
   opt.timestep_s = control::kWalkPhysicsDt;
+  opt.solver = solver == WalkPhysicsSolver::kPgs ? "pgs" : "newton";
   SH_ASSIGN_OR_RETURN(
       t->world_, world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, opt));
   SH_ASSIGN_OR_RETURN(t->ix_, control::MakeWalkIndex(*t->world_, 0));
@@ -53,6 +54,15 @@ void WalkTask::DrawTarget(Env& e) {
   double yaw;
   control::PelvisPose(e.d, ix_, &pos, &yaw);
   double a = (45.0 + 135.0 * std::clamp(curriculum_, 0.0, 1.0)) * kDeg;
+  if (e.rng.Uniform() < 0.2) {
+    // a short step in any direction keeping the heading (steps back and sideways)
+    double dist = e.rng.Uniform(0.3, std::max(0.5, params_.short_step_m));
+    double bearing = yaw + e.rng.Uniform(-M_PI, M_PI);
+    e.s.target_xy = pos.head<2>() + dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+    e.s.target_yaw_rad = Wrap(yaw + e.rng.Uniform(-0.3, 0.3));
+    e.hold = 0;
+    return;
+  }
   double dist =
       e.rng.Uniform() < 0.1 ? e.rng.Uniform(0.0, 0.3) : 0.3 + 9.7 * std::pow(e.rng.Uniform(), 1.5);
   double bearing = yaw + e.rng.Uniform(-a, a);

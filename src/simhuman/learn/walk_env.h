@@ -37,10 +37,16 @@ struct WalkRewardTerms {
          power = 0, foot_slip = 0, total = 0;
 };
 
+/// MuJoCo constraint solver of the training physics. Newton is what the runner uses; PGS
+/// solves the same contact problem (dual form, fewer iterations to a looser fit) and steps the
+/// walking human about 1.4x faster (docs/BENCHMARKS.md).
+enum class WalkPhysicsSolver { kNewton, kPgs };
+
 class WalkTask : public VecTask {
  public:
   /// Builds the shared model and `num_envs` mjData. Errors from model building.
-  static core::StatusOr<std::unique_ptr<WalkTask>> Create(int num_envs);
+  static core::StatusOr<std::unique_ptr<WalkTask>> Create(
+      int num_envs, WalkPhysicsSolver solver = WalkPhysicsSolver::kNewton);
   ~WalkTask() override;
 
   std::string name() const override { return "walk"; }

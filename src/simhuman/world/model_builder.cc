@@ -70,11 +70,16 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
   if (!(options.timestep_s > 0) || !std::isfinite(options.timestep_s)) {
     return absl::InvalidArgumentError("model option timestep_s must be a positive number");
   }
+  if (options.solver != "newton" && options.solver != "pgs") {
+    return absl::InvalidArgumentError("model option solver '" + options.solver +
+                                      "' is unknown; valid: newton, pgs");
+  }
   std::ostringstream o;
   o << "<mujoco model=\"simhuman\">\n"
     << "<compiler angle=\"degree\" autolimits=\"true\"/>\n"
     << "<option timestep=\"" << F(options.timestep_s) << "\" iterations=\""
-    << options.solver_iterations << "\" integrator=\"Euler\"/>\n"
+    << options.solver_iterations << "\" integrator=\"Euler\" solver=\""
+    << (options.solver == "pgs" ? "PGS" : "Newton") << "\"/>\n"
     << "<size nconmax=\"1500\" njmax=\"4000\" nstack=\"3000000\"/>\n"
     << "<visual><global offwidth=\"" << options.offscreen_width << "\" offheight=\""
     << options.offscreen_height << "\"/><quality shadowsize=\"2048\"/>"

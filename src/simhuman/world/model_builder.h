@@ -20,6 +20,9 @@ struct AgentPlacement {
 struct ModelOptions {
   double timestep_s = 0.005;
   int solver_iterations = 20;
+  /// MuJoCo constraint solver: "newton" (default) or "pgs" (a faster, looser fit of the same
+  /// contact problem; the walking task can train with it).
+  std::string solver = "newton";
   int offscreen_width = 640;  ///< framebuffer for headless rendering
   int offscreen_height = 480;
 };

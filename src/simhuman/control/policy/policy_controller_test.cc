@@ -49,6 +49,45 @@ TEST(WalkPolicyController, ActsWithFiniteTargetsAtItsOwnRate) {
   EXPECT_FALSE((*c)->state().stepping);
 }
 
+TEST(WalkCommand, ShortStepsKeepTheHeadingLongWalksTurnFirst) {
+  auto world = World();
+  auto ix = MakeWalkIndex(*world, 0);
+  ASSERT_TRUE(ix.ok()) << ix.status();
+  mj_forward(world->model(), world->data());
+  Eigen::Vector3d pos;
+  double yaw;
+  PelvisPose(world->data(), *ix, &pos, &yaw);
+  const Eigen::Vector2d back(-std::cos(yaw), -std::sin(yaw)), left(-std::sin(yaw), std::cos(yaw));
+  WalkParams p;
+  auto command = [&](const Eigen::Vector2d& offset) {
+    WalkState s;
+    s.target_xy = pos.head<2>() + offset;
+    s.target_yaw_rad = yaw;
+    UpdateWalkCommand(p, world->data(), *ix, &s);
+    EXPECT_TRUE(s.stepping);
+    return s;
+  };
+  // 1.2 m behind, same heading: a step backwards without turning
+  WalkState b = command(1.2 * back);
+  EXPECT_TRUE(b.short_step);
+  EXPECT_LT(b.cmd.vx, -0.2);
+  EXPECT_NEAR(b.cmd.yaw_rate, 0.0, 0.05);
+  // 1.2 m to the left: a side step
+  WalkState l = command(1.2 * left);
+  EXPECT_GT(l.cmd.vy, 0.2);
+  EXPECT_NEAR(l.cmd.yaw_rate, 0.0, 0.05);
+  // 5 m behind: turn round first (no backward walking), at the top yaw rate
+  WalkState f = command(5.0 * back);
+  EXPECT_FALSE(f.short_step);
+  EXPECT_GT(f.cmd.vx, -0.05);
+  EXPECT_NEAR(std::abs(f.cmd.yaw_rate), p.max_yaw_rate, 1e-9);
+  // with short steps off, 1.2 m behind turns as a long walk does
+  p.short_step_m = 0;
+  WalkState off = command(1.2 * back);
+  EXPECT_FALSE(off.short_step);
+  EXPECT_GT(std::abs(off.cmd.yaw_rate), 0.5);
+}
+
 TEST(WalkPolicyController, WalksAroundATableOnTheWayToTheStandPoint) {
   world::ObjectSpec spec;
   spec.id = "table000";

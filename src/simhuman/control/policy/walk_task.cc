@@ -161,6 +161,7 @@ void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix
   double yaw_err = Wrap(s->target_yaw_rad - yaw);
   if (!s->stepping && (dist > p.start_radius_m || std::abs(yaw_err) > p.start_yaw_rad)) {
     s->stepping = true;
+    s->short_step = dist < p.short_step_m;
   } else if (s->stepping && dist < p.stop_radius_m && std::abs(yaw_err) < p.stop_yaw_rad) {
     s->stepping = false;
   }
@@ -169,7 +170,10 @@ void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix
   if (s->stepping) {
     // face the target while far, the requested heading when close
     double bearing = std::atan2(delta.y(), delta.x());
-    double w = Clamp((dist - 0.5) / 0.7, 0.0, 1.0);
+    if (dist > p.far_m) s->short_step = false;
+    double w = s->short_step
+                   ? 0.0
+                   : Clamp((dist - p.near_m) / std::max(1e-6, p.far_m - p.near_m), 0.0, 1.0);
     double facing = s->target_yaw_rad + w * Wrap(bearing - s->target_yaw_rad);
     s->facing_rad = facing;
     c.yaw_rate = Clamp(2.0 * Wrap(facing - yaw), -p.max_yaw_rate, p.max_yaw_rate);
@@ -177,8 +181,8 @@ void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix
     Eigen::Vector3d local = ToHeading(Eigen::Vector3d(delta.x(), delta.y(), 0), yaw);
     Eigen::Vector2d dir = Eigen::Vector2d::Zero();
     if (dist > 1e-6) dir = Eigen::Vector2d(local.x(), local.y()) / dist;
-    // far away: walk forward, turning first if the target is behind
-    if (dist > 1.0) speed *= 0.5 * (1.0 + dir.x());
+    // beyond stepping range: walk forward, turning first if the target is behind
+    if (!s->short_step && dist > p.turn_first_m) speed *= 0.5 * (1.0 + dir.x());
     c.vx = speed * dir.x();
     c.vy = speed * dir.y();
     // sideways and backwards steps are slower

@@ -38,6 +38,16 @@ struct WalkParams {
   double start_yaw_rad = 0.35;   ///< ... or when the heading error exceeds this (start)
   double stop_yaw_rad = 0.14;    ///< ... and is below this (stop)
   double max_yaw_rate = 1.5;     ///< rad/s
+  /// A walk to a target farther than far_m faces the direction of travel (turns, then walks
+  /// forward); closer than near_m it keeps the requested heading; in between it blends the two.
+  double near_m = 0.5;
+  double far_m = 1.2;
+  /// Farther than this, a target behind slows the walk until the human has turned toward it.
+  double turn_first_m = 1.0;
+  /// A walk that starts closer than this to its target is a short step: it keeps the requested
+  /// heading all the way (steps back or sideways, as people do for a metre or so) unless the
+  /// target ends up farther than far_m. 0: every walk follows the near/far blend.
+  double short_step_m = 1.5;
 };
 
 /// The command derived from the target each policy step (heading frame).
@@ -53,6 +63,7 @@ struct WalkState {
   double phase = 0;                                     ///< gait clock in [0, 1)
   double amplitude = 0;                                 ///< smoothed stepping amplitude in [0, 1]
   bool stepping = false;                                ///< hysteresis state: walking or standing
+  bool short_step = false;  ///< this walk started within short_step_m (WalkParams)
   WalkCommand cmd;
   double facing_rad = 0;  ///< heading the command turns toward (bearing far, target yaw near)
   std::array<float, kWalkActDim> prev_action{};
