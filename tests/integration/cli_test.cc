@@ -8,11 +8,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 extern char** environ;
@@ -43,8 +47,9 @@ std::string TempDir(const std::string& name) {
 }
 
 // runs SIMHUMAN_BIN with `args` in the temp folder, stdin from /dev/null, with `env` added to
-// the environment
-Proc RunBin(const std::vector<std::string>& args, const std::vector<std::string>& env = {}) {
+// the environment; `while_running` (optional) gets the child's pid before it is waited for
+Proc RunBin(const std::vector<std::string>& args, const std::vector<std::string>& env = {},
+            const std::function<void(pid_t)>& while_running = nullptr) {
   static int counter = 0;
   std::string base = (std::filesystem::temp_directory_path() /
                       ("simhuman_it_" + std::to_string(getpid()) + "_" + std::to_string(counter++)))
@@ -76,6 +81,7 @@ Proc RunBin(const std::vector<std::string>& args, const std::vector<std::string>
     p.err = "posix_spawn failed";
     return p;
   }
+  if (while_running) while_running(pid);
   int status = 0;
   waitpid(pid, &status, 0);
   if (WIFEXITED(status)) p.exit_code = WEXITSTATUS(status);
@@ -322,6 +328,26 @@ TEST(CliIntegrationTest, TrainResumeAndCorruptCheckpoint) {
   Proc walk_no_policy = RunBin({"eval", "--suite", "walk", "--episodes", "1"});
   EXPECT_EQ(walk_no_policy.exit_code, 2);
   EXPECT_NE(walk_no_policy.err.find("--policy"), std::string::npos);
+}
+
+TEST(CliIntegrationTest, TrainStopsOnCtrlCWithACheckpoint) {
+  std::string dir = TempDir("train_sigint");
+  // Ctrl-C once the first iterations are logged: the run checkpoints and says how to resume
+  Proc p = RunBin(
+      {"train", "--task", "reach", "--steps", "50M", "--out", dir, "--envs", "16", "--quiet"}, {},
+      [&](pid_t pid) {
+        for (int i = 0; i < 600 && Slurp(dir + "/log.jsonl").size() < 10; ++i) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        kill(pid, SIGINT);
+      });
+  EXPECT_EQ(p.signal, 0);
+  EXPECT_EQ(p.exit_code, 128 + SIGINT) << p.err;
+  EXPECT_NE(p.out.find("--resume " + dir), std::string::npos) << p.out;
+  ASSERT_TRUE(std::filesystem::exists(dir + "/checkpoint.pt"));
+  Proc resumed = RunBin({"train", "--resume", dir, "--steps", "1", "--quiet"});
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("resumed at"), std::string::npos) << resumed.out;
 }
 
 TEST(CliIntegrationTest, ClipGaitConvertAndBadInput) {

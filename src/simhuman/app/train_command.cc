@@ -1,7 +1,9 @@
 #include "simhuman/app/train_command.h"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +16,30 @@
 
 namespace simhuman::app {
 namespace {
+
+// Ctrl-C / SIGTERM: finish the iteration, write the checkpoint, then stop
+std::atomic<int> g_stop_signal{0};
+extern "C" void OnStopSignal(int sig) { g_stop_signal.store(sig); }
+
+// installs the handlers for the life of one train command, restoring the old ones after
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal.store(0);
+    old_int_ = std::signal(SIGINT, OnStopSignal);
+    old_term_ = std::signal(SIGTERM, OnStopSignal);
+  }
+  ~StopSignals() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+ private:
+  void (*old_int_)(int) = SIG_DFL;
+  void (*old_term_)(int) = SIG_DFL;
+};
 
 std::string Duration(double s) {
   if (!std::isfinite(s) || s < 0) return "--:--";
@@ -125,7 +151,16 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
       << std::endl;
   auto start = std::chrono::steady_clock::now();
   int64_t start_steps = tr.env_steps();
+  StopSignals signals;
   while (!tr.done()) {
+    if (int sig = g_stop_signal.load()) {
+      absl::Status s = tr.Checkpoint();
+      if (!s.ok()) return ReportError(err, "train", s);
+      out << "\nsimhuman train: stopped by signal " << sig << " at " << tr.env_steps()
+          << " steps; checkpoint in " << tr.out_dir() << "; continue with: simhuman train "
+          << "--resume " << tr.out_dir() << std::endl;
+      return 128 + sig;
+    }
     auto st = tr.Iterate();
     if (!st.ok()) {
       (void)tr.Checkpoint();

@@ -67,11 +67,13 @@ TEST(WalkCommand, ShortStepsKeepTheHeadingLongWalksTurnFirst) {
     EXPECT_TRUE(s.stepping);
     return s;
   };
-  // 1.2 m behind, same heading: a step backwards without turning
-  WalkState b = command(1.2 * back);
-  EXPECT_TRUE(b.short_step);
-  EXPECT_LT(b.cmd.vx, -0.2);
-  EXPECT_NEAR(b.cmd.yaw_rate, 0.0, 0.05);
+  // 1.2 and 1.45 m behind, same heading: steps backwards without turning
+  for (double dist : {1.2, 1.45}) {
+    WalkState b = command(dist * back);
+    EXPECT_TRUE(b.short_step) << dist;
+    EXPECT_LT(b.cmd.vx, -0.2) << dist;
+    EXPECT_NEAR(b.cmd.yaw_rate, 0.0, 0.05) << dist;
+  }
   // 1.2 m to the left: a side step
   WalkState l = command(1.2 * left);
   EXPECT_GT(l.cmd.vy, 0.2);

@@ -170,7 +170,8 @@ void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix
   if (s->stepping) {
     // face the target while far, the requested heading when close
     double bearing = std::atan2(delta.y(), delta.x());
-    if (dist > p.far_m) s->short_step = false;
+    // a target that moved (or a human pushed) well beyond stepping range ends the short step
+    if (dist > p.short_step_m + 0.5) s->short_step = false;
     double w = s->short_step
                    ? 0.0
                    : Clamp((dist - p.near_m) / std::max(1e-6, p.far_m - p.near_m), 0.0, 1.0);

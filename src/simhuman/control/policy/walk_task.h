@@ -46,7 +46,7 @@ struct WalkParams {
   double turn_first_m = 1.0;
   /// A walk that starts closer than this to its target is a short step: it keeps the requested
   /// heading all the way (steps back or sideways, as people do for a metre or so) unless the
-  /// target ends up farther than far_m. 0: every walk follows the near/far blend.
+  /// target ends up 0.5 m beyond that. 0: every walk follows the near/far blend.
   double short_step_m = 1.5;
 };
 
