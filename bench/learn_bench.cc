@@ -1,6 +1,7 @@
 // Training-side throughput of the walking task: raw mj_step of the same model, VecEnv steps
 // with random actions (1 and 2 worker threads), and VecEnv steps with policy inference (the
-// collection loop of PPO without the update). Prints JSON.
+// collection loop of PPO without the update), the last two also with the PGS solver. Prints
+// JSON.
 //   build/simhuman_learn_bench [envs] [seconds_per_case] [policy.pt]
 #include <torch/torch.h>
 
@@ -81,8 +82,9 @@ double RawStepsPerSecond(learn::WalkTask& task, double seconds) {
 }
 
 double EnvStepsPerSecond(int envs, int threads, double seconds, control::GaussianActor* actor,
-                         control::ObsNormalizer* norm) {
-  auto task = learn::WalkTask::Create(envs);
+                         control::ObsNormalizer* norm,
+                         learn::WalkPhysicsSolver solver = learn::WalkPhysicsSolver::kNewton) {
+  auto task = learn::WalkTask::Create(envs, solver);
   if (!task.ok()) std::exit(2);
   learn::VecEnv env(std::move(*task), threads, 1);
   env.ResetAll();
@@ -138,12 +140,17 @@ int main(int argc, char** argv) {
   double env2 = EnvStepsPerSecond(envs, 2, secs, nullptr, nullptr);
   double pol1 = EnvStepsPerSecond(envs, 1, secs, &actor, &norm);
   double pol2 = EnvStepsPerSecond(envs, 2, secs, &actor, &norm);
+  // the same with MuJoCo's PGS solver (PpoConfig::physics_solver "pgs")
+  double pgs2 = EnvStepsPerSecond(envs, 2, secs, nullptr, nullptr, learn::WalkPhysicsSolver::kPgs);
+  double pgs_pol2 = EnvStepsPerSecond(envs, 2, secs, &actor, &norm, learn::WalkPhysicsSolver::kPgs);
   const double sub = control::kWalkSubsteps;
   std::printf(
       "{\"envs\": %d, \"substeps\": %d, \"raw_mj_steps_per_s\": %.0f,\n"
       " \"env_steps_per_s_random_1thread\": %.0f, \"ratio_1thread\": %.3f,\n"
       " \"env_steps_per_s_random_2threads\": %.0f,\n"
-      " \"env_steps_per_s_policy_1thread\": %.0f, \"env_steps_per_s_policy_2threads\": %.0f}\n",
-      envs, control::kWalkSubsteps, raw, env1, env1 * sub / raw, env2, pol1, pol2);
+      " \"env_steps_per_s_policy_1thread\": %.0f, \"env_steps_per_s_policy_2threads\": %.0f,\n"
+      " \"pgs_env_steps_per_s_random_2threads\": %.0f, \"pgs_env_steps_per_s_policy_2threads\": "
+      "%.0f}\n",
+      envs, control::kWalkSubsteps, raw, env1, env1 * sub / raw, env2, pol1, pol2, pgs2, pgs_pol2);
   return 0;
 }
