@@ -146,14 +146,14 @@ int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err
   std::ofstream lines(o.sheet_dir + "/episodes.jsonl", std::ios::trunc);
   out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes, seed "
       << o.seed << ", policy " << o.policy << " -> " << o.sheet_dir << std::endl;
-  out << Row("%4s %7s %8s %-4s %-4s %7s %8s %8s %9s %9s %8s", "ep", "dist_m", "bear_deg", "ok",
-             "fell", "time_s", "end_cm", "end_deg", "speed_ms", "skate_ms", "turn_deg")
+  out << Row("%4s %7s %8s %-4s %-4s %7s %8s %8s %9s %9s %8s %7s", "ep", "dist_m", "bear_deg", "ok",
+             "fell", "time_s", "end_cm", "end_deg", "speed_ms", "skate_ms", "turn_deg", "arm_deg")
       << std::endl;
   auto summary = eval::RunWalkEval(o, nullptr, [&](const eval::WalkEpisode& e) {
-    out << Row("%4d %7.2f %8.0f %-4s %-4s %7.2f %8.1f %8.1f %9.2f %9.3f %8.0f", e.index, e.dist_m,
-               e.bearing_deg, e.success ? "yes" : "no", e.fell ? "yes" : "no", e.time_s,
+    out << Row("%4d %7.2f %8.0f %-4s %-4s %7.2f %8.1f %8.1f %9.2f %9.3f %8.0f %7.0f", e.index,
+               e.dist_m, e.bearing_deg, e.success ? "yes" : "no", e.fell ? "yes" : "no", e.time_s,
                100 * e.final_dist_m, e.final_yaw_err_deg, e.mean_speed_mps, e.foot_skate_mps,
-               e.max_turn_deg)
+               e.max_turn_deg, e.arm_raise_deg)
         << std::endl;
     if (!e.render_error.empty())
       out << "     (not rendered: " << e.render_error << ")" << std::endl;
@@ -164,10 +164,11 @@ int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err
       eval::WriteJsonFile(o.sheet_dir + "/summary.json", eval::WalkSummaryJson(*summary, o));
   if (!ws.ok()) return ReportError(err, kCommand, ws);
   out << Row("\nsummary: success %.1f%%  falls %.1f%%  time %.1f s  skate %.3f m/s  end %.1f cm "
-             "%.1f deg  turn %.0f deg (no turn >= 45 deg: %.0f%% of successes)",
+             "%.1f deg  turn %.0f deg (no turn >= 45 deg: %.0f%% of successes)  arm raised "
+             "%.0f deg",
              100 * summary->success_rate, 100 * summary->fall_rate, summary->mean_time_s,
              summary->foot_skate_mps, 100 * summary->final_dist_m, summary->final_yaw_err_deg,
-             summary->max_turn_deg, 100 * summary->no_turn_rate)
+             summary->max_turn_deg, 100 * summary->no_turn_rate, summary->arm_raise_deg)
       << std::endl;
   return kExitOk;
 }

@@ -70,6 +70,11 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
     const int floor = mj_name2id(m, mjOBJ_GEOM, "floor");
     int lf = mj_name2id(m, mjOBJ_GEOM, "left_foot_geom"),
         rf = mj_name2id(m, mjOBJ_GEOM, "right_foot_geom");
+    const int arm_body[2][2] = {
+        {mj_name2id(m, mjOBJ_BODY, "left_upper_arm"), mj_name2id(m, mjOBJ_BODY, "left_hand")},
+        {mj_name2id(m, mjOBJ_BODY, "right_upper_arm"), mj_name2id(m, mjOBJ_BODY, "right_hand")}};
+    double arm_raise = 0;
+    long arm_n = 0;
     for (int k = 0; k < steps; ++k) {
       if (k % kWalkSubsteps == 0) {
         if (render) record();
@@ -96,6 +101,18 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
         control::PelvisPose(d, wix, &pelvis, &yaw);
         ep.max_turn_deg = std::max(
             ep.max_turn_deg, std::abs(std::remainder(yaw - start.yaw_rad, 2 * M_PI)) * 180 / M_PI);
+        // the higher arm's angle from hanging straight down (shoulder to hand)
+        double raise = 0;
+        for (const auto& b : arm_body) {
+          if (b[0] < 0 || b[1] < 0) continue;
+          Eigen::Vector3d u(d->xpos[3 * b[1]] - d->xpos[3 * b[0]],
+                            d->xpos[3 * b[1] + 1] - d->xpos[3 * b[0] + 1],
+                            d->xpos[3 * b[1] + 2] - d->xpos[3 * b[0] + 2]);
+          if (u.norm() < 1e-6) continue;
+          raise = std::max(raise, std::acos(std::clamp(-u.z() / u.norm(), -1.0, 1.0)));
+        }
+        arm_raise += raise * 180 / M_PI;
+        ++arm_n;
       }
       if (!h.ok() || d->xpos[3 * ix.head_body + 2] < 0.8) {
         ep.fell = true;
@@ -141,6 +158,7 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
     ep.final_yaw_err_deg = std::abs(yaw_err) * 180 / M_PI;
     ep.foot_skate_mps = skate_n ? skate / skate_n : 0;
     ep.mean_speed_mps = ep.time_s > 0 ? path / ep.time_s : 0;
+    ep.arm_raise_deg = arm_n ? arm_raise / arm_n : 0;
     if (episodes) episodes->push_back(ep);
     if (on_episode) on_episode(ep);
     ++sum.episodes;
@@ -149,6 +167,7 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
     sum.final_dist_m += ep.final_dist_m;
     sum.final_yaw_err_deg += ep.final_yaw_err_deg;
     sum.max_turn_deg += ep.max_turn_deg;
+    sum.arm_raise_deg += ep.arm_raise_deg;
     if (ep.success) {
       ++successes;
       no_turn += ep.max_turn_deg < 45.0;
@@ -162,6 +181,7 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
     sum.final_dist_m /= sum.episodes;
     sum.final_yaw_err_deg /= sum.episodes;
     sum.max_turn_deg /= sum.episodes;
+    sum.arm_raise_deg /= sum.episodes;
   }
   if (successes) {
     sum.mean_time_s /= successes;
@@ -183,6 +203,7 @@ nlohmann::ordered_json WalkEpisodeJson(const WalkEpisode& e) {
   j["foot_skate_mps"] = e.foot_skate_mps;
   j["bearing_deg"] = e.bearing_deg;
   j["max_turn_deg"] = e.max_turn_deg;
+  j["arm_raise_deg"] = e.arm_raise_deg;
   if (!e.sheet_path.empty()) j["contact_sheet"] = e.sheet_path;
   return j;
 }
@@ -199,6 +220,7 @@ nlohmann::ordered_json WalkSummaryJson(const WalkEvalSummary& s, const WalkEvalO
   j["final_yaw_err_deg"] = s.final_yaw_err_deg;
   j["max_turn_deg"] = s.max_turn_deg;
   j["no_turn_rate"] = s.no_turn_rate;
+  j["arm_raise_deg"] = s.arm_raise_deg;
   j["physics_solver"] = options.physics_solver;
   j["policy"] = options.policy;
   j["seed"] = options.seed;

@@ -45,7 +45,11 @@ struct WalkEpisode {
   double mean_speed_mps = 0;  ///< path length / time while walking
   double bearing_deg = 0;     ///< direction of the target from the start heading (left +)
   double max_turn_deg = 0;    ///< largest |heading - start heading| during the episode
-  std::string sheet_path;     ///< contact sheet, when rendered
+  /// mean over the episode (policy steps) of the higher arm's angle from hanging straight
+  /// down, shoulder to hand: a relaxed walking arm stays within about 20 degrees, an arm held
+  /// out in front at shoulder height is at 90
+  double arm_raise_deg = 0;
+  std::string sheet_path;  ///< contact sheet, when rendered
   std::string render_error;
 };
 
@@ -56,6 +60,7 @@ struct WalkEvalSummary {
   double foot_skate_mps = 0;
   double final_dist_m = 0, final_yaw_err_deg = 0;  ///< means
   double max_turn_deg = 0;                         ///< mean of the episodes' max_turn_deg
+  double arm_raise_deg = 0;                        ///< mean of the episodes' arm_raise_deg
   /// share of successful episodes whose heading never left the start heading by 45 degrees
   /// or more (walk-step: stepped back or sideways instead of turning round)
   double no_turn_rate = 0;

@@ -57,8 +57,11 @@ TEST(WalkEval, StepSuiteAsksForShortStepsBehindOrBesideIntegration) {
     EXPECT_LE(std::abs(e.bearing_deg), 180.0) << e.index;
     EXPECT_GE(e.max_turn_deg, 0.0);
     EXPECT_LE(e.max_turn_deg, 180.0);
+    EXPECT_GT(e.arm_raise_deg, 0.0);
+    EXPECT_LT(e.arm_raise_deg, 180.0);
   }
   EXPECT_EQ(WalkSummaryJson(*sum, o)["suite"], "walk-step");
+  EXPECT_TRUE(WalkSummaryJson(*sum, o).contains("arm_raise_deg"));
   o.physics_solver = "cg";
   auto bad = RunWalkEval(o, nullptr);
   ASSERT_FALSE(bad.ok());
