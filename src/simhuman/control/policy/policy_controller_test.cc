@@ -90,6 +90,35 @@ TEST(WalkCommand, ShortStepsKeepTheHeadingLongWalksTurnFirst) {
   EXPECT_GT(std::abs(off.cmd.yaw_rate), 0.5);
 }
 
+TEST(WalkTargets, ArmsFollowTheReferenceLegsTheAction) {
+  auto world = World();
+  auto ix = MakeWalkIndex(*world, 0);
+  ASSERT_TRUE(ix.ok()) << ix.status();
+  WalkParams p;
+  WalkState s;
+  s.phase = 0.3;
+  s.amplitude = 1.0;
+  s.cmd.vx = 0.8;
+  double ref[kWalkActDim], ctrl[kWalkActDim];
+  WalkReference(p, s.phase, s.amplitude, s.cmd, ref);
+  std::vector<float> action(kWalkActDim, 1.0f);
+  WalkTargets(p, *ix, s, action.data(), ctrl);
+  const auto& names = world::HumanoidJointNames();
+  int arms = 0, moved = 0;
+  for (int j = 0; j < kWalkActDim; ++j) {
+    bool arm = names[j].find("shoulder") != std::string::npos ||
+               names[j].find("elbow") != std::string::npos;
+    if (arm) {
+      ++arms;
+      EXPECT_DOUBLE_EQ(ctrl[j], ref[j]) << names[j];
+    } else if (std::abs(ctrl[j] - ref[j]) > 0.1) {
+      ++moved;
+    }
+  }
+  EXPECT_EQ(arms, 8);
+  EXPECT_GE(moved, 15);  // the other 20 joints follow the action (a few clip at their limits)
+}
+
 TEST(WalkPolicyController, WalksAroundATableOnTheWayToTheStandPoint) {
   world::ObjectSpec spec;
   spec.id = "table000";

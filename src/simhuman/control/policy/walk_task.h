@@ -111,7 +111,9 @@ void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, 
                      float* obs);
 
 /// PD targets from a raw action: reference gait + kWalkActionScale * clip(action), clipped
-/// to the actuator ranges.
+/// to the actuator ranges. The arms (shoulders and elbows) follow the reference alone, hanging
+/// and swinging against the legs; the policy's 8 arm outputs are ignored (policies that
+/// steered them held an arm out for balance, docs/BENCHMARKS.md, session 6).
 void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s, const float* action,
                  double* ctrl28);
 
