@@ -43,11 +43,11 @@ core::StatusOr<std::unique_ptr<VecTask>> MakeTask(const std::string& name, int e
   return absl::InvalidArgumentError("unknown task '" + name + "'; valid: walk, reach");
 }
 
-// sum over action dims of the diagonal Gaussian log density
+// sum over the used action dims (`used`: 1 or 0 per dim) of the diagonal Gaussian log density
 torch::Tensor LogProb(const torch::Tensor& a, const torch::Tensor& mean,
-                      const torch::Tensor& log_std) {
+                      const torch::Tensor& log_std, const torch::Tensor& used) {
   torch::Tensor z = (a - mean) * torch::exp(-log_std);
-  return (-0.5 * z * z - log_std - 0.5 * kLog2Pi).sum(-1);
+  return ((-0.5 * z * z - log_std - 0.5 * kLog2Pi) * used).sum(-1);
 }
 
 absl::Status SaveAtomic(torch::serialize::OutputArchive& ar, const std::string& path) {
@@ -109,6 +109,11 @@ absl::Status PpoConfig::Validate() const {
   if (hidden.empty() || *std::min_element(hidden.begin(), hidden.end()) <= 0) {
     return absl::InvalidArgumentError("hidden must list positive layer widths");
   }
+  if (!critic_hidden.empty() &&
+      *std::min_element(critic_hidden.begin(), critic_hidden.end()) <= 0) {
+    return absl::InvalidArgumentError(
+        "critic_hidden must list positive layer widths (or be empty: the same as hidden)");
+  }
   if (max_bad_updates <= 0) return absl::InvalidArgumentError("max_bad_updates must be positive");
   if (!(amp_task_weight >= 0) || !(amp_style_weight >= 0) || !(amp_grad_penalty >= 0)) {
     return absl::InvalidArgumentError(
@@ -155,6 +160,7 @@ nlohmann::json PpoConfig::ToJson() const {
                         {"max_grad_norm", max_grad_norm},
                         {"init_std", init_std},
                         {"hidden", hidden},
+                        {"critic_hidden", critic_hidden},
                         {"checkpoint_every_s", checkpoint_every_s},
                         {"max_bad_updates", max_bad_updates},
                         {"curriculum_max_steps", curriculum_max_steps},
@@ -207,6 +213,7 @@ core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
     get("max_grad_norm", c.max_grad_norm);
     get("init_std", c.init_std);
     get("hidden", c.hidden);
+    get("critic_hidden", c.critic_hidden);
     get("checkpoint_every_s", c.checkpoint_every_s);
     get("max_bad_updates", c.max_bad_updates);
     get("curriculum_max_steps", c.curriculum_max_steps);
@@ -259,6 +266,7 @@ struct PpoTrainer::Impl {
   std::unique_ptr<VecEnv> env;
   control::GaussianActor actor{nullptr};
   torch::nn::Sequential critic{nullptr};
+  torch::Tensor act_used;  // [A] 1 for action dims the task uses, 0 for ignored ones
   std::unique_ptr<torch::optim::Adam> opt;
   control::ObsNormalizer norm;
   core::Rng rng{0};
@@ -353,7 +361,11 @@ struct PpoTrainer::Impl {
     torch::manual_seed(cfg.seed);
     int d = env->obs_dim(), a = env->act_dim();
     actor = control::GaussianActor(d, a, cfg.hidden, cfg.init_std);
-    critic = control::MakeMlp(d, cfg.hidden, 1, 1.0);
+    critic =
+        control::MakeMlp(d, cfg.critic_hidden.empty() ? cfg.hidden : cfg.critic_hidden, 1, 1.0);
+    std::vector<float> used(a);
+    for (int j = 0; j < a; ++j) used[j] = env->task().action_used(j) ? 1.f : 0.f;
+    act_used = torch::tensor(used);
     opt = std::make_unique<torch::optim::Adam>(Params(), torch::optim::AdamOptions(cfg.lr));
     norm = control::ObsNormalizer(d);
     rng = core::Rng(core::DeriveSeed(cfg.seed, 0x5050));
@@ -605,7 +617,7 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
         torch::Tensor act = mean + std_dev * noise.slice(0, b, e);
         t_obs.slice(0, b, e).copy_(o);
         t_act.slice(0, b, e).copy_(act);
-        t_logp.slice(0, b, e).copy_(LogProb(act, mean, log_std));
+        t_logp.slice(0, b, e).copy_(LogProb(act, mean, log_std, m.act_used));
         t_val.slice(0, b, e).copy_(m.critic->forward(o).squeeze(-1));
         torch::from_blob(act_rows + static_cast<int64_t>(b) * A, {e - b, A}).copy_(act);
       };
@@ -727,14 +739,14 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
       torch::Tensor r = ret.index_select(0, idx), ad = adv.index_select(0, idx);
       torch::Tensor mean = m.actor->forward(o);
       torch::Tensor log_std = m.actor->log_std();
-      torch::Tensor logp = LogProb(a, mean, log_std);
+      torch::Tensor logp = LogProb(a, mean, log_std, m.act_used);
       torch::Tensor ratio = torch::exp(logp - olp);
       torch::Tensor pg =
           -torch::min(ratio * ad, torch::clamp(ratio, 1 - m.cfg.clip, 1 + m.cfg.clip) * ad).mean();
       torch::Tensor v = m.critic->forward(o).squeeze(-1);
       torch::Tensor vc = ov + torch::clamp(v - ov, -m.cfg.value_clip, m.cfg.value_clip);
       torch::Tensor vloss = 0.5 * torch::max((v - r).pow(2), (vc - r).pow(2)).mean();
-      torch::Tensor entropy = (log_std + 0.5 + 0.5 * kLog2Pi).sum();
+      torch::Tensor entropy = ((log_std + 0.5 + 0.5 * kLog2Pi) * m.act_used).sum();
       torch::Tensor loss = critic_only
                                ? m.cfg.value_coef * vloss
                                : pg + m.cfg.value_coef * vloss - m.cfg.entropy_coef * entropy;
@@ -846,7 +858,8 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
     st.clip_frac = cf / n_mb;
   }
   st.lr = lr;
-  st.action_std = torch::exp(m.actor->log_std()).mean().item<double>();
+  st.action_std =
+      ((torch::exp(m.actor->log_std()) * m.act_used).sum() / m.act_used.sum()).item<double>();
   st.curriculum = m.env->task().curriculum();
   st.collect_s = collect;
   st.update_s = update;

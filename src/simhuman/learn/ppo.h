@@ -61,7 +61,10 @@ struct PpoConfig {
   double entropy_coef = 0.001;
   double max_grad_norm = 1.0;
   double init_std = 0.5;
-  std::vector<int> hidden = {256, 256};
+  std::vector<int> hidden = {256, 256};  ///< actor (policy) layer widths
+  /// Value-network layer widths; empty: the same as `hidden`. The critic is not shipped, and a
+  /// narrower one makes the update cheaper.
+  std::vector<int> critic_hidden;
   /// A new run starts its policy (actor weights, action std and observation normalizer) from
   /// this policy file or checkpoint instead of random weights (fine-tuning); the value network
   /// starts fresh. Its task and sizes must match. Empty: random initialization.

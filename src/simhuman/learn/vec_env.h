@@ -46,6 +46,10 @@ class VecTask {
   /// Curriculum level in [0, 1] (tasks without one ignore it).
   virtual double curriculum() const { return 1.0; }
   virtual void set_curriculum(double) {}
+  /// Whether the task uses action entry j (act_dim entries). PPO leaves unused entries out of
+  /// the log-probabilities and the entropy, so their noise neither moves the ratio nor gets a
+  /// gradient. Default: all used.
+  virtual bool action_used(int j) const { return j >= 0 && j < act_dim(); }
 
   // AMP (learn/amp.h). Tasks without AMP features keep these defaults: amp_feature_dim() 0
   // and AmpClipFeatures Unimplemented, which PpoTrainer reports when amp_clips is set.

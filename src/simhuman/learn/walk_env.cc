@@ -218,15 +218,20 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   double speed2 = vx * vx + vy * vy;
   bool inside = dist < kSuccessRadius && std::abs(yaw_err) < kSuccessYaw;
   t.at_target = inside ? std::exp(-speed2 / 0.1) : 0.0;
+  // action rate over the used entries (the ignored arm entries are pure exploration noise)
   double rate = 0;
+  int used = 0;
   for (int j = 0; j < kWalkActDim; ++j) {
     double ac = std::clamp(static_cast<double>(action[j]), -control::kWalkActionClip,
                            control::kWalkActionClip);
     double dd = ac - e.s.prev_action[j];
-    rate += dd * dd;
+    if (control::WalkActionUsed(j)) {
+      rate += dd * dd;
+      ++used;
+    }
     e.s.prev_action[j] = static_cast<float>(ac);
   }
-  t.action_rate = rate / kWalkActDim;
+  t.action_rate = rate / used;
   t.power = power;
   t.total =
       w_.scale * (w_.velocity * t.velocity + w_.progress * t.progress + w_.yaw_rate * t.yaw_rate +

@@ -53,6 +53,8 @@ class WalkTask : public VecTask {
   int num_envs() const override { return static_cast<int>(envs_.size()); }
   int obs_dim() const override { return control::kWalkObsDim; }
   int act_dim() const override { return control::kWalkActDim; }
+  /// The arm entries are unused: the arms follow the reference (control::WalkTargets).
+  bool action_used(int j) const override { return control::WalkActionUsed(j); }
   void Reset(int i, uint64_t seed, float* obs) override;
   void Step(int i, const float* action, float* obs, StepInfo* info) override;
   double curriculum() const override { return curriculum_; }

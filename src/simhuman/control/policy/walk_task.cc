@@ -262,11 +262,13 @@ void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, 
   }
 }
 
+bool WalkActionUsed(int j) { return j >= 0 && j < kWalkActDim && (j < kRShX || j > kLElbow); }
+
 void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s, const float* action,
                  double* ctrl28) {
   WalkReference(p, s.phase, s.amplitude, s.cmd, ctrl28);
   for (int j = 0; j < kWalkActDim; ++j) {
-    if (j >= kRShX && j <= kLElbow) continue;  // the arms follow the reference swing
+    if (!WalkActionUsed(j)) continue;  // the arms follow the reference swing
     double a = Clamp(static_cast<double>(action[j]), -kWalkActionClip, kWalkActionClip);
     ctrl28[j] = Clamp(ctrl28[j] + kWalkActionScale * a, ix.ctrl_lo[j], ix.ctrl_hi[j]);
   }

@@ -117,4 +117,7 @@ void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, 
 void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s, const float* action,
                  double* ctrl28);
 
+/// Whether WalkTargets uses action entry `j` (false for the 8 arm entries it ignores).
+bool WalkActionUsed(int j);
+
 }  // namespace simhuman::control
