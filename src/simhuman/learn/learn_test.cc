@@ -297,6 +297,45 @@ TEST(Ppo, InitFromCopiesThePolicyAndWarmsUpTheCritic) {
   EXPECT_FALSE(fs::exists(gone_dir));
 }
 
+// a task that ignores its second action entry: PPO gives that entry's noise no weight, so its
+// log-std never changes, while the used entry's does; a narrower critic than the actor saves
+// and resumes
+class FirstActionOnlyReach : public ReachTask {
+ public:
+  FirstActionOnlyReach() : ReachTask(8) {}
+  bool action_used(int j) const override { return j == 0; }
+};
+
+TEST(Ppo, UnusedActionEntriesGetNoGradientAndTheCriticHasItsOwnWidths) {
+  std::string dir = TempDir("unused");
+  PpoConfig c = ReachConfig(dir);
+  c.num_envs = 8;
+  c.rollout_steps = 16;
+  c.critic_hidden = {16};
+  c.total_steps = 3 * 8 * 16;
+  {
+    auto tr = PpoTrainer::CreateWithTask(c, dir, std::make_unique<FirstActionOnlyReach>());
+    ASSERT_TRUE(tr.ok()) << tr.status();
+    for (int i = 0; i < 2; ++i) ASSERT_TRUE((*tr)->Iterate().ok());
+    ASSERT_TRUE((*tr)->Checkpoint().ok());
+  }
+  auto p = control::LoadPolicyFile(dir + "/policy.pt");
+  ASSERT_TRUE(p.ok()) << p.status();
+  torch::Tensor log_std = p->actor->log_std();
+  const float init = static_cast<float>(std::log(c.init_std));
+  EXPECT_FLOAT_EQ(log_std[1].item<float>(), init);
+  EXPECT_NE(log_std[0].item<float>(), init);
+  EXPECT_EQ(p->meta.hidden, c.hidden);
+  // the checkpoint's critic has the critic_hidden widths: resuming rebuilds and loads it
+  auto r = PpoTrainer::Resume(dir);
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_TRUE((*r)->Iterate().ok());
+  EXPECT_FALSE(PpoConfig::FromJson(nlohmann::json{{"critic_hidden", {64, 0}}}).ok());
+  auto widths = PpoConfig::FromJson(nlohmann::json{{"critic_hidden", {64}}});
+  ASSERT_TRUE(widths.ok()) << widths.status();
+  EXPECT_EQ(widths->critic_hidden, std::vector<int>{64});
+}
+
 TEST(PpoConfig, StrictJson) {
   EXPECT_TRUE(PpoConfig::FromJson(nlohmann::json{{"lr", 1e-4}}).ok());
   auto solver = PpoConfig::FromJson(nlohmann::json{{"physics_solver", "cg"}});
