@@ -345,6 +345,9 @@ TEST(PpoConfig, StrictJson) {
       PpoConfig::FromJson(nlohmann::json{{"physics_solver", "pgs"}, {"task", "reach"}});
   ASSERT_FALSE(pgs_reach.ok());
   EXPECT_NE(pgs_reach.status().message().find("walk task only"), std::string::npos);
+  // the default solver, "auto", is valid for every task (pgs for walk, newton for reach)
+  EXPECT_EQ(PpoConfig().physics_solver, "auto");
+  EXPECT_TRUE(PpoConfig::FromJson(nlohmann::json{{"task", "reach"}}).ok());
   EXPECT_FALSE(PpoConfig::FromJson(nlohmann::json{{"rollout_chunks", -1}}).ok());
   auto bad = PpoConfig::FromJson(nlohmann::json{{"learning_rate", 1e-4}});
   EXPECT_NE(bad.status().message().find("learning_rate"), std::string::npos);

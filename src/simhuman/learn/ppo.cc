@@ -35,8 +35,8 @@ core::StatusOr<std::unique_ptr<VecTask>> MakeTask(const std::string& name, int e
                                                   const std::string& solver) {
   if (name == "walk") {
     SH_ASSIGN_OR_RETURN(std::unique_ptr<WalkTask> t,
-                        WalkTask::Create(envs, solver == "pgs" ? WalkPhysicsSolver::kPgs
-                                                               : WalkPhysicsSolver::kNewton));
+                        WalkTask::Create(envs, solver != "newton" ? WalkPhysicsSolver::kPgs
+                                                                  : WalkPhysicsSolver::kNewton));
     return std::unique_ptr<VecTask>(std::move(t));
   }
   if (name == "reach") return std::unique_ptr<VecTask>(new ReachTask(envs));
@@ -77,11 +77,11 @@ absl::Status PpoConfig::Validate() const {
     return absl::InvalidArgumentError(
         "threads, torch_threads and update_torch_threads must be in [1, 64]");
   }
-  if (physics_solver != "newton" && physics_solver != "pgs") {
+  if (physics_solver != "auto" && physics_solver != "newton" && physics_solver != "pgs") {
     return absl::InvalidArgumentError("physics_solver '" + physics_solver +
-                                      "' is unknown; valid: newton, pgs");
+                                      "' is unknown; valid: auto, newton, pgs");
   }
-  if (physics_solver != "newton" && task != "walk") {
+  if (physics_solver == "pgs" && task != "walk") {
     return absl::InvalidArgumentError("physics_solver '" + physics_solver +
                                       "' applies to the walk task only; task is '" + task + "'");
   }

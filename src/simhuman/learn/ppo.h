@@ -44,13 +44,13 @@ struct PpoConfig {
   /// and steps it at once, so inference runs on every core and overlaps physics
   /// (VecEnv::StepChunked). 0: the whole batch is inferred on the calling thread, then stepped.
   int rollout_chunks = 0;
-  /// Walk task only: MuJoCo solver of the training physics, "newton" (as at run time) or
-  /// "pgs" (about 1.4x faster env steps; the shipped policy, trained with Newton, walks as
-  /// well under PGS: docs/BENCHMARKS.md).
-  std::string physics_solver = "newton";
+  /// MuJoCo solver of the training physics: "newton" (as at run time), "pgs" (walk task only;
+  /// a cheaper solve of the same contact problem, about 1.3x faster env steps; policies move
+  /// between the two: docs/BENCHMARKS.md) or "auto" (default: pgs for walk, newton otherwise).
+  std::string physics_solver = "auto";
   uint64_t seed = 1;
   int rollout_steps = 32;  ///< per env per iteration
-  int epochs = 5;
+  int epochs = 3;
   int minibatches = 4;
   double lr = 3e-4;
   double lr_final_frac = 0.3;  ///< lr decays linearly to lr * this at total_steps
@@ -61,10 +61,11 @@ struct PpoConfig {
   double entropy_coef = 0.001;
   double max_grad_norm = 1.0;
   double init_std = 0.5;
-  std::vector<int> hidden = {256, 256};  ///< actor (policy) layer widths
+  std::vector<int> hidden = {256, 128};  ///< actor (policy) layer widths
   /// Value-network layer widths; empty: the same as `hidden`. The critic is not shipped, and a
-  /// narrower one makes the update cheaper.
-  std::vector<int> critic_hidden;
+  /// narrower one makes the update cheaper. (Defaults since session 7: 3 epochs, actor 256-128,
+  /// critic 128-128 bring the walk training loop to about 10 k env steps/s on 2 cores.)
+  std::vector<int> critic_hidden = {128, 128};
   /// A new run starts its policy (actor weights, action std and observation normalizer) from
   /// this policy file or checkpoint instead of random weights (fine-tuning); the value network
   /// starts fresh. Its task and sizes must match. Empty: random initialization.
