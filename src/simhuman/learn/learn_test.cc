@@ -334,6 +334,17 @@ TEST(Ppo, UnusedActionEntriesGetNoGradientAndTheCriticHasItsOwnWidths) {
   auto widths = PpoConfig::FromJson(nlohmann::json{{"critic_hidden", {64}}});
   ASSERT_TRUE(widths.ok()) << widths.status();
   EXPECT_EQ(widths->critic_hidden, std::vector<int>{64});
+  // a checkpoint's config from before critic_hidden existed: that run's critic was as wide as
+  // the actor, so resuming must build it so (not with today's default widths)
+  nlohmann::json legacy = c.ToJson();
+  legacy.erase("critic_hidden");
+  auto old = PpoConfig::FromCheckpointJson(legacy);
+  ASSERT_TRUE(old.ok()) << old.status();
+  EXPECT_TRUE(old->critic_hidden.empty());
+  auto current = PpoConfig::FromCheckpointJson(c.ToJson());
+  ASSERT_TRUE(current.ok()) << current.status();
+  EXPECT_EQ(current->critic_hidden, std::vector<int>{16});
+  EXPECT_FALSE(PpoConfig::FromCheckpointJson(nlohmann::json{{"learning_rate", 1}}).ok());
 }
 
 TEST(PpoConfig, StrictJson) {

@@ -177,6 +177,12 @@ nlohmann::json PpoConfig::ToJson() const {
                         {"amp_replay_size", amp_replay_size}};
 }
 
+core::StatusOr<PpoConfig> PpoConfig::FromCheckpointJson(const nlohmann::json& j) {
+  SH_ASSIGN_OR_RETURN(PpoConfig c, FromJson(j));
+  if (!j.contains("critic_hidden")) c.critic_hidden.clear();
+  return c;
+}
+
 core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
   if (!j.is_object()) return absl::InvalidArgumentError("training config must be a JSON object");
   PpoConfig c;
@@ -491,7 +497,7 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
       return absl::DataLossError(path + ": not a training checkpoint (training state missing)");
     }
     nlohmann::json j = nlohmann::json::parse(cfg_json.toStringRef(), nullptr, false);
-    auto cfg = PpoConfig::FromJson(j);
+    auto cfg = PpoConfig::FromCheckpointJson(j);
     if (!cfg.ok()) return core::Annotate(cfg.status(), path + ": config");
     impl->cfg = *cfg;
     if (total_steps > 0) impl->cfg.total_steps = total_steps;
@@ -511,7 +517,18 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
       return absl::DataLossError(path + ": actor, critic or optimizer state missing");
     }
     impl->actor->load(a);
+    // torch's load replaces a parameter whatever its shape: compare with the built critic
+    std::vector<std::vector<int64_t>> built;
+    for (const auto& p : impl->critic->parameters()) built.push_back(p.sizes().vec());
     impl->critic->load(c);
+    std::vector<torch::Tensor> loaded = impl->critic->parameters();
+    for (size_t k = 0; k < loaded.size(); ++k) {
+      if (loaded[k].sizes().vec() != built[k]) {
+        return absl::DataLossError(path +
+                                   ": the value network's shape differs from its config "
+                                   "(critic_hidden)");
+      }
+    }
     impl->opt->load(o);
     if (impl->amp) {
       torch::serialize::InputArchive d, dopt;

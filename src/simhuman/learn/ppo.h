@@ -95,6 +95,10 @@ struct PpoConfig {
   nlohmann::json ToJson() const;
   /// Strict: unknown keys are InvalidArgument naming the key; missing keys keep defaults.
   static core::StatusOr<PpoConfig> FromJson(const nlohmann::json& j);
+  /// FromJson for the config stored in a checkpoint. Keys added after the checkpoint was
+  /// written take the value that reproduces what that run built, not today's default: a
+  /// config without `critic_hidden` (before session 7) had a critic as wide as `hidden`.
+  static core::StatusOr<PpoConfig> FromCheckpointJson(const nlohmann::json& j);
 };
 
 /// What one iteration did (episode statistics over the last 200 finished episodes).
