@@ -64,7 +64,7 @@ struct PpoConfig {
   std::vector<int> hidden = {256, 128};  ///< actor (policy) layer widths
   /// Value-network layer widths; empty: the same as `hidden`. The critic is not shipped, and a
   /// narrower one makes the update cheaper. (Defaults since session 7: 3 epochs, actor 256-128,
-  /// critic 128-128 bring the walk training loop to about 10 k env steps/s on 2 cores.)
+  /// critic 128-128 bring the walk training loop to about 10 k env steps/s on 2 quiet cores.)
   std::vector<int> critic_hidden = {128, 128};
   /// A new run starts its policy (actor weights, action std and observation normalizer) from
   /// this policy file or checkpoint instead of random weights (fine-tuning); the value network
