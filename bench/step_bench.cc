@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   }
   auto cat = world::BuildCatalog(*spec);
   if (!cat.ok()) return 2;
-  std::vector<world::AgentPlacement> agents;
+  std::vector<world::AgentSpec> agents;
   for (const auto& h : spec->humans)
     agents.push_back({h.pos_xy.x(), h.pos_xy.y(), h.yaw_rad, h.scale});
   auto w = world::SimWorld::Create(*cat, agents);

@@ -108,8 +108,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       ->capture_default_str();
 
   EvalFlags ev;
-  std::string suites =
-      core::JoinNames(eval::SuiteNames()) + ", " + kLanguageSuite + ", walk, walk-step";
+  std::string suites = core::JoinNames(eval::SuiteNames());
   CLI::App* eval_cmd = app.add_subcommand("eval", "Run a benchmark suite of random episodes");
   eval_cmd->add_option("--suite", ev.suite, "Suite: " + suites)->required();
   eval_cmd->add_option("--episodes", ev.episodes, "Number of episodes")->capture_default_str();

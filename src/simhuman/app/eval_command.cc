@@ -176,20 +176,19 @@ int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err
 }  // namespace
 
 int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
-  if (flags.suite == kLanguageSuite) return LanguageEval(flags, out, err);
-  if (flags.suite == "walk" || flags.suite == "walk-step") {
-    if (flags.episodes < 1) {
-      return ReportError(err, kCommand, absl::InvalidArgumentError("--episodes must be >= 1"));
-    }
-    return WalkEvalCommand(flags, out, err);
-  }
-  std::optional<eval::Suite> suite = eval::ParseSuite(flags.suite);
+  const eval::SuiteDef* suite = eval::FindSuite(flags.suite);
   if (!suite) {
     return ReportError(
         err, kCommand,
         absl::InvalidArgumentError("--suite: unknown suite '" + flags.suite +
-                                   "'; valid suites are: " + core::JoinNames(eval::SuiteNames()) +
-                                   ", " + kLanguageSuite + ", walk, walk-step"));
+                                   "'; valid suites are: " + core::JoinNames(eval::SuiteNames())));
+  }
+  if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
+  if (suite->controller == eval::SuiteController::kWalkPolicy) {
+    if (flags.episodes < 1) {
+      return ReportError(err, kCommand, absl::InvalidArgumentError("--episodes must be >= 1"));
+    }
+    return WalkEvalCommand(flags, out, err);
   }
   if (flags.episodes < 1) {
     return ReportError(err, kCommand,
@@ -206,7 +205,7 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
       ResolveConfig(flags.preset, flags.preset_given, flags.config);
   if (!config.ok()) return ReportError(err, kCommand, config.status());
   eval::EvalOptions options;
-  options.suite = *suite;
+  options.suite = suite->name;
   options.episodes = flags.episodes;
   options.seed = flags.seed;
   options.out_dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;

@@ -29,9 +29,6 @@ struct EvalFlags {
   std::string physics_solver = "newton";  ///< walk suites: world::ModelOptions::solver
 };
 
-/// The suite name of the language benchmark (no episodes: a corpus of commands).
-inline constexpr char kLanguageSuite[] = "language";
-
 /// Runs the suite: a table row per finished episode and a summary table on `out`, files as
 /// eval::RunEval() writes them. kExitOk when every episode ran, kExitBadInput for bad flags
 /// or files, kExitInternal when an episode could not be set up or a file not written (what

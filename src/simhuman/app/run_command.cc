@@ -126,7 +126,7 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   }
   absl::Status reach = eval::CheckWithinReach(*chain, *catalog, scene->humans);
   if (!reach.ok()) return ReportError(err, kCommand, reach);
-  core::StatusOr<std::vector<world::AgentPlacement>> placements = eval::AgentPlacements(*scene);
+  core::StatusOr<std::vector<world::AgentSpec>> placements = eval::AgentSpecs(*scene);
   if (!placements.ok()) return ReportError(err, kCommand, placements.status());
 
   absl::Status dir = MakeOutputDir(flags.out);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "simhuman/control/task.h"
+#include "simhuman/core/span.h"
 #include "simhuman/core/status.h"
 #include "simhuman/world/sim_world.h"
 
@@ -25,7 +26,9 @@ struct Observation {
   const mjData* data = nullptr;
   int step_index = 0;              ///< index of the current plan step
   const StepTask* task = nullptr;  ///< the current step in controller terms
-  std::array<Eigen::Vector3d, core::kNumBodyJoints> body_points;  ///< world positions
+  /// World positions of the agent's body points, by id (its catalog's: the 15 standard ones
+  /// first).
+  std::vector<Eigen::Vector3d> body_points;
   /// Per term of `task`: target point minus joint (UniHSI's v_np - v_j).
   std::vector<Eigen::Vector3d> contact_offsets;
   /// Ego-centric height map (row-major, `heightmap_size` x `heightmap_size` cells of
@@ -42,18 +45,16 @@ class Controller {
   virtual std::string name() const = 0;
   /// Called at the control rate. Plans or infers; must not step `obs.data`.
   virtual absl::Status Act(const Observation& obs) = 0;
-  /// Called every physics step: writes the agent's 28 servo targets for time `time_s`.
-  virtual void Targets(double time_s, double* ctrl28) const = 0;
+  /// Called every physics step: writes the agent's actuator targets for time `time_s` into
+  /// `ctrl`, one entry per actuator of the agent (world::AgentIndex::actuator order: the
+  /// humanoid body's kHumanoidDofs first, then a hand's). `ctrl` holds the current targets on
+  /// entry: entries a controller does not drive (a hand, for a body controller) keep them.
+  virtual void Targets(double time_s, core::Span<double> ctrl) const = 0;
   /// Control period (s) at which the runner calls Act().
   virtual double control_period_s() const = 0;
   /// Physics timestep (s) the controller needs while it is in control (learned policies run
   /// at the rate they were trained at); 0: the world's own timestep.
   virtual double physics_timestep_s() const { return 0.0; }
 };
-
-/// Builds an ego-centric height map around agent `agent` from the scene catalog's shapes
-/// (ray-free: the top of every object shape under each cell).
-void BuildHeightmap(const core::SceneCatalog& scene, const Eigen::Vector3d& pelvis, double yaw_rad,
-                    int size, double cell_m, std::vector<float>* out);
 
 }  // namespace simhuman::control

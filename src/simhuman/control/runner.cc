@@ -3,17 +3,34 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
+
+#include "simhuman/perceive/heightmap.h"
 
 namespace simhuman::control {
 
 std::vector<plan::BodyPoints> AllBodyPoints(const world::SimWorld& world, const mjData* d) {
   std::vector<plan::BodyPoints> out(world.num_agents());
   for (int a = 0; a < world.num_agents(); ++a) {
-    out[a].pos_world = world.BodyPoints(d, a);
+    world.AllBodyPoints(d, a, &out[a].pos_world);
     double yaw = world::PelvisYaw(d, world.agent(a));
     out[a].facing_world = Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0);
   }
   return out;
+}
+
+bool IsFall(Posture posture, double head_z_m, double scale, const RunOptions& options) {
+  const bool lying = posture == Posture::kLieBack || posture == Posture::kLieSide;
+  return head_z_m < (lying ? kLyingFallHeadHeightM : options.fall_head_height_m * scale);
+}
+
+double CommonTimestep(const std::vector<Controller*>& controllers, double world_dt) {
+  double dt = 0;
+  for (const Controller* c : controllers) {
+    double want = c->physics_timestep_s();
+    if (want > 0 && (dt == 0 || want < dt)) dt = want;
+  }
+  return dt > 0 ? dt : world_dt;
 }
 
 EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain,
@@ -38,9 +55,16 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
     trajectory->fps = options.record_fps;
     trajectory->nq = m->nq;
   }
-  std::vector<double> ctrl(world::kHumanoidDofs);
+  // each agent's span of the model's controls, handed to its controller every physics step
+  std::vector<std::vector<double>> ctrl(n_agents);
+  for (int a = 0; a < n_agents; ++a) ctrl[a].resize(world.agent(a).num_actuators());
   const double t_start = d->time;
   double settle_until = -1;  // >= 0 once all steps are done
+  std::unique_ptr<perceive::HeightmapSensor> heightmap;
+  if (options.heightmap_size > 0) {
+    heightmap = std::make_unique<perceive::HeightmapSensor>(options.heightmap_size,
+                                                            options.heightmap_cell_m);
+  }
   auto finish = [&](const std::string& reason) {
     tracker.Finish();
     res.end_reason = reason;
@@ -72,14 +96,18 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
       obs.data = d;
       obs.step_index = step;
       obs.task = &tasks[a];
-      obs.body_points = world.BodyPoints(d, a);
-      if (options.heightmap_size > 0) {
-        const mjtNum* pelvis = d->xpos + 3 * world.agent(a).pelvis_body;
-        BuildHeightmap(catalog, Eigen::Vector3d(pelvis[0], pelvis[1], pelvis[2]),
-                       world::PelvisYaw(d, world.agent(a)), options.heightmap_size,
-                       options.heightmap_cell_m, &obs.heightmap);
-        obs.heightmap_size = options.heightmap_size;
-        obs.heightmap_cell_m = options.heightmap_cell_m;
+      world.AllBodyPoints(d, a, &obs.body_points);
+      if (heightmap) {
+        perceive::SensorInput in{&world, d, &catalog, a, d->time};
+        perceive::SensorReading reading;
+        absl::Status st = heightmap->Read(in, &reading);
+        if (!st.ok()) {
+          finish("sensor: " + std::string(st.message()));
+          break;
+        }
+        obs.heightmap = std::move(reading.values);
+        obs.heightmap_size = heightmap->size();
+        obs.heightmap_cell_m = heightmap->cell_m();
       }
       for (const ContactTerm& term : tasks[a].terms) {
         const Eigen::Vector3d& p = obs.body_points[static_cast<int>(term.joint)];
@@ -131,12 +159,10 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
         finish("timeout");
         break;
       }
-      // falls: head low while the step is not a lying step
-      bool lying = tasks[0].posture == Posture::kLieBack || tasks[0].posture == Posture::kLieSide;
+      // falls: each agent's head against its own step's posture
       for (int a = 0; a < n_agents; ++a) {
-        double head_z = pts[a].at(core::BodyJoint::kHead).z();
-        double limit = options.fall_head_height_m * world.agent(a).scale;
-        if (head_z < (lying ? 0.25 : limit)) {
+        if (IsFall(tasks[a].posture, pts[a].at(core::BodyJoint::kHead).z(), world.agent(a).scale,
+                   options)) {
           res.fell = true;
           finish(tracker.done() ? "completed" : "fell");
         }
@@ -152,19 +178,13 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
     }
     // actuate and step
     for (int a = 0; a < n_agents; ++a) {
-      controllers[a]->Targets(d->time, ctrl.data());
       const world::AgentIndex& ix = world.agent(a);
-      for (int j = 0; j < world::kHumanoidDofs; ++j) d->ctrl[ix.actuator[j]] = ctrl[j];
+      std::vector<double>& u = ctrl[a];
+      for (int j = 0; j < ix.num_actuators(); ++j) u[j] = d->ctrl[ix.actuator[j]];
+      controllers[a]->Targets(d->time, u);
+      for (int j = 0; j < ix.num_actuators(); ++j) d->ctrl[ix.actuator[j]] = u[j];
     }
-    double dt = base_dt;
-    for (int a = 0; a < n_agents; ++a) {
-      double want = controllers[a]->physics_timestep_s();
-      if (want > 0) {
-        dt = want;
-        break;
-      }
-    }
-    world.mutable_model()->opt.timestep = dt;
+    world.mutable_model()->opt.timestep = CommonTimestep(controllers, base_dt);
     world::HealthReport h = world.Step();
     if (!h.ok()) {
       finish(h.reason);

@@ -77,6 +77,20 @@ EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain
                          const std::vector<Controller*>& controllers, const RunOptions& options,
                          Trajectory* trajectory);
 
+/// Head height (m) below which a human whose step lies down has fallen (off the bed).
+inline constexpr double kLyingFallHeadHeightM = 0.25;
+
+/// The fall rule, per agent: its head (z of the head point, m) below
+/// options.fall_head_height_m x its scale, or below kLyingFallHeadHeightM while its own step
+/// lies down (`posture` of its StepTask).
+bool IsFall(Posture posture, double head_z_m, double scale, const RunOptions& options);
+
+/// The physics timestep shared by `controllers`: the finest any of them asks for
+/// (Controller::physics_timestep_s), else `world_dt`. One model has one timestep; a controller
+/// that asks for none accepts any, and one that asks for a coarser step than another gets the
+/// finer one (its Act() still runs at its own control period).
+double CommonTimestep(const std::vector<Controller*>& controllers, double world_dt);
+
 /// Body points of every agent in plan terms.
 std::vector<plan::BodyPoints> AllBodyPoints(const world::SimWorld& world, const mjData* d);
 

@@ -43,8 +43,8 @@ double BodyPointClearance(core::BodyJoint j) {
   }
 }
 
-Eigen::Vector3d ContactTerm::Nearest(
-    const Eigen::Vector3d& p, const std::array<Eigen::Vector3d, core::kNumBodyJoints>& pts) const {
+Eigen::Vector3d ContactTerm::Nearest(const Eigen::Vector3d& p,
+                                     core::Span<const Eigen::Vector3d> pts) const {
   if (target_joint) return pts[static_cast<int>(*target_joint)];
   return core::NearestPointOnShapes(part->shapes, object->pose, p);
 }

@@ -11,6 +11,7 @@
 
 #include "simhuman/core/body_joint.h"
 #include "simhuman/core/scene_catalog.h"
+#include "simhuman/core/span.h"
 #include "simhuman/plan/contact_chain.h"
 #include "simhuman/plan/metrics.h"
 
@@ -35,8 +36,8 @@ struct ContactTerm {
   Eigen::Vector3d aim_offset = Eigen::Vector3d::Zero();
 
   /// Nearest point of the target to `p` (part surface or the target joint's position).
-  Eigen::Vector3d Nearest(const Eigen::Vector3d& p,
-                          const std::array<Eigen::Vector3d, core::kNumBodyJoints>& pts) const;
+  /// `pts`: the agent's body points by id (at least the target joint's).
+  Eigen::Vector3d Nearest(const Eigen::Vector3d& p, core::Span<const Eigen::Vector3d> pts) const;
 };
 
 /// A step in controller terms.

@@ -8,6 +8,11 @@
 
 namespace simhuman::core {
 
+double WrapAngle(double a) {
+  a = std::remainder(a, 2.0 * M_PI);  // [-pi, pi]
+  return a <= -M_PI ? a + 2.0 * M_PI : a;
+}
+
 Pose Pose::FromYaw(const Eigen::Vector3d& pos, double yaw_rad) {
   Pose p;
   p.pos = pos;

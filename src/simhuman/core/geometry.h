@@ -31,6 +31,9 @@ struct Shape {
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
 };
 
+/// `a` (radians) wrapped to (-pi, pi]. The one angle wrap of the code base.
+double WrapAngle(double a);
+
 /// Nearest point of the solid `shape` (placed at `world_from_parent`) to `p_world`; returns
 /// `p_world` itself when the point is inside the solid.
 Eigen::Vector3d NearestPointOnShape(const Shape& shape, const Pose& world_from_parent,

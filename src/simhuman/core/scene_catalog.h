@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "simhuman/core/body_joint.h"
 #include "simhuman/core/geometry.h"
 
 namespace simhuman::core {
@@ -43,10 +44,19 @@ struct CatalogObject {
   std::pair<Eigen::Vector3d, Eigen::Vector3d> LocalBounds() const;
 };
 
-/// All objects of a scene plus the number of simulated humans.
+/// One simulated human as plans see it: its kind, size and the body points a plan may name.
+struct CatalogAgent {
+  std::string kind = "humanoid";  ///< an embodiment name (world/embodiment.h)
+  double scale = 1.0;             ///< body length scale (1 = adult)
+  BodyPointCatalog body_points = StandardBodyPointCatalog();
+};
+
+/// All objects of a scene plus its simulated humans (one adult humanoid unless set).
 struct SceneCatalog {
   std::vector<CatalogObject> objects;
-  int num_agents = 1;
+  std::vector<CatalogAgent> agents = {CatalogAgent{}};
+
+  int num_agents() const { return static_cast<int>(agents.size()); }
 
   const CatalogObject* Find(std::string_view id) const;
   CatalogObject* Find(std::string_view id);

@@ -18,8 +18,8 @@ uint64_t ControllerSeed(uint64_t run_seed, int agent) {
   return core::DeriveSeed(run_seed, kControllerStream, static_cast<uint64_t>(agent));
 }
 
-core::StatusOr<std::vector<world::AgentPlacement>> AgentPlacements(const world::SceneSpec& spec) {
-  std::vector<world::AgentPlacement> out;
+core::StatusOr<std::vector<world::AgentSpec>> AgentSpecs(const world::SceneSpec& spec) {
+  std::vector<world::AgentSpec> out;
   for (size_t i = 0; i < spec.humans.size(); ++i) {
     const world::HumanSpec& h = spec.humans[i];
     if (h.posture != "stand") {
@@ -28,11 +28,12 @@ core::StatusOr<std::vector<world::AgentPlacement>> AgentPlacements(const world::
                                         "' starts are not supported by the simulator yet; valid "
                                         "postures to start in: stand");
     }
-    world::AgentPlacement p;
+    world::AgentSpec p;
     p.x = h.pos_xy.x();
     p.y = h.pos_xy.y();
     p.yaw_rad = h.yaw_rad;
     p.scale = h.scale;
+    p.kind = h.kind;
     out.push_back(p);
   }
   return out;
@@ -40,7 +41,7 @@ core::StatusOr<std::vector<world::AgentPlacement>> AgentPlacements(const world::
 
 core::StatusOr<std::unique_ptr<world::SimWorld>> BuildWorld(const world::SceneSpec& spec,
                                                             const core::SceneCatalog& catalog) {
-  SH_ASSIGN_OR_RETURN(std::vector<world::AgentPlacement> placements, AgentPlacements(spec));
+  SH_ASSIGN_OR_RETURN(std::vector<world::AgentSpec> placements, AgentSpecs(spec));
   if (placements.empty()) {
     return absl::InvalidArgumentError("scene '" + spec.name + "' has no humans");
   }
@@ -110,7 +111,7 @@ std::string StepText(const plan::ContactStep& step) {
     } else if (p.IsObjectPair()) {
       s = *p.subject_object + " " + p.subject_part + " on " + p.object + " " + p.part;
     } else {
-      std::string joint = p.joint ? std::string(core::BodyJointName(*p.joint)) : "?";
+      std::string joint = p.HasJoint() ? p.JointName() : "?";
       std::string target = p.part_joint ? p.part : p.object + " " + p.part;
       s = joint + (p.type == plan::ContactType::kContact ? " on " : " off ") + target;
     }

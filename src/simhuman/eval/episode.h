@@ -30,7 +30,7 @@ uint64_t ControllerSeed(uint64_t run_seed, int agent);
 
 /// Where each human of `spec` starts. Only standing humans can be placed yet: another posture
 /// is InvalidArgument naming the human ("/humans/0") and the valid postures.
-core::StatusOr<std::vector<world::AgentPlacement>> AgentPlacements(const world::SceneSpec& spec);
+core::StatusOr<std::vector<world::AgentSpec>> AgentSpecs(const world::SceneSpec& spec);
 
 /// The simulation of `spec`, whose catalog is `catalog` (BuildCatalog(spec)).
 core::StatusOr<std::unique_ptr<world::SimWorld>> BuildWorld(const world::SceneSpec& spec,

@@ -80,13 +80,13 @@ TEST(EpisodeTest, QposColumnsNameEveryEntry) {
 
 TEST(EpisodeTest, StandingStartsOnly) {
   world::SceneSpec spec = *world::BuiltinScene("sit_demo");
-  core::StatusOr<std::vector<world::AgentPlacement>> p = AgentPlacements(spec);
+  core::StatusOr<std::vector<world::AgentSpec>> p = AgentSpecs(spec);
   ASSERT_TRUE(p.ok());
   ASSERT_EQ(p->size(), 1u);
   EXPECT_NEAR((*p)[0].x, spec.humans[0].pos_xy.x(), kTol);
   EXPECT_NEAR((*p)[0].yaw_rad, spec.humans[0].yaw_rad, kTol);
   spec.humans[0].posture = "lie";
-  p = AgentPlacements(spec);
+  p = AgentSpecs(spec);
   ASSERT_FALSE(p.ok());
   EXPECT_THAT(p.status().message(), HasSubstr("/humans/0/posture: 'lie'"));
   EXPECT_THAT(p.status().message(), HasSubstr("valid postures to start in: stand"));

@@ -104,8 +104,8 @@ nlohmann::ordered_json SummaryJson(const Summary& s, const EvalOptions& options)
 
 core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int index) {
   const uint64_t seed = core::DeriveSeed(options.seed, static_cast<uint64_t>(index));
-  const std::string who = "suite " + std::string(SuiteName(options.suite)) + ", episode " +
-                          std::to_string(index) + " (seed " + std::to_string(seed) + ")";
+  const std::string who = "suite " + options.suite + ", episode " + std::to_string(index) +
+                          " (seed " + std::to_string(seed) + ")";
   auto internal = [&](const absl::Status& st) {
     return absl::InternalError(who + ": " + std::string(st.message()));
   };
@@ -138,7 +138,8 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
       **sim, *chain, *controllers, options.walk_policy, run, render ? &trajectory : nullptr);
   if (!result.ok()) return result.status();
   rec.result = *result;
-  rec.extra = EvaluateExtra(*spec, (*sim)->catalog(), (*sim)->BodyPoints((*sim)->data(), 0));
+  rec.extra =
+      EvaluateExtra(*spec, (*sim)->catalog(), (*sim)->BodyPoints((*sim)->data(), spec->agent));
   if (rec.result.success) {
     // the last step's pairs must still hold at the end of the settle time, without a fall
     core::SceneCatalog now = (*sim)->catalog();
@@ -178,7 +179,7 @@ core::StatusOr<Summary> RunEval(const EvalOptions& options, const EpisodeCallbac
   if (!lines) {
     return absl::PermissionDeniedError("cannot write '" + jsonl + "': " + std::strerror(errno));
   }
-  const std::string suite(SuiteName(options.suite));
+  const std::string& suite = options.suite;
   std::vector<EpisodeRecord> records;
   Summary summary = Summarize(suite, records, options.episodes);
   SH_RETURN_IF_ERROR(WriteJsonFile(summary_path, SummaryJson(summary, options)));

@@ -64,7 +64,7 @@ nlohmann::ordered_json EpisodeRecordJson(const EpisodeRecord& record);
 
 /// What to run.
 struct EvalOptions {
-  Suite suite = Suite::kSit;
+  std::string suite = "sit";  ///< a plan suite's registry name (eval/suites.h)
   int episodes = 10;
   uint64_t seed = 1;
   std::string out_dir;

@@ -26,7 +26,7 @@ inline constexpr double kMaxReachM = 1.0;
 /// Not-contact and not-care pairs, and pairs whose target is a body joint, are not checked.
 ///
 /// `chain` must be grounded against `scene` (plan::ValidateAndGround) and `humans` must hold a
-/// human for every agent the plan names (scene.num_agents). Error (InvalidArgument):
+/// human for every agent the plan names (scene.num_agents()). Error (InvalidArgument):
 ///   "<source>: step 2 (/steps/1): object 'bed000' (part 'mattress') is 3.2 m from human 0 and
 ///   no get-close step precedes step 2; walking is not implemented yet: start the human within
 ///   1.0 m of it, or add a get-close step for 'bed000' before step 2"

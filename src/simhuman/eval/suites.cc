@@ -68,17 +68,12 @@ Eigen::Vector2d LocalToWorld(const Eigen::Vector3d& pos, double yaw, double x, d
                                          std::sin(yaw) * x + std::cos(yaw) * y);
 }
 
-double WrapAngle(double a) {
-  a = std::remainder(a, kTwoPi);
-  return a <= -M_PI ? a + kTwoPi : a;
-}
-
 // a random object of `type` at the origin with a uniform yaw, built to read its bounds
 core::Status RandomObject(const std::string& type, core::Rng& rng, world::ObjectSpec* spec,
                           core::CatalogObject* built) {
   *spec = world::RandomObjectSpec(type, rng);
   spec->pos = Eigen::Vector3d::Zero();
-  spec->yaw_rad = WrapAngle(rng.Uniform(0.0, kTwoPi));
+  spec->yaw_rad = core::WrapAngle(rng.Uniform(0.0, kTwoPi));
   core::StatusOr<core::CatalogObject> obj = world::BuildObject(*spec);
   if (!obj.ok()) {
     return absl::InternalError("eval suite: cannot build a random " + type + ": " +
@@ -113,7 +108,7 @@ core::Status MakeSit(core::Rng& rng, EpisodeSpec* out) {
   double jitter = rng.Uniform(-kYawJitterDeg, kYawJitterDeg) * kDegToRad;
   world::HumanSpec h;
   h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, front, lateral);
-  h.yaw_rad = WrapAngle(o.yaw_rad + jitter);
+  h.yaw_rad = core::WrapAngle(o.yaw_rad + jitter);
   out->variant = type;
   out->object_id = o.id;
   out->scene.objects = {o};
@@ -147,7 +142,7 @@ core::Status MakeLie(core::Rng& rng, EpisodeSpec* out, bool mid_bed = false) {
   double jitter = rng.Uniform(-kYawJitterDeg, kYawJitterDeg) * kDegToRad;
   world::HumanSpec h;
   h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, front, lateral);
-  h.yaw_rad = WrapAngle(o.yaw_rad + jitter);
+  h.yaw_rad = core::WrapAngle(o.yaw_rad + jitter);
   out->variant = "bed";
   out->object_id = o.id;
   out->scene.objects = {o};
@@ -161,7 +156,7 @@ core::Status MakeLie(core::Rng& rng, EpisodeSpec* out, bool mid_bed = false) {
 // reach: a marker point in front of a standing human, on the reaching hand's side
 core::Status MakeReach(core::Rng& rng, EpisodeSpec* out) {
   world::HumanSpec h;
-  h.yaw_rad = WrapAngle(rng.Uniform(0.0, kTwoPi));
+  h.yaw_rad = core::WrapAngle(rng.Uniform(0.0, kTwoPi));
   bool left = rng.Uniform() < 0.5;
   double side = left ? 1.0 : -1.0;  // the human's left is its +y
   double forward = rng.Uniform(kReachForwardLoM, kReachForwardHiM);
@@ -181,7 +176,6 @@ core::Status MakeReach(core::Rng& rng, EpisodeSpec* out) {
   out->scene.humans = {h};
   out->plan = Plan({Step("touch " + m.id + " with the " + hand,
                          {Pair(m.id, kMarkerPart, hand, "contact", "none")})});
-  out->extra = ExtraCheck::kHandAtPoint;
   return absl::OkStatus();
 }
 
@@ -203,7 +197,7 @@ core::Status MakeScenePlanSimple(core::Rng& rng, EpisodeSpec* out) {
   double jitter = rng.Uniform(-kApproachYawJitterDeg, kApproachYawJitterDeg) * kDegToRad;
   world::HumanSpec h;
   h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, front, lateral);
-  h.yaw_rad = WrapAngle(o.yaw_rad + M_PI + jitter);  // facing the object
+  h.yaw_rad = core::WrapAngle(o.yaw_rad + M_PI + jitter);  // facing the object
   out->variant = type + ": get close, sit";
   out->object_id = o.id;
   out->scene.objects = {o};
@@ -222,7 +216,7 @@ world::HumanSpec FarStart(core::Rng& rng, const world::ObjectSpec& o,
   world::HumanSpec h;
   h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, hi.x() + r * std::cos(bearing),
                           0.5 * (lo.y() + hi.y()) + r * std::sin(bearing));
-  h.yaw_rad = WrapAngle(rng.Uniform(0.0, kTwoPi));
+  h.yaw_rad = core::WrapAngle(rng.Uniform(0.0, kTwoPi));
   return h;
 }
 
@@ -252,7 +246,6 @@ core::Status MakeLieFar(core::Rng& rng, EpisodeSpec* out) {
   std::vector<json> steps = {Step("walk to " + o.id, {GetClose(o.id, "front")})};
   LieSteps(o.id, &steps);
   out->plan = Plan(steps);
-  out->extra = ExtraCheck::kLieAlongBed;
   return absl::OkStatus();
 }
 
@@ -263,7 +256,7 @@ core::Status MakeReachFar(core::Rng& rng, EpisodeSpec* out) {
   world::ObjectSpec m;
   m.id = std::string(kMarkerType) + "000";
   m.type = kMarkerType;
-  m.yaw_rad = WrapAngle(rng.Uniform(0.0, kTwoPi));
+  m.yaw_rad = core::WrapAngle(rng.Uniform(0.0, kTwoPi));
   m.pos = Eigen::Vector3d(0, 0, rng.Uniform(kReachHeightLoM, kReachHeightHiM));
   core::StatusOr<core::CatalogObject> built = world::BuildObject(m);
   if (!built.ok()) {
@@ -280,74 +273,64 @@ core::Status MakeReachFar(core::Rng& rng, EpisodeSpec* out) {
   out->plan = Plan({Step("walk to " + m.id, {GetClose(m.id, "front")}),
                     Step("touch " + m.id + " with the " + hand,
                          {Pair(m.id, kMarkerPart, hand, "contact", "none")})});
-  out->extra = ExtraCheck::kHandAtPoint;
   return absl::OkStatus();
 }
 
 }  // namespace
 
+// the registry: a new suite is one line here (and its generator above)
+const std::vector<SuiteDef>& Suites() {
+  using C = SuiteController;
+  using X = ExtraCheck;
+  auto lie = [](core::Rng& rng, EpisodeSpec* out) { return MakeLie(rng, out); };
+  static const std::vector<SuiteDef> suites = {
+      {"sit", C::kMpc, X::kNone, MakeSit, "sit on a chair, armchair, sofa, stool or high stool"},
+      {"lie", C::kMpc, X::kLieAlongBed, lie, "sit on a bed's edge, then lie along it"},
+      {"reach", C::kMpc, X::kHandAtPoint, MakeReach, "touch a point with one hand"},
+      {"sceneplan-simple", C::kMpc, X::kNone, MakeScenePlanSimple,
+       "UniHSI's simple ScenePlan level (<= 3 steps, one object)"},
+      {"sit-far", C::kMpc, X::kNone, MakeSitFar, "walk 1-6 m to a seat, then sit"},
+      {"lie-far", C::kMpc, X::kLieAlongBed, MakeLieFar, "walk 1-6 m to a bed, then lie"},
+      {"reach-far", C::kMpc, X::kHandAtPoint, MakeReachFar, "walk 1-6 m, then touch a point"},
+      {"walk", C::kWalkPolicy, X::kNone, nullptr, "the walking policy: walk to a goal"},
+      {"walk-step", C::kWalkPolicy, X::kNone, nullptr,
+       "the walking policy: short steps back and sideways"},
+      {"language", C::kPlanner, X::kNone, nullptr, "the command corpus through a planner"},
+  };
+  return suites;
+}
+
 std::vector<std::string> SuiteNames() {
-  return {"sit", "lie", "reach", "sceneplan-simple", "sit-far", "lie-far", "reach-far"};
+  std::vector<std::string> out;
+  for (const SuiteDef& s : Suites()) out.push_back(s.name);
+  return out;
 }
 
-std::string_view SuiteName(Suite suite) {
-  switch (suite) {
-    case Suite::kSit:
-      return "sit";
-    case Suite::kLie:
-      return "lie";
-    case Suite::kReach:
-      return "reach";
-    case Suite::kScenePlanSimple:
-      return "sceneplan-simple";
-    case Suite::kSitFar:
-      return "sit-far";
-    case Suite::kLieFar:
-      return "lie-far";
-    case Suite::kReachFar:
-      return "reach-far";
+const SuiteDef* FindSuite(std::string_view name) {
+  for (const SuiteDef& s : Suites()) {
+    if (s.name == name) return &s;
   }
-  return "?";
+  return nullptr;
 }
 
-std::optional<Suite> ParseSuite(std::string_view name) {
-  for (Suite s : {Suite::kSit, Suite::kLie, Suite::kReach, Suite::kScenePlanSimple, Suite::kSitFar,
-                  Suite::kLieFar, Suite::kReachFar}) {
-    if (SuiteName(s) == name) return s;
+core::StatusOr<EpisodeSpec> MakeEpisodeSpec(std::string_view suite, uint64_t seed) {
+  const SuiteDef* def = FindSuite(suite);
+  if (def == nullptr || def->make == nullptr) {
+    std::vector<std::string> plan_suites;
+    for (const SuiteDef& s : Suites()) {
+      if (s.make) plan_suites.push_back(s.name);
+    }
+    return absl::InvalidArgumentError(
+        "'" + std::string(suite) +
+        "' is not a plan suite; valid are: " + core::JoinNames(plan_suites));
   }
-  return std::nullopt;
-}
-
-core::StatusOr<EpisodeSpec> MakeEpisodeSpec(Suite suite, uint64_t seed) {
   core::Rng rng(core::DeriveSeed(seed, kSceneStream));
   EpisodeSpec spec;
-  spec.suite = suite;
+  spec.suite = def->name;
   spec.seed = seed;
-  spec.scene.name = std::string(SuiteName(suite)) + "_" + std::to_string(seed);
-  switch (suite) {
-    case Suite::kSit:
-      SH_RETURN_IF_ERROR(MakeSit(rng, &spec));
-      break;
-    case Suite::kLie:
-      SH_RETURN_IF_ERROR(MakeLie(rng, &spec));
-      spec.extra = ExtraCheck::kLieAlongBed;
-      break;
-    case Suite::kReach:
-      SH_RETURN_IF_ERROR(MakeReach(rng, &spec));
-      break;
-    case Suite::kScenePlanSimple:
-      SH_RETURN_IF_ERROR(MakeScenePlanSimple(rng, &spec));
-      break;
-    case Suite::kSitFar:
-      SH_RETURN_IF_ERROR(MakeSitFar(rng, &spec));
-      break;
-    case Suite::kLieFar:
-      SH_RETURN_IF_ERROR(MakeLieFar(rng, &spec));
-      break;
-    case Suite::kReachFar:
-      SH_RETURN_IF_ERROR(MakeReachFar(rng, &spec));
-      break;
-  }
+  spec.scene.name = def->name + "_" + std::to_string(seed);
+  spec.extra = def->extra;
+  SH_RETURN_IF_ERROR(def->make(rng, &spec));
   return spec;
 }
 
@@ -356,7 +339,9 @@ ExtraResult EvaluateExtra(const EpisodeSpec& spec, const core::SceneCatalog& sce
   ExtraResult r;
   if (spec.extra == ExtraCheck::kNone) return r;
   const core::CatalogObject* obj = scene.Find(spec.object_id);
-  const double scale = spec.scene.humans.empty() ? 1.0 : spec.scene.humans[0].scale;
+  const double scale = spec.agent < static_cast<int>(spec.scene.humans.size())
+                           ? spec.scene.humans[spec.agent].scale
+                           : 1.0;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   switch (spec.extra) {
     case ExtraCheck::kNone:

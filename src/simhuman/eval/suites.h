@@ -1,7 +1,8 @@
 #pragma once
-/// The benchmark suites of `simhuman eval`: randomized, seeded episode generators (the protocols
-/// are documented in docs/EVAL_PROTOCOLS.md) and the success checks some suites add to the plan's
-/// own (UniHSI's step completion).
+/// The benchmark suites of `simhuman eval`, as a registry: each suite is a name, the controller
+/// kind that runs it, the success check it adds to the plan's own (UniHSI's step completion) and,
+/// for plan suites, a randomized, seeded episode generator (the protocols are documented in
+/// docs/EVAL_PROTOCOLS.md). A new suite is one generator and one registry line (suites.cc).
 
 #include <Eigen/Core>
 #include <array>
@@ -13,25 +14,11 @@
 #include <vector>
 
 #include "simhuman/core/body_joint.h"
+#include "simhuman/core/rng.h"
 #include "simhuman/core/status.h"
 #include "simhuman/world/scene.h"
 
 namespace simhuman::eval {
-
-/// One benchmark suite.
-enum class Suite { kSit, kLie, kReach, kScenePlanSimple, kSitFar, kLieFar, kReachFar };
-
-/// "sit", "lie", "reach", "sceneplan-simple", "sit-far", "lie-far", "reach-far", in enum order.
-/// The far suites start the human 1-6 m from the middle of the object's front face (within
-/// +-60 deg of its front direction, any heading) and put a get-close (front) step before the
-/// plan: sit-far [sit]; lie-far [sit on the edge], [lie] with the lie check; reach-far touches
-/// a marker (random yaw, 0.7-1.5 m high) with one hand, with the reach check. They need the
-/// walking policy.
-std::vector<std::string> SuiteNames();
-/// The name of `suite`.
-std::string_view SuiteName(Suite suite);
-/// The suite called `name` (exact, lower case); nullopt when unknown.
-std::optional<Suite> ParseSuite(std::string_view name);
 
 /// A success condition an episode checks at its end, beyond the plan's own.
 enum class ExtraCheck {
@@ -54,9 +41,10 @@ inline constexpr double kReachTolM = 0.05;
 inline constexpr char kMarkerType[] = "marker";
 inline constexpr char kMarkerPart[] = "point";
 
-/// One generated episode: a scene with one human, a plan and an optional extra check. Plain data.
+/// One generated episode: a scene with its humans, a plan and an optional extra check. Plain
+/// data.
 struct EpisodeSpec {
-  Suite suite = Suite::kSit;
+  std::string suite;  ///< the suite's registry name
   uint64_t seed = 0;  ///< the episode seed it was generated from
   std::string
       variant;  ///< what was drawn, e.g. "sofa", "bed", "left hand", "chair: get close, sit"
@@ -65,13 +53,49 @@ struct EpisodeSpec {
   ExtraCheck extra = ExtraCheck::kNone;
   std::string object_id;  ///< the suite's object (the bed for kLieAlongBed, the marker, ...)
   core::BodyJoint joint = core::BodyJoint::kPelvis;  ///< the reaching hand for kHandAtPoint
+  int agent = 0;                                     ///< the human the extra check looks at
 };
 
-/// The episode of `suite` for episode seed `seed` (the eval uses DeriveSeed(run seed, i) for
-/// episode i). A pure function: the same arguments give the same spec, whatever else ran
-/// before. Draws come from core::Rng(core::DeriveSeed(seed, kSceneStream)). Errors (Internal)
-/// only when an object of the protocol cannot be built (a world/ change broke a size range).
-core::StatusOr<EpisodeSpec> MakeEpisodeSpec(Suite suite, uint64_t seed);
+/// What runs a suite's episodes.
+enum class SuiteController {
+  kMpc,         ///< plan episodes; get-close steps walked by the walking policy when given
+  kWalkPolicy,  ///< the walking policy alone (eval/walk_eval.h); needs --policy
+  kPlanner,     ///< commands through a planner, no simulation (eval/language_suite.h)
+};
+
+/// Draws one episode of a plan suite into `spec` (scene, plan, variant, object_id, joint) from
+/// `rng`. Errors (Internal) only when an object of the protocol cannot be built.
+using EpisodeGenerator = core::Status (*)(core::Rng& rng, EpisodeSpec* spec);
+
+/// One registered suite.
+struct SuiteDef {
+  std::string name;  ///< "sit", "lie-far", "walk", ...
+  SuiteController controller = SuiteController::kMpc;
+  ExtraCheck extra = ExtraCheck::kNone;
+  EpisodeGenerator make = nullptr;  ///< plan suites only
+  std::string description;          ///< one line, for help and error messages
+};
+
+/// Every registered suite: the plan suites "sit", "lie", "reach", "sceneplan-simple",
+/// "sit-far", "lie-far", "reach-far" (the far suites start the human 1-6 m from the middle of the
+/// object's front face (within +-60 deg of its front direction, any heading) and put a get-close
+/// (front) step before the plan: sit-far [sit]; lie-far [sit on the edge], [lie] with the lie
+/// check; reach-far touches a marker (random yaw, 0.7-1.5 m high) with one hand, with the reach
+/// check; they need the walking policy), then "walk", "walk-step" and "language".
+const std::vector<SuiteDef>& Suites();
+
+/// Registry names in registry order.
+std::vector<std::string> SuiteNames();
+
+/// The suite called `name` (exact, lower case); nullptr when unknown.
+const SuiteDef* FindSuite(std::string_view name);
+
+/// The episode of the plan suite `suite` for episode seed `seed` (the eval uses DeriveSeed(run
+/// seed, i) for episode i). A pure function: the same arguments give the same spec, whatever
+/// else ran before. Draws come from core::Rng(core::DeriveSeed(seed, kSceneStream)). Errors:
+/// InvalidArgument for a name that is not a plan suite (listing those), Internal when an object
+/// of the protocol cannot be built (a world/ change broke a size range).
+core::StatusOr<EpisodeSpec> MakeEpisodeSpec(std::string_view suite, uint64_t seed);
 
 /// The seed stream MakeEpisodeSpec() draws scenes from (controllers use other streams).
 inline constexpr uint64_t kSceneStream = 0;

@@ -21,7 +21,7 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
   int successes = 0, no_turn = 0;
   for (int i = 0; i < options.episodes; ++i) {
     core::Rng rng(core::DeriveSeed(options.seed, static_cast<uint64_t>(i)));
-    world::AgentPlacement start;
+    world::AgentSpec start;
     start.yaw_rad = rng.Uniform(-M_PI, M_PI);
     world::ModelOptions mo;
     mo.timestep_s = kWalkPhysicsDt;
@@ -53,7 +53,7 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
     control::Observation obs;
     obs.world = world.get();
     obs.data = d;
-    double ctrl[world::kHumanoidDofs];
+    std::vector<double> ctrl(ix.num_actuators());
     int hold = 0;
     double skate = 0, path = 0;
     long skate_n = 0;
@@ -90,8 +90,9 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
           hold = 0;
         }
       }
+      for (int j = 0; j < ix.num_actuators(); ++j) ctrl[j] = d->ctrl[ix.actuator[j]];
       walker->Targets(d->time, ctrl);
-      for (int j = 0; j < world::kHumanoidDofs; ++j) d->ctrl[ix.actuator[j]] = ctrl[j];
+      for (int j = 0; j < ix.num_actuators(); ++j) d->ctrl[ix.actuator[j]] = ctrl[j];
       const mjtNum* v = d->qvel + ix.root_qvel;
       path += std::hypot(v[0], v[1]) * kWalkPhysicsDt;
       world::HealthReport h = world->Step();

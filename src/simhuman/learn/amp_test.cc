@@ -119,7 +119,7 @@ TEST(AmpFeatures, StateSetFromClipMatchesClipRowIntegration) {
   MotionClip clip = Gait(1.0);
   auto rows = (*task)->AmpClipFeatures(clip);
   ASSERT_TRUE(rows.ok()) << rows.status();
-  auto sim = world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, {});
+  auto sim = world::SimWorld::Create(core::SceneCatalog(), {world::AgentSpec()}, {});
   ASSERT_TRUE(sim.ok()) << sim.status();
   const mjModel* m = (*sim)->model();
   mjData* d = (*sim)->data();

@@ -458,7 +458,7 @@ core::StatusOr<MotionClip> RetargetBvh(const BvhMotion& bvh, const std::string& 
 
   // ---- our hinge axes and ranges, from the compiled humanoid
   SH_ASSIGN_OR_RETURN(std::unique_ptr<world::SimWorld> sim,
-                      world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, {}));
+                      world::SimWorld::Create(core::SceneCatalog(), {world::AgentSpec()}, {}));
   const mjModel* m = sim->model();
   const world::AgentIndex& ag = sim->agent(0);
   const auto& jnames = world::HumanoidJointNames();

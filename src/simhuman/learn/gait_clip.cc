@@ -26,7 +26,7 @@ absl::Status GaitClipOptions::Validate() const {
 core::StatusOr<MotionClip> GaitClip(const GaitClipOptions& o) {
   SH_RETURN_IF_ERROR(o.Validate());
   SH_ASSIGN_OR_RETURN(std::unique_ptr<world::SimWorld> sim,
-                      world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, {}));
+                      world::SimWorld::Create(core::SceneCatalog(), {world::AgentSpec()}, {}));
   const mjModel* m = sim->model();
   mjData* d = sim->data();
   const world::AgentIndex& a = sim->agent(0);

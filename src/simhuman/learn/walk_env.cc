@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "simhuman/core/geometry.h"
 #include "simhuman/learn/amp_features.h"
 #include "simhuman/learn/motion_clip.h"
 
@@ -17,8 +18,6 @@ constexpr int kSuccessHold = 15;     // policy steps (0.5 s)
 constexpr int kNextTargetHold = 45;  // 1.5 s, then a new target
 constexpr int kFirstLegJoint = 14;
 
-double Wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
-
 }  // namespace
 
 core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs, WalkPhysicsSolver solver) {
@@ -27,8 +26,8 @@ core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs, WalkPhy
   world::ModelOptions opt;
   opt.timestep_s = control::kWalkPhysicsDt;
   opt.solver = solver == WalkPhysicsSolver::kPgs ? "pgs" : "newton";
-  SH_ASSIGN_OR_RETURN(
-      t->world_, world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, opt));
+  SH_ASSIGN_OR_RETURN(t->world_,
+                      world::SimWorld::Create(core::SceneCatalog(), {world::AgentSpec()}, opt));
   SH_ASSIGN_OR_RETURN(t->ix_, control::MakeWalkIndex(*t->world_, 0));
   // one human on a floor: small arenas keep E copies of mjData cheap to allocate and reset
   mjModel* m = t->world_->mutable_model();
@@ -59,7 +58,7 @@ void WalkTask::DrawTarget(Env& e) {
     double dist = e.rng.Uniform(0.3, std::max(0.5, params_.short_step_m));
     double bearing = yaw + e.rng.Uniform(-M_PI, M_PI);
     e.s.target_xy = pos.head<2>() + dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
-    e.s.target_yaw_rad = Wrap(yaw + e.rng.Uniform(-0.3, 0.3));
+    e.s.target_yaw_rad = core::WrapAngle(yaw + e.rng.Uniform(-0.3, 0.3));
     e.hold = 0;
     return;
   }
@@ -67,7 +66,7 @@ void WalkTask::DrawTarget(Env& e) {
       e.rng.Uniform() < 0.1 ? e.rng.Uniform(0.0, 0.3) : 0.3 + 9.7 * std::pow(e.rng.Uniform(), 1.5);
   double bearing = yaw + e.rng.Uniform(-a, a);
   e.s.target_xy = pos.head<2>() + dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
-  e.s.target_yaw_rad = Wrap(bearing + e.rng.Uniform(-a, a));
+  e.s.target_yaw_rad = core::WrapAngle(bearing + e.rng.Uniform(-a, a));
   e.hold = 0;
 }
 
@@ -214,7 +213,7 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   double dh = (pos.z() - 0.93) / 0.07;
   t.height = std::exp(-dh * dh);
   double dist = (e.s.target_xy - pos.head<2>()).norm();
-  double yaw_err = Wrap(e.s.target_yaw_rad - yaw);
+  double yaw_err = core::WrapAngle(e.s.target_yaw_rad - yaw);
   double speed2 = vx * vx + vy * vy;
   bool inside = dist < kSuccessRadius && std::abs(yaw_err) < kSuccessYaw;
   t.at_target = inside ? std::exp(-speed2 / 0.1) : 0.0;

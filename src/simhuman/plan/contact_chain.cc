@@ -268,9 +268,11 @@ class Parser {
     }
     pair.part = IsNone(part) ? std::string(kNoneName) : part;
     if (!IsNone(joint)) {
-      pair.joint = core::ParseBodyJoint(Canonical(joint));
-      if (!pair.joint) {
-        return Error(field("joint"), "unknown joint " + Quote(joint) + "; " + ValidJointsText());
+      // a standard joint is known at once; other body points are the agent's (grounding)
+      pair.joint_name = Canonical(joint);
+      pair.joint = core::ParseBodyJoint(pair.joint_name);
+      if (pair.joint_name.empty()) {
+        return Error(field("joint"), "empty joint name; " + ValidJointsText());
       }
     }
     const bool get_close = IsNone(part) && IsNone(joint) && !pair.subject_object;
@@ -362,8 +364,12 @@ bool IsSideDirection(Direction direction) {
          direction == Direction::kLeft || direction == Direction::kRight;
 }
 
-bool ContactPair::IsGetClose() const {
-  return !joint.has_value() && !subject_object && part == kNoneName;
+bool ContactPair::IsGetClose() const { return !HasJoint() && !subject_object && part == kNoneName; }
+
+std::string ContactPair::JointName() const {
+  if (!joint_name.empty()) return joint_name;
+  if (joint) return std::string(core::BodyJointName(*joint));
+  return std::string(kNoneName);
 }
 
 std::string FieldPointer(const ContactChain& chain, int step, int pair, std::string_view field) {
@@ -392,7 +398,7 @@ absl::Status CheckPairShape(const ContactChain& chain, int step, int pair) {
     return error("agent", "agent index must be >= 0, got " + std::to_string(p.agent));
   const bool part_none = IsNone(p.part);
   if (p.subject_object) {
-    if (p.joint) {
+    if (p.HasJoint()) {
       return error("joint", "an object-object pair (with 'subject_object') takes no joint");
     }
     if (p.subject_object->empty() || IsNone(*p.subject_object)) {
@@ -410,12 +416,12 @@ absl::Status CheckPairShape(const ContactChain& chain, int step, int pair) {
     }
     return absl::OkStatus();
   }
-  if (part_none && p.joint) {
-    return error("part", "part is 'none' but joint is " + Quote(core::BodyJointName(*p.joint)) +
+  if (part_none && p.HasJoint()) {
+    return error("part", "part is 'none' but joint is " + Quote(p.JointName()) +
                              ": a get-close pair has part, joint and contact all 'none'; any "
                              "other pair names an object part or a body joint as its part");
   }
-  if (!part_none && !p.joint) {
+  if (!part_none && !p.HasJoint()) {
     if (p.part.empty()) return error("part", "part name is empty");
     return error("joint", "joint is 'none' but part is " + Quote(p.part) +
                               ": a get-close pair has part, joint and contact all 'none'; " +
@@ -431,10 +437,8 @@ absl::Status CheckPairShape(const ContactChain& chain, int step, int pair) {
     }
     return absl::OkStatus();
   }
-  std::optional<core::BodyJoint> part_as_joint = core::ParseBodyJoint(Canonical(p.part));
-  if (part_as_joint && *part_as_joint == *p.joint) {
-    return error("part",
-                 "joint " + Quote(core::BodyJointName(*p.joint)) + " cannot contact itself");
+  if (Canonical(p.part) == Canonical(p.JointName())) {
+    return error("part", "joint " + Quote(p.JointName()) + " cannot contact itself");
   }
   return absl::OkStatus();
 }
@@ -467,7 +471,7 @@ nlohmann::json ContactChainToJson(const ContactChain& chain) {
         jp["subject_object"] = *p.subject_object;
         jp["subject_part"] = p.subject_part;
       } else {
-        jp["joint"] = p.joint ? std::string(core::BodyJointName(*p.joint)) : std::string(kNoneName);
+        jp["joint"] = p.JointName();
       }
       if (!p.IsGetClose()) jp["contact"] = std::string(ContactTypeName(p.type));
       jp["direction"] = std::string(DirectionName(p.direction));

@@ -53,9 +53,14 @@ inline constexpr std::string_view kNoneName = "none";
 /// get-close requirement (part "none", no joint) that asks the agent to stand at one side of the
 /// object. Distances are in metres in the world frame.
 struct ContactPair {
-  std::string object;                        // scene object id, e.g. "chair000"
-  std::string part;                          // part name (canonical after grounding), or "none"
-  std::optional<core::BodyJoint> joint;      // nullopt for get-close pairs
+  std::string object;  // scene object id, e.g. "chair000"
+  std::string part;    // part name (canonical after grounding), or "none"
+  /// The body point: a standard joint's id as soon as it is parsed, another point's (a palm)
+  /// once grounded against the agent's body-point catalog. nullopt for get-close pairs.
+  std::optional<core::BodyJoint> joint;
+  /// The body point's name as given (canonical form), set by the parser and by grounding; empty
+  /// for get-close pairs and for pairs built in code with `joint` only.
+  std::string joint_name;
   ContactType type = ContactType::kContact;  // ignored for get-close pairs
   Direction direction = Direction::kNone;
   int agent = 0;  // index of the simulated human, 0-based
@@ -73,6 +78,10 @@ struct ContactPair {
 
   /// True for "get close to the object" pairs: part is "none", no joint and no subject.
   bool IsGetClose() const;
+  /// True when the pair names a body point (by id or by a name still to be grounded).
+  bool HasJoint() const { return joint.has_value() || !joint_name.empty(); }
+  /// The body point's name: joint_name, else the standard name of `joint`, else "none".
+  std::string JointName() const;
   /// True for object-object pairs (subject_object set).
   bool IsObjectPair() const { return subject_object.has_value(); }
 };
@@ -114,7 +123,8 @@ absl::Status CheckPairShape(const ContactChain& chain, int step, int pair);
 /// Parses a chain from JSON in either accepted form (simhuman object form, or UniHSI tuples as
 /// a bare list of steps or under the key "chain of contacts", where a sibling "obj" key is
 /// ignored). Checks structure, enum spellings and body joint names, but not object or part
-/// names. Every error starts with "<source>: <JSON pointer>: " and lists valid alternatives.
+/// names. Joint names are checked against the agent's body points when grounding (validate.h).
+/// Every error starts with "<source>: <JSON pointer>: " and lists valid alternatives.
 absl::StatusOr<ContactChain> ParseContactChainJson(const nlohmann::json& j,
                                                    std::string_view source);
 

@@ -35,25 +35,23 @@
 
 namespace simhuman::plan {
 
-/// All body points at the origin (a starting value for BodyPoints::pos_world).
-inline std::array<Eigen::Vector3d, core::kNumBodyJoints> ZeroBodyPoints() {
-  std::array<Eigen::Vector3d, core::kNumBodyJoints> out;
-  out.fill(Eigen::Vector3d::Zero());
-  return out;
+/// The 15 standard body points at the origin (a starting value for BodyPoints::pos_world).
+inline std::vector<Eigen::Vector3d> ZeroBodyPoints() {
+  return std::vector<Eigen::Vector3d>(core::kNumBodyJoints, Eigen::Vector3d::Zero());
 }
 
-/// The 15 body points of one agent, and its heading. One per agent, indexed by
-/// ContactPair::agent.
+/// The body points of one agent (its catalog's, at least the 15 standard ones), and its
+/// heading. One per agent, indexed by ContactPair::agent.
 struct BodyPoints {
-  /// Indexed by static_cast<int>(core::BodyJoint).
-  std::array<Eigen::Vector3d, core::kNumBodyJoints> pos_world = ZeroBodyPoints();
+  /// Indexed by static_cast<int>(core::BodyJoint) (the agent's body-point ids).
+  std::vector<Eigen::Vector3d> pos_world = ZeroBodyPoints();
   /// Unit horizontal forward direction of the pelvis (z ignored; re-normalised when used).
   Eigen::Vector3d facing_world = Eigen::Vector3d::UnitX();
 
   const Eigen::Vector3d& at(core::BodyJoint joint) const {
-    return pos_world[static_cast<int>(joint)];
+    return pos_world.at(static_cast<int>(joint));
   }
-  Eigen::Vector3d& at(core::BodyJoint joint) { return pos_world[static_cast<int>(joint)]; }
+  Eigen::Vector3d& at(core::BodyJoint joint) { return pos_world.at(static_cast<int>(joint)); }
 };
 
 /// Thresholds and weights of the pair reward and success rule. Defaults follow the paper where

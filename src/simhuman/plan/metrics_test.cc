@@ -46,7 +46,7 @@ ContactPair GetClose(const std::string& object, Direction side) {
 std::vector<BodyPoints> Agent(std::initializer_list<std::pair<BodyJoint, Eigen::Vector3d>> moved,
                               const Eigen::Vector3d& facing = Eigen::Vector3d::UnitX()) {
   BodyPoints b;
-  b.pos_world.fill(Eigen::Vector3d(10, 10, 10));  // far from everything
+  std::fill(b.pos_world.begin(), b.pos_world.end(), Eigen::Vector3d(10, 10, 10));  // far away
   for (const auto& [joint, pos] : moved) b.at(joint) = pos;
   b.facing_world = facing;
   return {b};

@@ -72,7 +72,7 @@ inline core::SceneCatalog MakeTestScene() {
   core::SceneCatalog scene;
   scene.objects.push_back(MakeChair(core::Pose::FromYaw({0, 0, 0}, 0.0)));
   scene.objects.push_back(MakeBed(core::Pose::FromYaw({3, 0, 0}, M_PI / 2)));
-  scene.num_agents = 1;
+  scene.agents.resize(1);
   return scene;
 }
 

@@ -108,14 +108,31 @@ absl::Status GroundObjectPair(ContactChain& chain, int s, int p, const core::Sce
   return absl::OkStatus();
 }
 
+// resolves the pair's body point against its agent's catalog: sets `joint` and the canonical
+// `joint_name`
+absl::Status GroundJoint(ContactChain& chain, int s, int p, const core::BodyPointCatalog& points) {
+  ContactPair& pair = chain.steps[s].pairs[p];
+  std::optional<core::BodyJoint> id =
+      pair.joint_name.empty() ? pair.joint : points.Find(pair.joint_name);
+  if (!id || !points.Contains(*id)) {
+    return Error(chain, FieldPointer(chain, s, p, "joint"),
+                 "unknown joint " + Quote(pair.JointName()) + " for human " +
+                     std::to_string(pair.agent) + "; valid joints: " +
+                     core::JoinNames(points.Names()) + " (or 'none' in a get-close pair)");
+  }
+  pair.joint = id;
+  pair.joint_name = points.Name(*id);
+  return absl::OkStatus();
+}
+
 absl::Status GroundPair(ContactChain& chain, int s, int p, const core::SceneCatalog& scene) {
   SH_RETURN_IF_ERROR(CheckPairShape(chain, s, p));
   ContactPair& pair = chain.steps[s].pairs[p];
-  if (pair.agent >= scene.num_agents) {
+  if (pair.agent >= scene.num_agents()) {
     return Error(chain, FieldPointer(chain, s, p, "agent"),
                  "agent index " + std::to_string(pair.agent) + " out of range; the scene has " +
-                     std::to_string(scene.num_agents) + " agent(s), valid indices are 0.." +
-                     std::to_string(scene.num_agents - 1));
+                     std::to_string(scene.num_agents()) + " agent(s), valid indices are 0.." +
+                     std::to_string(scene.num_agents() - 1));
   }
   const core::CatalogObject* object = scene.Find(pair.object);
   if (object == nullptr) {
@@ -128,6 +145,8 @@ absl::Status GroundPair(ContactChain& chain, int s, int p, const core::SceneCata
   pair.part_joint.reset();
   if (pair.IsGetClose()) return absl::OkStatus();
   if (pair.IsObjectPair()) return GroundObjectPair(chain, s, p, scene, *object);
+  const core::BodyPointCatalog& points = scene.agents[pair.agent].body_points;
+  SH_RETURN_IF_ERROR(GroundJoint(chain, s, p, points));
 
   std::vector<const core::CatalogPart*> parts = LookupPart(*object, pair.part);
   if (parts.size() > 1) {
@@ -141,14 +160,14 @@ absl::Status GroundPair(ContactChain& chain, int s, int p, const core::SceneCata
     pair.part = parts[0]->name;
     return absl::OkStatus();
   }
-  // a body joint of the same agent, e.g. "left knee" in "right foot on left knee"
-  if (std::optional<core::BodyJoint> joint = core::ParseBodyJoint(core::NormalizeName(pair.part))) {
+  // a body point of the same agent, e.g. "left knee" in "right foot on left knee"
+  if (std::optional<core::BodyJoint> joint = points.Find(core::NormalizeName(pair.part))) {
     if (*joint == *pair.joint) {
       return Error(chain, FieldPointer(chain, s, p, "part"),
-                   "joint " + Quote(core::BodyJointName(*joint)) + " cannot contact itself");
+                   "joint " + Quote(points.Name(*joint)) + " cannot contact itself");
     }
     pair.part_joint = joint;
-    pair.part = std::string(core::BodyJointName(*joint));
+    pair.part = points.Name(*joint);
     return absl::OkStatus();
   }
   std::vector<std::string> names = object->PartNames();
@@ -156,17 +175,16 @@ absl::Status GroundPair(ContactChain& chain, int s, int p, const core::SceneCata
       chain, FieldPointer(chain, s, p, "part"),
       "unknown part " + Quote(pair.part) + " of " + object->id + " (" + object->type +
           "); valid parts: " + (names.empty() ? std::string("(none)") : core::JoinNames(names)) +
-          "; a body joint of the same agent may also be named: " +
-          core::JoinNames(core::BodyJointNames()));
+          "; a body joint of the same agent may also be named: " + core::JoinNames(points.Names()));
 }
 
 }  // namespace
 
 absl::Status ValidateAndGround(ContactChain& chain, const core::SceneCatalog& scene) {
-  if (scene.num_agents < 1) {
+  if (scene.num_agents() < 1) {
     return Error(
         chain, "",
-        "the scene has " + std::to_string(scene.num_agents) + " agents; at least 1 is needed");
+        "the scene has " + std::to_string(scene.num_agents()) + " agents; at least 1 is needed");
   }
   // ground a copy so that `chain` is untouched on error
   ContactChain grounded = chain;

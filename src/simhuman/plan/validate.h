@@ -12,7 +12,7 @@ namespace simhuman::plan {
 
 /// Checks every step and pair of `chain` against `scene` and grounds the names:
 /// - the plan and every step must be non-empty; every pair must pass CheckPairShape();
-/// - `agent` must be < scene.num_agents;
+/// - `agent` must be < scene.num_agents();
 /// - `object` must be an object id of the scene (exact match);
 /// - `part` (unless "none") is matched against the object's part names and aliases, first
 ///   exactly (case-insensitive, '_' = ' ', digits kept: a catalog can tell "arm sofa style44"

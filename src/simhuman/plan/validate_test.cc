@@ -23,7 +23,7 @@ std::string GroundError(const std::string& name, const core::SceneCatalog& scene
 
 TEST(PlanValidateTest, GroundsSimhumanForm) {
   core::SceneCatalog scene = MakeTestScene();
-  scene.num_agents = 2;
+  scene.agents.resize(2);
   absl::StatusOr<ContactChain> chain =
       LoadAndGroundFile(PlanDataPath("chain_simhuman.json"), scene);
   ASSERT_TRUE(chain.ok()) << chain.status();
@@ -34,6 +34,47 @@ TEST(PlanValidateTest, GroundsSimhumanForm) {
   EXPECT_EQ(foot_on_knee.part_joint, core::BodyJoint::kLeftKnee);
   EXPECT_EQ(foot_on_knee.joint, core::BodyJoint::kRightFoot);
   EXPECT_TRUE(chain->steps[0].pairs[0].IsGetClose());
+}
+
+// an agent whose body has one extra point, as world/ exports a hand's palm
+core::SceneCatalog SceneWithPalm() {
+  core::SceneCatalog scene = MakeTestScene();
+  scene.agents.resize(2);
+  scene.agents[1].kind = "humanoid_right_hand";
+  scene.agents[1].body_points.points.push_back({"right palm", {"right_palm_centre"}});
+  return scene;
+}
+
+std::string PalmPlan(int agent) {
+  return R"({"steps": [{"pairs": [{"object": "chair000", "part": "seat", "joint": "Right_Palm",
+             "contact": "contact", "direction": "up", "agent": )" +
+         std::to_string(agent) + "}]}]}";
+}
+
+TEST(PlanValidateTest, JointNamesGroundAgainstTheAgentsBodyPoints) {
+  const core::SceneCatalog scene = SceneWithPalm();
+  // parsing accepts any joint name; grounding finds it in the agent's catalog
+  absl::StatusOr<ContactChain> parsed = ParseContactChain(PalmPlan(1), "<palm>");
+  ASSERT_TRUE(parsed.ok()) << parsed.status();
+  EXPECT_FALSE(parsed->steps[0].pairs[0].joint.has_value());
+  absl::StatusOr<ContactChain> chain = ParseAndGround(PalmPlan(1), "<palm>", scene);
+  ASSERT_TRUE(chain.ok()) << chain.status();
+  const ContactPair& pair = chain->steps[0].pairs[0];
+  EXPECT_EQ(pair.joint, static_cast<core::BodyJoint>(core::kNumBodyJoints));
+  EXPECT_EQ(pair.joint_name, "right palm");
+  EXPECT_EQ(ContactChainToJson(*chain)["steps"][0]["pairs"][0]["joint"], "right palm");
+  // an alias of the point grounds too
+  std::string alias = PalmPlan(1);
+  alias.replace(alias.find("Right_Palm"), 10, "right palm centre");
+  ASSERT_TRUE(ParseAndGround(alias, "<alias>", scene).ok());
+  // human 0 has no palm: the error names the pointer, the human and its body points
+  absl::StatusOr<ContactChain> bad = ParseAndGround(PalmPlan(0), "<palm>", scene);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_THAT(std::string(bad.status().message()),
+              HasSubstr("/steps/0/pairs/0/joint: unknown joint 'right palm' for human 0; valid "
+                        "joints: pelvis, torso"));
+  // standard joints still ground for every agent
+  ASSERT_TRUE(LoadAndGroundFile(PlanDataPath("chain_simhuman.json"), scene).ok());
 }
 
 TEST(PlanValidateTest, GroundsScenePlanNamesWithDigitsAndAliases) {

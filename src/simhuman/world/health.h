@@ -11,8 +11,17 @@
 namespace simhuman::world {
 
 /// Installs process-wide MuJoCo error and warning handlers (idempotent, thread-safe).
-/// Errors print "simhuman: MuJoCo error: <msg>" to stderr and exit the process with code 3
-/// (MuJoCo cannot continue after an error); warnings are counted and the first few printed.
+/// Errors print "simhuman: MuJoCo error: <msg>" to stderr and exit the process with code 3;
+/// warnings are counted and the first few printed.
+///
+/// Why the error handler exits, although library code otherwise never does: MuJoCo 2.2.2 calls
+/// it from deep inside C code (allocation failures, a model it cannot step) and has no way to
+/// unwind; if the handler returns, MuJoCo carries on with a half-updated mjData. Throwing a C++
+/// exception through MuJoCo's C frames (built without unwind tables) is undefined, and longjmp
+/// would skip our destructors. So the only safe response is to end the process at once, with
+/// exit code 3, which `simhuman` documents ("MuJoCo error"). Everything that can be checked
+/// before MuJoCo sees it (model XML, sizes, finite numbers) is checked by our parsers and
+/// returned as a status instead, so this handler is the last resort, not the error path.
 void InstallMujocoHandlers();
 
 /// Number of MuJoCo warnings seen by the handler since start-up.

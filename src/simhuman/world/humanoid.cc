@@ -66,8 +66,12 @@ class Writer {
       << "\" size=\"" << F(L(r)) << "\" mass=\"" << F(M(mass)) << "\" rgba=\"" << rgba_ << "\"/>\n";
   }
   void Site(std::ostringstream& o, core::BodyJoint j, double x, double y, double z) const {
-    o << "<site name=\"" << p_ << BodyPointSiteName(j) << "\" pos=\"" << Pos(x, y, z)
-      << "\" size=\"" << F(L(0.02)) << "\" rgba=\"0.2 0.8 0.2 0\"/>\n";
+    NamedSite(o, BodyPointSiteName(j), x, y, z);
+  }
+  void NamedSite(std::ostringstream& o, const std::string& site, double x, double y,
+                 double z) const {
+    o << "<site name=\"" << p_ << site << "\" pos=\"" << Pos(x, y, z) << "\" size=\"" << F(L(0.02))
+      << "\" rgba=\"0.2 0.8 0.2 0\"/>\n";
   }
 
  private:
@@ -112,12 +116,62 @@ const std::vector<JointDef>& JointDefs() {
   return defs;
 }
 
+// the placeholder hand's hinges (per side, after the "right_"/"left_" prefix) and gains
+constexpr Gains kFinger{8, 0.5, 6};
+const std::vector<JointDef>& HandJointDefs() {
+  static const std::vector<JointDef> defs = {
+      {"fingers", "0 1 0", 0, 100, kFinger},
+      {"thumb", "1 0 0", -10, 80, kFinger},
+  };
+  return defs;
+}
+constexpr double kFingerMass = 0.04, kThumbMass = 0.03;
+
+// the placeholder hand's body points (per side) and their sites' positions in the hand frame
+struct HandPoint {
+  const char* name;  // after "right " / "left "
+  double x, y, z;
+};
+constexpr HandPoint kHandPoints[] = {
+    {"palm", 0.04, 0, -0.06}, {"fingertips", 0.0, 0, -0.165}, {"thumb tip", 0.05, 0, -0.085}};
+
+std::string SiteName(std::string name) {
+  for (char& c : name) {
+    if (c == ' ') c = '_';
+  }
+  return "pt_" + name;
+}
+
 const JointDef& Def(const std::string& name) {
   for (const auto& d : JointDefs()) {
     if (name == d.name) return d;
   }
   static JointDef none{"", "", 0, 0, kSpine};
   return none;
+}
+
+// the placeholder dexterous hand inside a hand body (`s`: "right_" or "left_"): a finger block
+// and a thumb on one hinge each, and the palm and fingertip sites
+void HandPlaceholderXml(const Writer& w, const std::string& s, std::ostringstream& o) {
+  const std::string& p = w.p();
+  auto joint = [&](int k) {
+    JointDef d = HandJointDefs()[k];
+    const std::string name = s + d.name;
+    d.name = name.c_str();
+    w.Joint(o, d);
+  };
+  o << "<body name=\"" << p << s << "fingers\" pos=\"" << w.Pos(0, 0, -0.095) << "\">\n";
+  joint(0);
+  w.Capsule(o, s + "fingers_geom", 0, 0, -0.01, 0, 0, -0.06, 0.015, kFingerMass);
+  o << "</body>\n";
+  o << "<body name=\"" << p << s << "thumb\" pos=\"" << w.Pos(0.05, 0, -0.04) << "\">\n";
+  joint(1);
+  w.Capsule(o, s + "thumb_geom", 0, 0, -0.01, 0, 0, -0.035, 0.011, kThumbMass);
+  o << "</body>\n";
+  const std::string side = s == "right_" ? "right " : "left ";
+  for (const HandPoint& hp : kHandPoints) {
+    w.NamedSite(o, SiteName(side + hp.name), hp.x, hp.y, hp.z);
+  }
 }
 
 }  // namespace
@@ -140,11 +194,31 @@ const std::vector<std::string>& HumanoidBodyNames() {
 }
 
 std::string BodyPointSiteName(core::BodyJoint joint) {
-  std::string n(core::BodyJointName(joint));
-  for (char& c : n) {
-    if (c == ' ') c = '_';
+  return SiteName(std::string(core::BodyJointName(joint)));
+}
+
+std::vector<std::string> HumanoidJointNames(const HumanoidSpec& spec) {
+  std::vector<std::string> names = HumanoidJointNames();
+  for (const char* side : {"right_", "left_"}) {
+    if (!(side[0] == 'r' ? spec.right_hand : spec.left_hand)) continue;
+    for (const JointDef& d : HandJointDefs()) names.push_back(std::string(side) + d.name);
   }
-  return "pt_" + n;
+  return names;
+}
+
+std::vector<BodyPointSite> HumanoidBodyPoints(const HumanoidSpec& spec) {
+  std::vector<BodyPointSite> out;
+  for (core::BodyJoint j : core::AllBodyJoints()) {
+    out.push_back({{std::string(core::BodyJointName(j)), {}}, BodyPointSiteName(j)});
+  }
+  for (const char* side : {"right", "left"}) {
+    if (!(side[0] == 'r' ? spec.right_hand : spec.left_hand)) continue;
+    for (const HandPoint& hp : kHandPoints) {
+      std::string name = std::string(side) + " " + hp.name;
+      out.push_back({{name, {}}, SiteName(name)});
+    }
+  }
+  return out;
 }
 
 double HumanoidMassKg(double scale) {
@@ -196,6 +270,7 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
     o << "<body name=\"" << p << s << "hand\" pos=\"" << w.Pos(0, 0, -0.25) << "\">\n";
     w.Sphere(o, s + "hand_geom", 0, 0, -0.055, 0.045, kHandMass);
     w.Site(o, ha, 0, 0, -0.055);
+    if (side < 0 ? spec.right_hand : spec.left_hand) HandPlaceholderXml(w, s, o);
     o << "</body>\n</body>\n</body>\n";
   }
   o << "</body>\n";  // torso
@@ -229,12 +304,17 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
 std::string HumanoidActuatorXml(const HumanoidSpec& spec) {
   std::ostringstream o;
   double g = std::pow(spec.scale, 4);
-  for (const auto& d : JointDefs()) {
+  auto servo = [&](const std::string& name, const JointDef& d) {
     constexpr double kDeg = M_PI / 180.0;
-    o << "<position name=\"" << spec.prefix << d.name << "\" joint=\"" << spec.prefix << d.name
+    o << "<position name=\"" << spec.prefix << name << "\" joint=\"" << spec.prefix << name
       << "\" kp=\"" << F(d.gains.kp * g) << "\" ctrllimited=\"true\" ctrlrange=\""
       << F(d.lo_deg * kDeg) << " " << F(d.hi_deg * kDeg) << "\" forcelimited=\"true\" forcerange=\""
       << F(-d.gains.force * g) << " " << F(d.gains.force * g) << "\"/>\n";
+  };
+  for (const auto& d : JointDefs()) servo(d.name, d);
+  for (const char* side : {"right_", "left_"}) {
+    if (!(side[0] == 'r' ? spec.right_hand : spec.left_hand)) continue;
+    for (const auto& d : HandJointDefs()) servo(std::string(side) + d.name, d);
   }
   return o.str();
 }

@@ -16,13 +16,39 @@ struct HumanoidSpec {
   double scale = 1.0;  ///< length scale (1 = adult 1.70 m; 0.7 = a child ~1.19 m); mass ~ s^3
   std::string prefix;  ///< prefix for every name, e.g. "h1/" for a second agent
   std::string rgba = "0.85 0.65 0.5 1";
+  /// A dexterous hand on the right / left arm instead of the capsule hand. Today this is a
+  /// placeholder of kHandPlaceholderDofs hinges (a finger block and a thumb) with palm and
+  /// fingertip body points, so that agents of different actuator counts exist; the 22-DoF
+  /// hand of the manipulation issue replaces it.
+  bool right_hand = false;
+  bool left_hand = false;
 };
 
-inline constexpr int kHumanoidDofs = 28;  ///< hinge joints (and actuators)
+/// Hinges (and actuators) of one placeholder dexterous hand.
+inline constexpr int kHandPlaceholderDofs = 2;
+
+/// One body point of a humanoid: what plans call it and the MJCF site (without prefix) that
+/// marks it.
+struct BodyPointSite {
+  core::BodyPointInfo info;
+  std::string site;
+};
+
+/// Hinge joints (and actuators) of the humanoid's body: every humanoid kind has these, first
+/// and in HumanoidJointNames() order; hands add theirs after them (HumanoidJointNames(spec)).
+inline constexpr int kHumanoidDofs = 28;
 inline constexpr int kHumanoidBodies = 15;
 
-/// Hinge joint names in actuator order (without prefix).
+/// The body's 28 hinge joint names in actuator order (without prefix).
 const std::vector<std::string>& HumanoidJointNames();
+
+/// All hinge joint (and actuator) names of the humanoid `spec` describes, without prefix: the
+/// body's 28, then the right hand's, then the left hand's.
+std::vector<std::string> HumanoidJointNames(const HumanoidSpec& spec);
+
+/// All body points of the humanoid `spec` describes, in id order: the 15 standard points
+/// (core::BodyJoint), then the hands' (right, then left).
+std::vector<BodyPointSite> HumanoidBodyPoints(const HumanoidSpec& spec);
 
 /// Body names in tree order (without prefix).
 const std::vector<std::string>& HumanoidBodyNames();

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
+#include "simhuman/world/embodiment.h"
 #include "simhuman/world/health.h"
 #include "simhuman/world/scene.h"
 #include "simhuman/world/sim_world.h"
@@ -133,6 +135,61 @@ TEST(TabletopDemoTest, CylinderAndSphereRestOnTheTable) {
     Eigen::Vector3d now = Eigen::Map<const Eigen::Vector3d>((*w)->data()->xpos + 3 * body);
     EXPECT_LT((now - pos).norm(), kDriftTolM) << mj_id2name(m, mjOBJ_BODY, body);
   }
+}
+
+TEST(EmbodimentTest, KindsAreDataAndAnUnknownKindIsNamed) {
+  ASSERT_FALSE(Embodiments().empty());
+  EXPECT_EQ(Embodiments()[0].name, kDefaultAgentKind);
+  core::StatusOr<const Embodiment*> bad = FindEmbodiment("robot");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("valid kinds are: humanoid, humanoid_right_hand"),
+            std::string::npos)
+      << bad.status();
+  // the default kind's catalog is the 15 standard points
+  core::CatalogAgent plain = MakeCatalogAgent(**FindEmbodiment("humanoid"), 1.0);
+  EXPECT_EQ(plain.body_points.Names(), core::BodyJointNames());
+  core::CatalogAgent two = MakeCatalogAgent(**FindEmbodiment("humanoid_hands"), 0.8);
+  EXPECT_EQ(two.body_points.size(), core::kNumBodyJoints + 6);
+  EXPECT_DOUBLE_EQ(two.scale, 0.8);
+  EXPECT_TRUE(two.body_points.Find("left thumb tip").has_value());
+}
+
+// agents of different kinds in one model: tables sized from the model, spans side by side
+TEST(EmbodimentTest, AgentTablesComeFromTheCompiledModel) {
+  std::vector<AgentSpec> agents = {{0, 0, 0, 1.0, "humanoid"},
+                                   {2, 0, 0, 1.0, "humanoid_hands"},
+                                   {4, 0, 0, 0.7, "humanoid_right_hand"}};
+  auto w = SimWorld::Create(core::SceneCatalog(), agents);
+  ASSERT_TRUE(w.ok()) << w.status();
+  const mjModel* m = (*w)->model();
+  const int extra = kHandPlaceholderDofs;
+  EXPECT_EQ((*w)->agent(0).num_actuators(), kHumanoidDofs);
+  EXPECT_EQ((*w)->agent(1).num_actuators(), kHumanoidDofs + 2 * extra);
+  EXPECT_EQ((*w)->agent(2).num_actuators(), kHumanoidDofs + extra);
+  EXPECT_EQ(m->nu, 3 * kHumanoidDofs + 3 * extra);
+  std::set<int> seen;
+  for (int a = 0; a < 3; ++a) {
+    const AgentIndex& ix = (*w)->agent(a);
+    for (int j = 0; j < ix.num_actuators(); ++j) {
+      EXPECT_TRUE(seen.insert(ix.actuator[j]).second) << "actuator shared: agent " << a;
+      // each actuator drives the hinge the index pairs it with
+      EXPECT_EQ(m->jnt_qposadr[m->actuator_trnid[2 * ix.actuator[j]]], ix.hinge_qpos[j]);
+    }
+    EXPECT_EQ(ix.num_body_points(), (*w)->catalog().agents[a].body_points.size());
+  }
+  EXPECT_EQ((*w)->catalog().agents[1].kind, "humanoid_hands");
+  // the palm point sits in front of the hand point, within a hand's length
+  std::vector<Eigen::Vector3d> pts;
+  (*w)->AllBodyPoints((*w)->data(), 2, &pts);
+  const int palm = static_cast<int>(*(*w)->catalog().agents[2].body_points.Find("right palm"));
+  const double d = (pts[palm] - pts[static_cast<int>(core::BodyJoint::kRightHand)]).norm();
+  EXPECT_GT(d, 0.01);
+  EXPECT_LT(d, 0.1);
+  // an unknown kind is refused by name
+  auto bad = SimWorld::Create(core::SceneCatalog(), {{0, 0, 0, 1.0, "robot"}});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("human 0: unknown agent kind 'robot'"), std::string::npos)
+      << bad.status();
 }
 
 }  // namespace

@@ -65,7 +65,7 @@ std::string AgentPrefix(int agent) { return agent == 0 ? "" : "h" + std::to_stri
 std::string ObjectBodyName(const std::string& id) { return "obj/" + id; }
 
 core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
-                                          const std::vector<AgentPlacement>& agents,
+                                          const std::vector<AgentSpec>& agents,
                                           const ModelOptions& options) {
   if (!(options.timestep_s > 0) || !std::isfinite(options.timestep_s)) {
     return absl::InvalidArgumentError("model option timestep_s must be a positive number");
@@ -93,18 +93,16 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
        "diffuse=\"0.6 0.6 0.6\" castshadow=\"false\"/>\n"
     << "<geom name=\"floor\" type=\"plane\" size=\"30 30 0.1\" material=\"floor\"/>\n";
   for (size_t a = 0; a < agents.size(); ++a) {
-    const AgentPlacement& p = agents[a];
+    const AgentSpec& p = agents[a];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.yaw_rad) ||
         !(p.scale > 0.3 && p.scale < 1.5)) {
       return absl::InvalidArgumentError("human " + std::to_string(a) +
                                         ": position/yaw must be finite and scale in (0.3, 1.5)");
     }
-    HumanoidSpec spec;
-    spec.scale = p.scale;
-    spec.prefix = AgentPrefix(static_cast<int>(a));
-    if (a == 1) spec.rgba = "0.55 0.7 0.85 1";
-    if (a == 2) spec.rgba = "0.75 0.8 0.55 1";
-    o << HumanoidBodyXml(spec, p.x, p.y, p.yaw_rad);
+    core::StatusOr<const Embodiment*> kind = FindEmbodiment(p.kind);
+    if (!kind.ok()) return core::Annotate(kind.status(), "human " + std::to_string(a));
+    o << HumanoidBodyXml(MakeHumanoidSpec(**kind, p.scale, static_cast<int>(a)), p.x, p.y,
+                         p.yaw_rad);
   }
   for (const core::CatalogObject& obj : scene.objects) {
     o << "<body name=\"" << ObjectBodyName(obj.id) << "\" pos=\"" << V3(obj.pose.pos)
@@ -143,10 +141,8 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
   }
   o << "</worldbody>\n<actuator>\n";
   for (size_t a = 0; a < agents.size(); ++a) {
-    HumanoidSpec spec;
-    spec.scale = agents[a].scale;
-    spec.prefix = AgentPrefix(static_cast<int>(a));
-    o << HumanoidActuatorXml(spec);
+    const Embodiment* kind = *FindEmbodiment(agents[a].kind);  // checked above
+    o << HumanoidActuatorXml(MakeHumanoidSpec(*kind, agents[a].scale, static_cast<int>(a)));
   }
   o << "</actuator>\n</mujoco>\n";
   return o.str();

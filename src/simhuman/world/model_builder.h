@@ -7,14 +7,9 @@
 
 #include "simhuman/core/scene_catalog.h"
 #include "simhuman/core/status.h"
+#include "simhuman/world/embodiment.h"
 
 namespace simhuman::world {
-
-/// Where one humanoid starts: standing at (x, y) facing yaw_rad, at length scale `scale`.
-struct AgentPlacement {
-  double x = 0, y = 0, yaw_rad = 0;
-  double scale = 1.0;
-};
 
 /// Physics options of the assembled model.
 struct ModelOptions {
@@ -35,7 +30,7 @@ std::string ObjectBodyName(const std::string& id);
 
 /// Builds the MJCF text. Errors name the culprit (e.g. a non-finite size).
 core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
-                                          const std::vector<AgentPlacement>& agents,
+                                          const std::vector<AgentSpec>& agents,
                                           const ModelOptions& options);
 
 }  // namespace simhuman::world

@@ -9,7 +9,9 @@
 #include <set>
 #include <sstream>
 
+#include "simhuman/core/geometry.h"
 #include "simhuman/core/json_io.h"
+#include "simhuman/world/embodiment.h"
 
 namespace simhuman::world {
 namespace {
@@ -27,7 +29,7 @@ constexpr double kScenePlanRotTolerance = 1e-6;
 const std::vector<std::string> kSceneKeys = {"name", "objects", "humans"};
 const std::vector<std::string> kObjectKeys = {"id",    "type", "pos",   "yaw_deg",
                                               "scale", "size", "color", "mass_kg"};
-const std::vector<std::string> kHumanKeys = {"pos", "yaw_deg", "scale", "posture"};
+const std::vector<std::string> kHumanKeys = {"pos", "yaw_deg", "scale", "posture", "kind"};
 const std::vector<std::string> kPlanKeys = {"obj", "chain of contacts", "contact_pairs"};
 const std::vector<std::string> kPlanObjectKeys = {"id",       "name",        "rotate", "scale",
                                                   "transfer", "stand_point", "part_id"};
@@ -121,11 +123,6 @@ std::string SourceStem(std::string_view source) {
   return s;
 }
 
-double WrapAngle(double a) {
-  a = std::remainder(a, 2 * M_PI);
-  return a <= -M_PI ? a + 2 * M_PI : a;
-}
-
 core::StatusOr<ObjectSpec> ParseObject(const json& j, const std::string& where, size_t index) {
   SH_RETURN_IF_ERROR(core::CheckKeys(j, kObjectKeys, where));
   SH_RETURN_IF_ERROR(Required(j, "type", where));
@@ -199,6 +196,11 @@ core::StatusOr<HumanSpec> ParseHuman(const json& j, const std::string& where) {
       return Err(Ptr(where, "posture"), "unknown posture '" + h.posture +
                                             "'; valid postures are: " + core::JoinNames(valid));
     }
+  }
+  if (j.contains("kind")) {
+    SH_ASSIGN_OR_RETURN(h.kind, String(j.at("kind"), Ptr(where, "kind")));
+    core::StatusOr<const Embodiment*> kind = FindEmbodiment(h.kind);
+    if (!kind.ok()) return Err(Ptr(where, "kind"), std::string(kind.status().message()));
   }
   return h;
 }
@@ -306,7 +308,7 @@ core::StatusOr<SceneSpec> ParsePlanForm(const json& j, const std::string& where,
     SH_ASSIGN_OR_RETURN(std::vector<double> t, Numbers(o.at("transfer"), 3, 3, Ptr(w, "transfer")));
     spec_o.pos = Eigen::Vector3d(t[0], t[1], t[2]);
     SH_ASSIGN_OR_RETURN(double z, PlanRotationZ(o.at("rotate"), Ptr(w, "rotate")));
-    spec_o.yaw_rad = WrapAngle(z + PlanYawOffset(spec_o.type));
+    spec_o.yaw_rad = core::WrapAngle(z + PlanYawOffset(spec_o.type));
     // "scale" scales PartNet's unit-size meshes; our objects are metric, so it is only checked
     if (o.contains("scale")) {
       SH_ASSIGN_OR_RETURN(double s, Number(o.at("scale"), Ptr(w, "scale")));
@@ -625,7 +627,11 @@ core::StatusOr<core::SceneCatalog> BuildCatalog(const SceneSpec& spec) {
     if (!obj.ok()) return core::Annotate(obj.status(), "scene '" + spec.name + "'");
     catalog.objects.push_back(*std::move(obj));
   }
-  catalog.num_agents = static_cast<int>(spec.humans.size());
+  catalog.agents.clear();
+  for (const HumanSpec& h : spec.humans) {
+    SH_ASSIGN_OR_RETURN(const Embodiment* kind, FindEmbodiment(h.kind));
+    catalog.agents.push_back(MakeCatalogAgent(*kind, h.scale));
+  }
   return catalog;
 }
 
@@ -647,10 +653,12 @@ nlohmann::json SceneToJson(const SceneSpec& spec) {
   }
   j["humans"] = json::array();
   for (const HumanSpec& h : spec.humans) {
-    j["humans"].push_back({{"pos", {h.pos_xy.x(), h.pos_xy.y()}},
-                           {"yaw_deg", h.yaw_rad / kDegToRad},
-                           {"scale", h.scale},
-                           {"posture", h.posture}});
+    json jh = {{"pos", {h.pos_xy.x(), h.pos_xy.y()}},
+               {"yaw_deg", h.yaw_rad / kDegToRad},
+               {"scale", h.scale},
+               {"posture", h.posture}};
+    if (h.kind != kDefaultAgentKind) jh["kind"] = h.kind;  // written only when not the default
+    j["humans"].push_back(std::move(jh));
   }
   return j;
 }

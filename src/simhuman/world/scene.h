@@ -22,6 +22,7 @@ struct HumanSpec {
   double yaw_rad = 0.0;                              // facing direction about +z; 0 faces +x
   double scale = 1.0;             // body length scale: 1 = adult ~1.7 m, a child e.g. 0.7
   std::string posture = "stand";  // one of HumanPostures()
+  std::string kind = "humanoid";  // an agent kind: world/embodiment.h EmbodimentNames()
 };
 
 /// A scene before it is built. Plain data.
@@ -37,7 +38,7 @@ const std::vector<std::string>& HumanPostures();
 
 /// Parses a scene, strictly. Two forms are accepted:
 ///  - ours: {"name", "objects": [{"id", "type", "pos", "yaw_deg", "scale", "size", "color",
-///    "mass_kg"}], "humans": [{"pos", "yaw_deg", "scale", "posture"}]};
+///    "mass_kg"}], "humans": [{"pos", "yaw_deg", "scale", "posture", "kind"}]};
 ///  - a UniHSI ScenePlan entry {"obj": {"000": {"id", "name", "rotate", "scale", "transfer",
 ///    "stand_point"}}, "chain of contacts" | "contact_pairs": [...]}, or a one-key wrapper of
 ///    it such as {"0000": {...}} (the contacts are ignored here; plan/ parses them).
@@ -56,7 +57,8 @@ std::vector<std::string> BuiltinSceneNames();
 /// The built-in scene `name`, or NotFound listing the names.
 core::StatusOr<SceneSpec> BuiltinScene(std::string_view name);
 
-/// Builds every object (errors name the object id) and sets num_agents = humans.size().
+/// Builds every object (errors name the object id) and one catalog agent per human (its kind,
+/// scale and body points).
 /// Objects keep the order of the spec.
 core::StatusOr<core::SceneCatalog> BuildCatalog(const SceneSpec& spec);
 

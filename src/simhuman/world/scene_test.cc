@@ -100,9 +100,36 @@ TEST(SceneTest, NonFiniteAndWrongTypesInMemoryJson) {
   EXPECT_THAT(ParseError(j), HasSubstr("/humans/0/scale"));
   j = {{"objects", nlohmann::json::array()}, {"humans", nlohmann::json::array()}};
   EXPECT_THAT(ParseError(j), HasSubstr("/humans: expected a non-empty array"));
+  j = {{"objects", nlohmann::json::array()}, {"humans", {{{"pos", {0, 0}}, {"kind", "robot"}}}}};
+  EXPECT_THAT(ParseError(j), HasSubstr("/humans/0/kind: unknown agent kind 'robot'; valid kinds "
+                                       "are: humanoid, humanoid_right_hand"));
   j = {{"name", "x"}};
   EXPECT_THAT(ParseError(j), HasSubstr("/objects: missing required key"));
   EXPECT_THAT(ParseError(nlohmann::json::array()), HasSubstr("expected a JSON object"));
+}
+
+TEST(SceneTest, HumansOfAKindAndTheirBodyPointsReachTheCatalog) {
+  nlohmann::json j = {
+      {"objects", nlohmann::json::array()},
+      {"humans",
+       {{{"pos", {0, 0}}}, {{"pos", {2, 0}}, {"kind", "humanoid_right_hand"}, {"scale", 0.8}}}}};
+  core::StatusOr<SceneSpec> spec = ParseSceneJson(j, "kinds.json");
+  ASSERT_TRUE(spec.ok()) << spec.status();
+  EXPECT_EQ(spec->humans[0].kind, "humanoid");
+  EXPECT_EQ(spec->humans[1].kind, "humanoid_right_hand");
+  core::StatusOr<core::SceneCatalog> cat = BuildCatalog(*spec);
+  ASSERT_TRUE(cat.ok()) << cat.status();
+  ASSERT_EQ(cat->num_agents(), 2);
+  EXPECT_EQ(cat->agents[0].body_points.size(), core::kNumBodyJoints);
+  EXPECT_TRUE(cat->agents[1].body_points.Find("right fingertips").has_value());
+  EXPECT_DOUBLE_EQ(cat->agents[1].scale, 0.8);
+  // the kind round-trips; the default kind is not written
+  nlohmann::json out = SceneToJson(*spec);
+  EXPECT_FALSE(out["humans"][0].contains("kind"));
+  EXPECT_EQ(out["humans"][1]["kind"], "humanoid_right_hand");
+  core::StatusOr<SceneSpec> again = ParseSceneJson(out, "again.json");
+  ASSERT_TRUE(again.ok()) << again.status();
+  EXPECT_EQ(again->humans[1].kind, "humanoid_right_hand");
 }
 
 TEST(SceneTest, OurFormWithDefaults) {
@@ -133,7 +160,7 @@ TEST(SceneTest, OurFormWithDefaults) {
 
   core::StatusOr<core::SceneCatalog> cat = BuildCatalog(s);
   ASSERT_TRUE(cat.ok()) << cat.status();
-  EXPECT_EQ(cat->num_agents, 1);
+  EXPECT_EQ(cat->num_agents(), 1);
   EXPECT_NEAR(WorldBounds(*cat->Find("t")).second.z(), 0.77, 1e-9);
   EXPECT_TRUE(cat->Find("box002")->movable);
 }
@@ -199,7 +226,7 @@ TEST(SceneTest, ScenePlanTable7) {
   EXPECT_NE(cat->Find("bed003")->FindPart("pillow17"), nullptr);
   // a default human, clear of the objects
   ASSERT_EQ(s->humans.size(), 1u);
-  EXPECT_EQ(cat->num_agents, 1);
+  EXPECT_EQ(cat->num_agents(), 1);
 }
 
 TEST(SceneTest, ScenePlanUnwrappedAndMultiPlan) {
@@ -248,7 +275,7 @@ TEST(SceneTest, BuiltinScenesLoadAndDoNotOverlap) {
     ASSERT_FALSE(s->humans.empty());
     core::StatusOr<core::SceneCatalog> cat = BuildCatalog(*s);
     ASSERT_TRUE(cat.ok()) << cat.status();
-    EXPECT_EQ(cat->num_agents, static_cast<int>(s->humans.size()));
+    EXPECT_EQ(cat->num_agents(), static_cast<int>(s->humans.size()));
     auto overlaps = OverlappingObjects(*cat);
     for (const auto& [a, b] : overlaps) ADD_FAILURE() << a << " overlaps " << b;
     // round trip through our JSON form
@@ -336,7 +363,7 @@ TEST(SceneTest, OverlapsAreDetected) {
   core::StatusOr<core::SceneCatalog> cat = BuildCatalog(s);
   ASSERT_TRUE(cat.ok());
   ASSERT_EQ(OverlappingObjects(*cat).size(), 1u);
-  EXPECT_EQ(cat->num_agents, 0);
+  EXPECT_EQ(cat->num_agents(), 0);
   s.objects[1].id = "a";
   EXPECT_THAT(std::string(BuildCatalog(s).status().message()), HasSubstr("duplicate object id"));
 }

@@ -4,6 +4,47 @@
 #include <cstring>
 
 namespace simhuman::world {
+namespace {
+
+int Find(const mjModel* m, mjtObj type, const std::string& name) {
+  return mj_name2id(m, type, name.c_str());
+}
+
+// the addresses of agent `index` of kind `spec.kind`, looked up by name in the compiled model
+core::StatusOr<AgentIndex> IndexAgent(const mjModel* m, const AgentSpec& spec, int index) {
+  SH_ASSIGN_OR_RETURN(const Embodiment* kind, FindEmbodiment(spec.kind));
+  const HumanoidSpec hs = MakeHumanoidSpec(*kind, spec.scale, index);
+  const std::string& p = hs.prefix;
+  AgentIndex ix;
+  ix.kind = kind->name;
+  ix.scale = spec.scale;
+  int root = Find(m, mjOBJ_JOINT, p + "root");
+  if (root < 0) return absl::InternalError("humanoid root joint missing");
+  ix.root_qpos = m->jnt_qposadr[root];
+  ix.root_qvel = m->jnt_dofadr[root];
+  for (const std::string& name : HumanoidJointNames(hs)) {
+    int jid = Find(m, mjOBJ_JOINT, p + name);
+    int aid = Find(m, mjOBJ_ACTUATOR, p + name);
+    if (jid < 0 || aid < 0) return absl::InternalError("humanoid joint missing: " + p + name);
+    ix.hinge_qpos.push_back(m->jnt_qposadr[jid]);
+    ix.hinge_qvel.push_back(m->jnt_dofadr[jid]);
+    ix.actuator.push_back(aid);
+  }
+  for (const BodyPointSite& point : HumanoidBodyPoints(hs)) {
+    int sid = Find(m, mjOBJ_SITE, p + point.site);
+    if (sid < 0) return absl::InternalError("humanoid site missing: " + p + point.site);
+    ix.site.push_back(sid);
+  }
+  for (const auto& b : HumanoidBodyNames()) ix.bodies.push_back(Find(m, mjOBJ_BODY, p + b));
+  ix.pelvis_body = ix.bodies[0];
+  ix.torso_body = Find(m, mjOBJ_BODY, p + "torso");
+  ix.head_body = Find(m, mjOBJ_BODY, p + "head");
+  ix.left_foot_body = Find(m, mjOBJ_BODY, p + "left_foot");
+  ix.right_foot_body = Find(m, mjOBJ_BODY, p + "right_foot");
+  return ix;
+}
+
+}  // namespace
 
 core::StatusOr<mjModel*> SimWorld::CompileXml(const std::string& xml) {
   InstallMujocoHandlers();
@@ -22,9 +63,9 @@ core::StatusOr<mjModel*> SimWorld::CompileXml(const std::string& xml) {
   return m;
 }
 
-core::StatusOr<std::unique_ptr<SimWorld>> SimWorld::Create(
-    const core::SceneCatalog& scene, const std::vector<AgentPlacement>& agents,
-    const ModelOptions& options) {
+core::StatusOr<std::unique_ptr<SimWorld>> SimWorld::Create(const core::SceneCatalog& scene,
+                                                           const std::vector<AgentSpec>& agents,
+                                                           const ModelOptions& options) {
   if (agents.empty()) return absl::InvalidArgumentError("a scene needs at least one human");
   SH_ASSIGN_OR_RETURN(std::string xml, BuildModelXml(scene, agents, options));
   SH_ASSIGN_OR_RETURN(mjModel * m, CompileXml(xml));
@@ -32,38 +73,15 @@ core::StatusOr<std::unique_ptr<SimWorld>> SimWorld::Create(
   w->model_ = m;
   w->data_ = mj_makeData(m);
   w->catalog_ = scene;
+  w->catalog_.agents.clear();  // the agents as built, whatever the scene's catalog said
+  for (const AgentSpec& a : agents) {
+    SH_ASSIGN_OR_RETURN(const Embodiment* kind, FindEmbodiment(a.kind));
+    w->catalog_.agents.push_back(MakeCatalogAgent(*kind, a.scale));
+  }
   w->xml_ = std::move(xml);
   for (size_t a = 0; a < agents.size(); ++a) {
-    std::string p = AgentPrefix(static_cast<int>(a));
-    AgentIndex ix;
-    ix.scale = agents[a].scale;
-    int root = mj_name2id(m, mjOBJ_JOINT, (p + "root").c_str());
-    if (root < 0) return absl::InternalError("humanoid root joint missing");
-    ix.root_qpos = m->jnt_qposadr[root];
-    ix.root_qvel = m->jnt_dofadr[root];
-    const auto& names = HumanoidJointNames();
-    for (int j = 0; j < kHumanoidDofs; ++j) {
-      int jid = mj_name2id(m, mjOBJ_JOINT, (p + names[j]).c_str());
-      int aid = mj_name2id(m, mjOBJ_ACTUATOR, (p + names[j]).c_str());
-      if (jid < 0 || aid < 0) return absl::InternalError("humanoid joint missing: " + names[j]);
-      ix.hinge_qpos[j] = m->jnt_qposadr[jid];
-      ix.hinge_qvel[j] = m->jnt_dofadr[jid];
-      ix.actuator[j] = aid;
-    }
-    for (core::BodyJoint bj : core::AllBodyJoints()) {
-      int sid = mj_name2id(m, mjOBJ_SITE, (p + BodyPointSiteName(bj)).c_str());
-      if (sid < 0) return absl::InternalError("humanoid site missing");
-      ix.site[static_cast<int>(bj)] = sid;
-    }
-    for (const auto& b : HumanoidBodyNames()) {
-      ix.bodies.push_back(mj_name2id(m, mjOBJ_BODY, (p + b).c_str()));
-    }
-    ix.pelvis_body = ix.bodies[0];
-    ix.torso_body = mj_name2id(m, mjOBJ_BODY, (p + "torso").c_str());
-    ix.head_body = mj_name2id(m, mjOBJ_BODY, (p + "head").c_str());
-    ix.left_foot_body = mj_name2id(m, mjOBJ_BODY, (p + "left_foot").c_str());
-    ix.right_foot_body = mj_name2id(m, mjOBJ_BODY, (p + "right_foot").c_str());
-    w->agents_.push_back(ix);
+    SH_ASSIGN_OR_RETURN(AgentIndex ix, IndexAgent(m, agents[a], static_cast<int>(a)));
+    w->agents_.push_back(std::move(ix));
   }
   for (const auto& o : scene.objects) {
     if (!o.movable) continue;
@@ -82,8 +100,9 @@ SimWorld::~SimWorld() {
 void SimWorld::Reset() {
   mj_resetData(model_, data_);
   for (const AgentIndex& a : agents_) {
-    for (int j = 0; j < kHumanoidDofs; ++j)
+    for (int j = 0; j < a.num_actuators(); ++j) {
       data_->ctrl[a.actuator[j]] = data_->qpos[a.hinge_qpos[j]];
+    }
   }
   mj_forward(model_, data_);
   health_.Reset(data_);
@@ -102,6 +121,15 @@ std::array<Eigen::Vector3d, core::kNumBodyJoints> SimWorld::BodyPoints(const mjD
     out[i] = Eigen::Vector3d(x[0], x[1], x[2]);
   }
   return out;
+}
+
+void SimWorld::AllBodyPoints(const mjData* d, int a, std::vector<Eigen::Vector3d>* out) const {
+  const AgentIndex& ix = agents_[a];
+  out->resize(ix.site.size());
+  for (size_t i = 0; i < ix.site.size(); ++i) {
+    const mjtNum* x = d->site_xpos + 3 * ix.site[i];
+    (*out)[i] = Eigen::Vector3d(x[0], x[1], x[2]);
+  }
 }
 
 void SimWorld::SyncCatalog(const mjData* d, core::SceneCatalog* catalog) const {

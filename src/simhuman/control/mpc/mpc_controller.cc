@@ -37,7 +37,7 @@ constexpr std::array<double, core::kNumBodyJoints> kTrackWeight = {
 // Where joint `p` of a contact term touches: the target's nearest point, backed off by the
 // term's clearance along its direction (or straight away from the target if it has none).
 Eigen::Vector3d TouchPoint(const ContactTerm& term, const Eigen::Vector3d& p,
-                           const std::array<Eigen::Vector3d, core::kNumBodyJoints>& pts) {
+                           core::Span<const Eigen::Vector3d> pts) {
   Eigen::Vector3d np = term.Nearest(p, pts);
   Eigen::Vector3d dir = term.dir;
   if (dir.squaredNorm() < 0.5) {
@@ -360,6 +360,17 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
 
 absl::Status MpcController::Act(const Observation& obs) {
   if (!obs.task) return absl::InvalidArgumentError("mpc: observation has no task");
+  for (const ContactTerm& t : obs.task->terms) {
+    for (core::BodyJoint j : {t.joint, t.target_joint.value_or(t.joint)}) {
+      if (static_cast<int>(j) >= core::kNumBodyJoints) {
+        return absl::InvalidArgumentError(
+            "mpc: body point '" + world_->catalog().agents.at(agent_).body_points.Name(j) +
+            "' of human " + std::to_string(agent_) +
+            " is not one the MPC drives; it drives the 15 standard body points (" +
+            core::JoinNames(core::BodyJointNames()) + ")");
+      }
+    }
+  }
   if (obs.step_index != step_index_) StartStep(obs, *obs.task);
   const world::AgentIndex& a = world_->agent(agent_);
   const double now = obs.time_s;
@@ -381,7 +392,7 @@ absl::Status MpcController::Act(const Observation& obs) {
   std::array<Eigen::Vector3d, core::kNumBodyJoints> ref_now;
   RefPoints(now, &ref_now);
   const auto& bp = obs.body_points;
-  auto trunk = [](const std::array<Eigen::Vector3d, core::kNumBodyJoints>& p) {
+  auto trunk = [](core::Span<const Eigen::Vector3d> p) {
     return Eigen::Vector3d(p[static_cast<int>(core::BodyJoint::kHead)] -
                            p[static_cast<int>(core::BodyJoint::kPelvis)])
         .normalized();
@@ -548,10 +559,11 @@ void MpcController::WithServo(const double* knot, double* out) const {
   for (int j = 0; j < kDofs; ++j) out[j] = std::clamp(knot[j] + servo_[j], lo_[j], hi_[j]);
 }
 
-void MpcController::Targets(double time_s, double* ctrl28) const {
+void MpcController::Targets(double time_s, core::Span<double> ctrl) const {
+  SH_CHECK(ctrl.size() >= kDofs, "an MPC agent has the humanoid body's actuators first");
   std::array<double, kDofs> raw;
   Interp(nominal_, nominal_t0_, config_.horizon_s, time_s, raw.data());
-  WithServo(raw.data(), ctrl28);
+  WithServo(raw.data(), ctrl.data());
 }
 
 }  // namespace simhuman::control

@@ -30,7 +30,7 @@ class MpcController : public Controller {
 
   std::string name() const override { return "mpc-" + config_.preset; }
   absl::Status Act(const Observation& obs) override;
-  void Targets(double time_s, double* ctrl28) const override;
+  void Targets(double time_s, core::Span<double> ctrl) const override;
   double control_period_s() const override { return config_.replan_s; }
 
   /// The reference pose solved for the current step (diagnostics, tests).

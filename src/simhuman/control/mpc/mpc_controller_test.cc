@@ -28,7 +28,7 @@ Fixture SitDemo() {
   auto cat = world::BuildCatalog(*spec);
   EXPECT_TRUE(cat.ok()) << cat.status();
   s.catalog = *cat;
-  std::vector<world::AgentPlacement> agents;
+  std::vector<world::AgentSpec> agents;
   for (const auto& h : spec->humans)
     agents.push_back({h.pos_xy.x(), h.pos_xy.y(), h.yaw_rad, h.scale});
   auto w = world::SimWorld::Create(s.catalog, agents);

@@ -156,8 +156,10 @@ absl::Status WalkPolicyController::Act(const Observation& obs) {
   return absl::OkStatus();
 }
 
-void WalkPolicyController::Targets(double, double* ctrl28) const {
-  std::copy(impl_->ctrl.begin(), impl_->ctrl.end(), ctrl28);
+void WalkPolicyController::Targets(double, core::Span<double> ctrl) const {
+  SH_CHECK(ctrl.size() >= static_cast<int>(impl_->ctrl.size()),
+           "a walking agent has the humanoid body's actuators first");
+  std::copy(impl_->ctrl.begin(), impl_->ctrl.end(), ctrl.data());
 }
 
 bool WalkPolicyController::Arrived(const mjData* d, const WalkTolerance& tol) const {
@@ -219,8 +221,8 @@ absl::Status WalkThenContactController::Act(const Observation& obs) {
   return active()->Act(obs);
 }
 
-void WalkThenContactController::Targets(double time_s, double* ctrl28) const {
-  active()->Targets(time_s, ctrl28);
+void WalkThenContactController::Targets(double time_s, core::Span<double> ctrl) const {
+  active()->Targets(time_s, ctrl);
 }
 
 }  // namespace simhuman::control

@@ -36,7 +36,7 @@ class WalkPolicyController : public Controller {
   /// Takes the target from obs.task (stand point and facing of a get-close step) unless a
   /// fixed target was set, then infers the PD targets (deterministic: the Gaussian's mean).
   absl::Status Act(const Observation& obs) override;
-  void Targets(double time_s, double* ctrl28) const override;
+  void Targets(double time_s, core::Span<double> ctrl) const override;
   double control_period_s() const override { return kWalkPolicyDt; }
   double physics_timestep_s() const override { return kWalkPhysicsDt; }
 
@@ -77,7 +77,7 @@ class WalkThenContactController : public Controller {
       : walker_(walker), contact_(contact) {}
   std::string name() const override { return walker_->name() + "+" + contact_->name(); }
   absl::Status Act(const Observation& obs) override;
-  void Targets(double time_s, double* ctrl28) const override;
+  void Targets(double time_s, core::Span<double> ctrl) const override;
   double control_period_s() const override { return active()->control_period_s(); }
   double physics_timestep_s() const override { return active()->physics_timestep_s(); }
   bool walking() const { return walking_; }

@@ -26,7 +26,7 @@ std::string WritePolicy(const std::string& name, const std::string& task, int ob
 std::unique_ptr<world::SimWorld> World() {
   world::ModelOptions o;
   o.timestep_s = kWalkPhysicsDt;
-  auto w = world::SimWorld::Create(core::SceneCatalog(), {world::AgentPlacement()}, o);
+  auto w = world::SimWorld::Create(core::SceneCatalog(), {world::AgentSpec()}, o);
   EXPECT_TRUE(w.ok()) << w.status();
   return *std::move(w);
 }
@@ -131,7 +131,7 @@ TEST(WalkPolicyController, WalksAroundATableOnTheWayToTheStandPoint) {
   scene.objects.push_back(*table);
   world::ModelOptions o;
   o.timestep_s = kWalkPhysicsDt;
-  auto world = world::SimWorld::Create(scene, {world::AgentPlacement()}, o);
+  auto world = world::SimWorld::Create(scene, {world::AgentSpec()}, o);
   ASSERT_TRUE(world.ok()) << world.status();
   auto c = WalkPolicyController::Load(WritePolicy("route", "walk", kWalkObsDim), world->get(), 0);
   ASSERT_TRUE(c.ok()) << c.status();

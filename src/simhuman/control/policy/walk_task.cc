@@ -38,8 +38,6 @@ enum J {
   kLAnkZ
 };
 
-double Wrap(double a) { return std::remainder(a, 2.0 * M_PI); }
-
 double Clamp(double x, double lo, double hi) { return std::min(hi, std::max(lo, x)); }
 
 // world vector -> heading frame (rotate by -yaw about z)
@@ -149,7 +147,7 @@ void WalkErrors(const mjData* d, const WalkIndex& ix, const WalkState& s, double
   double yaw;
   PelvisPose(d, ix, &pos, &yaw);
   *dist_m = (s.target_xy - pos.head<2>()).norm();
-  *yaw_err_rad = Wrap(s.target_yaw_rad - yaw);
+  *yaw_err_rad = core::WrapAngle(s.target_yaw_rad - yaw);
 }
 
 void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix, WalkState* s) {
@@ -158,7 +156,7 @@ void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix
   PelvisPose(d, ix, &pos, &yaw);
   Eigen::Vector2d delta = s->target_xy - pos.head<2>();
   double dist = delta.norm();
-  double yaw_err = Wrap(s->target_yaw_rad - yaw);
+  double yaw_err = core::WrapAngle(s->target_yaw_rad - yaw);
   if (!s->stepping && (dist > p.start_radius_m || std::abs(yaw_err) > p.start_yaw_rad)) {
     s->stepping = true;
     s->short_step = dist < p.short_step_m;
@@ -175,9 +173,9 @@ void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix
     double w = s->short_step
                    ? 0.0
                    : Clamp((dist - p.near_m) / std::max(1e-6, p.far_m - p.near_m), 0.0, 1.0);
-    double facing = s->target_yaw_rad + w * Wrap(bearing - s->target_yaw_rad);
+    double facing = s->target_yaw_rad + w * core::WrapAngle(bearing - s->target_yaw_rad);
     s->facing_rad = facing;
-    c.yaw_rate = Clamp(2.0 * Wrap(facing - yaw), -p.max_yaw_rate, p.max_yaw_rate);
+    c.yaw_rate = Clamp(2.0 * core::WrapAngle(facing - yaw), -p.max_yaw_rate, p.max_yaw_rate);
     double speed = p.vmax_mps * Clamp((dist - 0.05) / 1.0, 0.0, 1.0);
     Eigen::Vector3d local = ToHeading(Eigen::Vector3d(delta.x(), delta.y(), 0), yaw);
     Eigen::Vector2d dir = Eigen::Vector2d::Zero();
@@ -244,7 +242,7 @@ void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, 
   obs[k++] = static_cast<float>(local.x() * clip);
   obs[k++] = static_cast<float>(local.y() * clip);
   obs[k++] = static_cast<float>(std::min(dist, 10.0));
-  double yaw_err = Wrap(s.target_yaw_rad - yaw);
+  double yaw_err = core::WrapAngle(s.target_yaw_rad - yaw);
   obs[k++] = static_cast<float>(std::sin(yaw_err));
   obs[k++] = static_cast<float>(std::cos(yaw_err));
   obs[k++] = static_cast<float>(s.cmd.vx);

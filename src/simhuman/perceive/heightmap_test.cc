@@ -1,8 +1,8 @@
-#include "simhuman/control/controller.h"
+#include "simhuman/perceive/heightmap.h"
 
 #include <gtest/gtest.h>
 
-namespace simhuman::control {
+namespace simhuman::perceive {
 namespace {
 
 TEST(HeightmapTest, SeesATableInFrontAndTheFloorBehind) {
@@ -31,5 +31,24 @@ TEST(HeightmapTest, SeesATableInFrontAndTheFloorBehind) {
   EXPECT_NEAR(map[0 * n + n / 2], 0.75, 1e-6);
 }
 
+TEST(SensorRegistryTest, MakesTheHeightmapAndNamesBadInput) {
+  core::StatusOr<std::unique_ptr<Sensor>> s = MakeSensor("heightmap", {{"size", 8}});
+  ASSERT_TRUE(s.ok()) << s.status();
+  EXPECT_EQ((*s)->name(), "heightmap");
+  EXPECT_EQ((*s)->Config()["size"], 8);
+  EXPECT_DOUBLE_EQ((*s)->Config()["cell_m"].get<double>(), 0.1);
+
+  core::StatusOr<std::unique_ptr<Sensor>> unknown = MakeSensor("sonar", {});
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.status().message().find("valid sensors are: heightmap"), std::string::npos);
+
+  core::StatusOr<std::unique_ptr<Sensor>> bad = MakeSensor("heightmap", {{"size", 0.5}});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("/sensors/heightmap/size"), std::string::npos);
+  core::StatusOr<std::unique_ptr<Sensor>> extra = MakeSensor("heightmap", {{"fov", 1}});
+  ASSERT_FALSE(extra.ok());
+  EXPECT_NE(extra.status().message().find("'fov'"), std::string::npos);
+}
+
 }  // namespace
-}  // namespace simhuman::control
+}  // namespace simhuman::perceive

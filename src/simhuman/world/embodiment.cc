@@ -1,0 +1,57 @@
+#include "simhuman/world/embodiment.h"
+
+#include "simhuman/core/check.h"
+#include "simhuman/world/model_builder.h"
+
+namespace simhuman::world {
+
+const std::vector<Embodiment>& Embodiments() {
+  static const std::vector<Embodiment> kinds = {
+      {kDefaultAgentKind, "the humanoid: 28 body hinges, capsule hands", false, false},
+      {"humanoid_right_hand",
+       "the humanoid with a dexterous right hand (placeholder: fingers and thumb, 2 hinges)", true,
+       false},
+      {"humanoid_hands",
+       "the humanoid with two dexterous hands (placeholder: fingers and thumb, 2 hinges each)",
+       true, true},
+  };
+  return kinds;
+}
+
+std::vector<std::string> EmbodimentNames() {
+  std::vector<std::string> out;
+  for (const Embodiment& e : Embodiments()) out.push_back(e.name);
+  return out;
+}
+
+core::StatusOr<const Embodiment*> FindEmbodiment(std::string_view name) {
+  for (const Embodiment& e : Embodiments()) {
+    if (e.name == name) return &e;
+  }
+  return absl::InvalidArgumentError("unknown agent kind '" + std::string(name) +
+                                    "'; valid kinds are: " + core::JoinNames(EmbodimentNames()));
+}
+
+HumanoidSpec MakeHumanoidSpec(const Embodiment& kind, double scale, int index) {
+  HumanoidSpec spec;
+  spec.scale = scale;
+  spec.prefix = AgentPrefix(index);
+  if (index == 1) spec.rgba = "0.55 0.7 0.85 1";
+  if (index == 2) spec.rgba = "0.75 0.8 0.55 1";
+  spec.right_hand = kind.right_hand;
+  spec.left_hand = kind.left_hand;
+  return spec;
+}
+
+core::CatalogAgent MakeCatalogAgent(const Embodiment& kind, double scale) {
+  core::CatalogAgent agent;
+  agent.kind = kind.name;
+  agent.scale = scale;
+  agent.body_points.points.clear();
+  for (const BodyPointSite& p : HumanoidBodyPoints(MakeHumanoidSpec(kind, scale, 0))) {
+    agent.body_points.points.push_back(p.info);
+  }
+  return agent;
+}
+
+}  // namespace simhuman::world

@@ -1,0 +1,52 @@
+#pragma once
+/// Agent kinds (embodiments) as data: a registry of the bodies a scene's humans may have, and
+/// the world-level spec of one agent (kind, scale, placement). Everything else about an agent
+/// (actuator count, joints, body points) is read from its kind and the compiled model, never
+/// from a constant that assumes one body.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "simhuman/core/scene_catalog.h"
+#include "simhuman/core/status.h"
+#include "simhuman/world/humanoid.h"
+
+namespace simhuman::world {
+
+/// One agent kind: today the humanoid, with or without dexterous hands (world/humanoid.h).
+struct Embodiment {
+  std::string name;         ///< e.g. "humanoid", "humanoid_right_hand"
+  std::string description;  ///< one line, for `simhuman scenes` and error messages
+  bool right_hand = false;  ///< a dexterous right hand instead of the capsule hand
+  bool left_hand = false;
+};
+
+/// The name of the default kind: the humanoid with capsule hands.
+inline constexpr char kDefaultAgentKind[] = "humanoid";
+
+/// Every registered kind, the default first.
+const std::vector<Embodiment>& Embodiments();
+
+/// Names of the registered kinds, for "valid kinds are: ..." messages.
+std::vector<std::string> EmbodimentNames();
+
+/// The kind called `name` (exact); InvalidArgument naming it and the valid kinds when unknown.
+core::StatusOr<const Embodiment*> FindEmbodiment(std::string_view name);
+
+/// Where and what one agent is: its kind, size and starting placement (standing at (x, y),
+/// facing yaw_rad about +z).
+struct AgentSpec {
+  double x = 0, y = 0, yaw_rad = 0;
+  double scale = 1.0;
+  std::string kind = kDefaultAgentKind;
+};
+
+/// The humanoid generator's parameters for agent `index` of kind `kind` (prefix, colour, hands).
+/// `kind` must be registered.
+HumanoidSpec MakeHumanoidSpec(const Embodiment& kind, double scale, int index);
+
+/// The body points a plan may name for an agent of kind `kind`, and the agent as plans see it.
+core::CatalogAgent MakeCatalogAgent(const Embodiment& kind, double scale);
+
+}  // namespace simhuman::world
