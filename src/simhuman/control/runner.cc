@@ -33,187 +33,248 @@ double CommonTimestep(const std::vector<Controller*>& controllers, double world_
   return dt > 0 ? dt : world_dt;
 }
 
+namespace {
+
+// one episode's loop state; RunEpisode drives it step by step
+class EpisodeLoop {
+ public:
+  EpisodeLoop(world::SimWorld& world, const plan::ContactChain& chain,
+              const std::vector<Controller*>& controllers, const RunOptions& options,
+              Trajectory* trajectory)
+      : world_(world),
+        chain_(chain),
+        controllers_(controllers),
+        options_(options),
+        trajectory_(trajectory),
+        m_(world.model()),
+        d_(world.data()),
+        base_dt_(m_->opt.timestep),
+        catalog_(world.catalog()),
+        tracker_(chain, options.tracker),
+        n_agents_(world.num_agents()),
+        tasks_(n_agents_),
+        next_act_(n_agents_, 0.0),
+        ctrl_(n_agents_),
+        t_start_(d_->time) {
+    res_.steps_total = static_cast<int>(chain.steps.size());
+    if (trajectory_) {
+      *trajectory_ = Trajectory();
+      trajectory_->fps = options.record_fps;
+      trajectory_->nq = m_->nq;
+    }
+    for (int a = 0; a < n_agents_; ++a) ctrl_[a].resize(world.agent(a).num_actuators());
+    if (options.heightmap_size > 0) {
+      heightmap_ = std::make_unique<perceive::HeightmapSensor>(options.heightmap_size,
+                                                               options.heightmap_cell_m);
+    }
+  }
+
+  // runs physics steps until the episode ends
+  void Run() {
+    while (true) {
+      const double t = d_->time - t_start_;
+      const int step = std::min(tracker_.current_step(), res_.steps_total - 1);
+      if (step != task_step_) UpdateTasks(step);
+      const bool ticked = ControlTicks(step);
+      if (ended()) break;
+      if (ticked && (Track(t, step), ended())) break;
+      Record(t, step);
+      if (ActuateAndStep(), ended()) break;
+    }
+    world_.mutable_model()->opt.timestep = base_dt_;
+  }
+
+  // the result, and the last frame and the end event
+  EpisodeResult Result(std::chrono::steady_clock::time_point wall0) {
+    if (trajectory_ && options_.record) {
+      trajectory_->time_s.push_back(d_->time - t_start_);
+      trajectory_->qpos.emplace_back(d_->qpos, d_->qpos + m_->nq);
+      trajectory_->step_index.push_back(tracker_.current_step());
+    }
+    res_.success = tracker_.succeeded();
+    res_.steps_completed = tracker_.steps_completed();
+    auto ce = tracker_.contact_error_m();
+    res_.contact_error_m = ce ? *ce : -1;
+    res_.step_completion_s = tracker_.completion_times_s();
+    for (const plan::StepRecord& s : tracker_.records()) res_.pair_errors_m.push_back(s.errors_m);
+    res_.sim_time_s = d_->time - t_start_;
+    res_.wall_time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    if (options_.progress) {
+      ProgressEvent e;
+      e.ended = true;
+      e.step = tracker_.current_step();
+      e.steps_total = res_.steps_total;
+      e.time_s = res_.sim_time_s;
+      options_.progress(e);
+    }
+    return res_;
+  }
+
+ private:
+  bool ended() const { return !res_.end_reason.empty(); }
+  void Finish(const std::string& reason) {
+    tracker_.Finish();
+    res_.end_reason = reason;
+  }
+
+  // every agent's task for plan step `step` (a get-close step adapted to the step after it)
+  void UpdateTasks(int step) {
+    for (int a = 0; a < n_agents_; ++a) {
+      const double scale = world_.agent(a).scale;
+      tasks_[a] = BuildStepTask(chain_.steps[step], catalog_, a, scale, options_.pair);
+      if (tasks_[a].get_close && step + 1 < res_.steps_total) {
+        StepTask next = BuildStepTask(chain_.steps[step + 1], catalog_, a, scale, options_.pair);
+        RefineApproach(next, scale, &tasks_[a]);
+      }
+    }
+    task_step_ = step;
+  }
+
+  // calls Act() of every agent whose control tick is due; true if any was
+  bool ControlTicks(int step) {
+    const double t = d_->time - t_start_;
+    bool ticked = false;
+    for (int a = 0; a < n_agents_; ++a) {
+      if (t + 1e-9 < next_act_[a]) continue;
+      ticked = true;
+      Observation obs;
+      if (!Observe(a, step, &obs)) break;
+      absl::Status st = controllers_[a]->Act(obs);
+      if (!st.ok()) {
+        Finish("controller: " + std::string(st.message()));
+        break;
+      }
+      next_act_[a] += controllers_[a]->control_period_s();
+    }
+    return ticked;
+  }
+
+  // agent `a`'s observation; false (the episode ended) when a sensor failed
+  bool Observe(int a, int step, Observation* obs) {
+    obs->time_s = d_->time;
+    obs->agent = a;
+    obs->world = &world_;
+    obs->data = d_;
+    obs->step_index = step;
+    obs->task = &tasks_[a];
+    world_.AllBodyPoints(d_, a, &obs->body_points);
+    if (heightmap_) {
+      perceive::SensorInput in{&world_, d_, &catalog_, a, d_->time};
+      perceive::SensorReading reading;
+      absl::Status st = heightmap_->Read(in, &reading);
+      if (!st.ok()) {
+        Finish("sensor: " + std::string(st.message()));
+        return false;
+      }
+      obs->heightmap = std::move(reading.values);
+      obs->heightmap_size = heightmap_->size();
+      obs->heightmap_cell_m = heightmap_->cell_m();
+    }
+    for (const ContactTerm& term : tasks_[a].terms) {
+      const Eigen::Vector3d& p = obs->body_points[static_cast<int>(term.joint)];
+      obs->contact_offsets.push_back(term.Nearest(p, obs->body_points) - p);
+    }
+    return true;
+  }
+
+  // plan tracking at a control tick: step completion, progress, settling, timeout, falls
+  void Track(double t, int step) {
+    world_.SyncCatalog(d_, &catalog_);
+    auto pts = AllBodyPoints(world_, d_);
+    plan::StepEval ev = plan::EvaluateStep(chain_.steps[step], catalog_, pts, options_.pair);
+    bool was_done = tracker_.done();
+    if (!was_done) tracker_.Update(t, ev);
+    if (!was_done && (tracker_.current_step() != step || tracker_.finished())) {
+      Progress(t, step, ev);
+    }
+    if (tracker_.done() && settle_until_ < 0) {
+      settle_until_ = t + options_.settle_s;
+      if (options_.settle_s <= 0) return Finish("completed");
+    }
+    if (settle_until_ >= 0 && t >= settle_until_) return Finish("completed");
+    if (tracker_.finished() && !tracker_.done()) return Finish("timeout");
+    // falls: each agent's head against its own step's posture
+    for (int a = 0; a < n_agents_; ++a) {
+      if (IsFall(tasks_[a].posture, pts[a].at(core::BodyJoint::kHead).z(), world_.agent(a).scale,
+                 options_)) {
+        res_.fell = true;
+        Finish(tracker_.done() ? "completed" : "fell");
+      }
+    }
+  }
+
+  // reports a step that completed (or the plan that ran out of time)
+  void Progress(double t, int step, const plan::StepEval& ev) const {
+    ProgressEvent e;
+    e.step = step;
+    e.steps_total = res_.steps_total;
+    e.time_s = t;
+    e.completed = tracker_.current_step() != step;
+    double dist = 0;
+    int n = 0;
+    for (const auto& pe : ev.pairs) {
+      dist += pe.distance_m;
+      ++n;
+    }
+    e.distance_m = n ? dist / n : 0;
+    e.label = chain_.steps[step].label;
+    if (options_.progress) options_.progress(e);
+  }
+
+  void Record(double t, int step) {
+    if (!trajectory_ || !options_.record || t + 1e-9 < next_frame_) return;
+    trajectory_->time_s.push_back(t);
+    trajectory_->qpos.emplace_back(d_->qpos, d_->qpos + m_->nq);
+    trajectory_->step_index.push_back(step);
+    next_frame_ += 1.0 / options_.record_fps;
+  }
+
+  // every agent's controller writes its actuator span; one physics step with a health check
+  void ActuateAndStep() {
+    for (int a = 0; a < n_agents_; ++a) {
+      const world::AgentIndex& ix = world_.agent(a);
+      std::vector<double>& u = ctrl_[a];
+      for (int j = 0; j < ix.num_actuators(); ++j) u[j] = d_->ctrl[ix.actuator[j]];
+      controllers_[a]->Targets(d_->time, u);
+      for (int j = 0; j < ix.num_actuators(); ++j) d_->ctrl[ix.actuator[j]] = u[j];
+    }
+    world_.mutable_model()->opt.timestep = CommonTimestep(controllers_, base_dt_);
+    world::HealthReport h = world_.Step();
+    if (!h.ok()) Finish(h.reason);
+  }
+
+  world::SimWorld& world_;
+  const plan::ContactChain& chain_;
+  const std::vector<Controller*>& controllers_;
+  const RunOptions& options_;
+  Trajectory* trajectory_;
+  const mjModel* m_;
+  mjData* d_;
+  const double base_dt_;        // the world's own timestep, restored at the end
+  core::SceneCatalog catalog_;  // movable poses synced each tick
+  plan::StepTracker tracker_;
+  const int n_agents_;
+  std::vector<StepTask> tasks_;
+  std::vector<double> next_act_;
+  std::vector<std::vector<double>> ctrl_;  // each agent's span of the model's controls
+  const double t_start_;
+  int task_step_ = -1;
+  double next_frame_ = 0;
+  double settle_until_ = -1;  // >= 0 once all steps are done
+  std::unique_ptr<perceive::HeightmapSensor> heightmap_;
+  EpisodeResult res_;
+};
+
+}  // namespace
+
 EpisodeResult RunEpisode(world::SimWorld& world, const plan::ContactChain& chain,
                          const std::vector<Controller*>& controllers, const RunOptions& options,
                          Trajectory* trajectory) {
   auto wall0 = std::chrono::steady_clock::now();
-  EpisodeResult res;
-  res.steps_total = static_cast<int>(chain.steps.size());
-  const mjModel* m = world.model();
-  mjData* d = world.data();
-  // controllers may ask for their own physics timestep (policies run at their training rate)
-  const double base_dt = m->opt.timestep;
-  core::SceneCatalog catalog = world.catalog();  // movable poses synced each tick
-  plan::StepTracker tracker(chain, options.tracker);
-  const int n_agents = world.num_agents();
-  std::vector<StepTask> tasks(n_agents);
-  std::vector<double> next_act(n_agents, 0.0);
-  int task_step = -1;
-  double next_frame = 0;
-  if (trajectory) {
-    *trajectory = Trajectory();
-    trajectory->fps = options.record_fps;
-    trajectory->nq = m->nq;
-  }
-  // each agent's span of the model's controls, handed to its controller every physics step
-  std::vector<std::vector<double>> ctrl(n_agents);
-  for (int a = 0; a < n_agents; ++a) ctrl[a].resize(world.agent(a).num_actuators());
-  const double t_start = d->time;
-  double settle_until = -1;  // >= 0 once all steps are done
-  std::unique_ptr<perceive::HeightmapSensor> heightmap;
-  if (options.heightmap_size > 0) {
-    heightmap = std::make_unique<perceive::HeightmapSensor>(options.heightmap_size,
-                                                            options.heightmap_cell_m);
-  }
-  auto finish = [&](const std::string& reason) {
-    tracker.Finish();
-    res.end_reason = reason;
-  };
-
-  while (true) {
-    double t = d->time - t_start;
-    int step = std::min(tracker.current_step(), res.steps_total - 1);
-    if (step != task_step) {
-      for (int a = 0; a < n_agents; ++a) {
-        tasks[a] = BuildStepTask(chain.steps[step], catalog, a, world.agent(a).scale, options.pair);
-        if (tasks[a].get_close && step + 1 < res.steps_total) {
-          StepTask next =
-              BuildStepTask(chain.steps[step + 1], catalog, a, world.agent(a).scale, options.pair);
-          RefineApproach(next, world.agent(a).scale, &tasks[a]);
-        }
-      }
-      task_step = step;
-    }
-    // control ticks
-    bool ticked = false;
-    for (int a = 0; a < n_agents; ++a) {
-      if (t + 1e-9 < next_act[a]) continue;
-      ticked = true;
-      Observation obs;
-      obs.time_s = d->time;
-      obs.agent = a;
-      obs.world = &world;
-      obs.data = d;
-      obs.step_index = step;
-      obs.task = &tasks[a];
-      world.AllBodyPoints(d, a, &obs.body_points);
-      if (heightmap) {
-        perceive::SensorInput in{&world, d, &catalog, a, d->time};
-        perceive::SensorReading reading;
-        absl::Status st = heightmap->Read(in, &reading);
-        if (!st.ok()) {
-          finish("sensor: " + std::string(st.message()));
-          break;
-        }
-        obs.heightmap = std::move(reading.values);
-        obs.heightmap_size = heightmap->size();
-        obs.heightmap_cell_m = heightmap->cell_m();
-      }
-      for (const ContactTerm& term : tasks[a].terms) {
-        const Eigen::Vector3d& p = obs.body_points[static_cast<int>(term.joint)];
-        obs.contact_offsets.push_back(term.Nearest(p, obs.body_points) - p);
-      }
-      absl::Status st = controllers[a]->Act(obs);
-      if (!st.ok()) {
-        finish("controller: " + std::string(st.message()));
-        break;
-      }
-      next_act[a] += controllers[a]->control_period_s();
-    }
-    if (!res.end_reason.empty()) break;
-    // plan tracking at control ticks
-    if (ticked) {
-      world.SyncCatalog(d, &catalog);
-      auto pts = AllBodyPoints(world, d);
-      plan::StepEval ev = plan::EvaluateStep(chain.steps[step], catalog, pts, options.pair);
-      bool was_done = tracker.done();
-      if (!was_done) tracker.Update(t, ev);
-      if (!was_done && (tracker.current_step() != step || tracker.finished())) {
-        ProgressEvent e;
-        e.step = step;
-        e.steps_total = res.steps_total;
-        e.time_s = t;
-        e.completed = tracker.current_step() != step;
-        double dist = 0;
-        int n = 0;
-        for (const auto& pe : ev.pairs) {
-          dist += pe.distance_m;
-          ++n;
-        }
-        e.distance_m = n ? dist / n : 0;
-        e.label = chain.steps[step].label;
-        if (options.progress) options.progress(e);
-      }
-      if (tracker.done() && settle_until < 0) {
-        settle_until = t + options.settle_s;
-        if (options.settle_s <= 0) {
-          finish("completed");
-          break;
-        }
-      }
-      if (settle_until >= 0 && t >= settle_until) {
-        finish("completed");
-        break;
-      }
-      if (tracker.finished() && !tracker.done()) {
-        finish("timeout");
-        break;
-      }
-      // falls: each agent's head against its own step's posture
-      for (int a = 0; a < n_agents; ++a) {
-        if (IsFall(tasks[a].posture, pts[a].at(core::BodyJoint::kHead).z(), world.agent(a).scale,
-                   options)) {
-          res.fell = true;
-          finish(tracker.done() ? "completed" : "fell");
-        }
-      }
-      if (!res.end_reason.empty()) break;
-    }
-    // record
-    if (trajectory && options.record && t + 1e-9 >= next_frame) {
-      trajectory->time_s.push_back(t);
-      trajectory->qpos.emplace_back(d->qpos, d->qpos + m->nq);
-      trajectory->step_index.push_back(step);
-      next_frame += 1.0 / options.record_fps;
-    }
-    // actuate and step
-    for (int a = 0; a < n_agents; ++a) {
-      const world::AgentIndex& ix = world.agent(a);
-      std::vector<double>& u = ctrl[a];
-      for (int j = 0; j < ix.num_actuators(); ++j) u[j] = d->ctrl[ix.actuator[j]];
-      controllers[a]->Targets(d->time, u);
-      for (int j = 0; j < ix.num_actuators(); ++j) d->ctrl[ix.actuator[j]] = u[j];
-    }
-    world.mutable_model()->opt.timestep = CommonTimestep(controllers, base_dt);
-    world::HealthReport h = world.Step();
-    if (!h.ok()) {
-      finish(h.reason);
-      break;
-    }
-  }
-  world.mutable_model()->opt.timestep = base_dt;
-  if (trajectory && options.record) {
-    trajectory->time_s.push_back(d->time - t_start);
-    trajectory->qpos.emplace_back(d->qpos, d->qpos + m->nq);
-    trajectory->step_index.push_back(tracker.current_step());
-  }
-  res.success = tracker.succeeded();
-  res.steps_completed = tracker.steps_completed();
-  auto ce = tracker.contact_error_m();
-  res.contact_error_m = ce ? *ce : -1;
-  res.step_completion_s = tracker.completion_times_s();
-  for (const plan::StepRecord& s : tracker.records()) res.pair_errors_m.push_back(s.errors_m);
-  res.sim_time_s = d->time - t_start;
-  res.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  if (options.progress) {
-    ProgressEvent e;
-    e.ended = true;
-    e.step = tracker.current_step();
-    e.steps_total = res.steps_total;
-    e.time_s = res.sim_time_s;
-    options.progress(e);
-  }
-  return res;
+  EpisodeLoop loop(world, chain, controllers, options, trajectory);
+  loop.Run();
+  return loop.Result(wall0);
 }
 
 }  // namespace simhuman::control
