@@ -3,6 +3,9 @@
 /// entropy bonus, Adam with a linearly decaying learning rate, minibatch epochs, gradient-norm
 /// clipping, running observation normalization, NaN guards, atomic checkpoints and resume.
 /// This header is torch-free (the trainer is a pimpl); only app/ drives it and prints.
+/// The stages are shared with MappoTrainer (learn/mappo.h): collection (learn/ppo_rollout.h),
+/// GAE (learn/gae.h), the policy/value update and non-finite guard (learn/ppo_update.h), the
+/// AMP stage (learn/ppo_amp.h) and checkpoint pieces (learn/ppo_checkpoint.h).
 ///
 /// AMP: with `amp_clips` set, the task's AMP features (VecTask::AmpClipFeatures) of the clips
 /// are the expert data of a discriminator (learn/amp.h) trained after each PPO update on
