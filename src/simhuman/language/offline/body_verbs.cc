@@ -24,6 +24,7 @@ std::pair<std::string, Direction> ReachPart(const CatalogObject& o) {
   return {o.parts.empty() ? std::string() : o.parts[0].name, Direction::kNone};
 }
 
+// the direction of a touch on a named part: its outward side, up for top-like parts
 Direction PartDirection(const std::string& part) {
   if (part == "screen" || part == "back surface" || part == "front side") return Direction::kFront;
   if (part == "left side") return Direction::kLeft;
