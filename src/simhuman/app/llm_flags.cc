@@ -7,11 +7,12 @@
 namespace simhuman::app {
 namespace {
 
-// LlmPlannerOptions field -> the flag that sets it, to name the flag in errors
+// LlmPlannerOptions field (its path in Validate() messages) -> the flag that sets it, to name the
+// flag in errors
 constexpr std::array<std::pair<std::string_view, std::string_view>, 4> kFieldFlags = {{
-    {"url", "--llm-url"},
-    {"model", "--llm-model"},
-    {"timeout_s", "--llm-timeout"},
+    {"chat.url", "--llm-url"},
+    {"chat.model", "--llm-model"},
+    {"chat.timeout_s", "--llm-timeout"},
     {"api_key_env", "--llm-key-env"},
 }};
 
@@ -39,9 +40,9 @@ void AddLlmFlags(CLI::App& command, LlmFlags& flags) {
 core::StatusOr<language::LlmPlannerOptions> LlmOptionsFromFlags(
     const LlmFlags& flags, language::Planner* fallback_planner) {
   language::LlmPlannerOptions options;
-  options.url = flags.url;
-  options.model = flags.model;
-  options.timeout_s = flags.timeout_s;
+  options.chat.url = flags.url;
+  options.chat.model = flags.model;
+  options.chat.timeout_s = flags.timeout_s;
   options.api_key_env = flags.key_env;
   if (flags.fallback) {
     if (fallback_planner == nullptr) {

@@ -13,9 +13,9 @@ namespace simhuman::app {
 
 /// Values of the LLM flags; defaults are LlmPlannerOptions' defaults.
 struct LlmFlags {
-  std::string url = language::LlmPlannerOptions().url;         ///< --llm-url
-  std::string model;                                           ///< --llm-model (required with llm)
-  double timeout_s = language::LlmPlannerOptions().timeout_s;  ///< --llm-timeout, seconds
+  std::string url = language::LlmPlannerOptions().chat.url;  ///< --llm-url
+  std::string model;                                         ///< --llm-model (required with llm)
+  double timeout_s = language::LlmPlannerOptions().chat.timeout_s;  ///< --llm-timeout, seconds
   std::string key_env = language::LlmPlannerOptions().api_key_env;  ///< --llm-key-env
   bool fallback = false;  ///< --llm-fallback: use the offline planner when the LLM fails
 };

@@ -45,9 +45,9 @@ TEST(LlmFlagsTest, FlagsBecomeOptions) {
              "12.5", "--llm-key-env", "OLLAMA_KEY", "--llm-fallback"}),
       &offline);
   ASSERT_TRUE(o.ok()) << o.status();
-  EXPECT_EQ(o->url, "http://localhost:11434/v1");
-  EXPECT_EQ(o->model, "qwen2.5:7b");
-  EXPECT_EQ(o->timeout_s, 12.5);
+  EXPECT_EQ(o->chat.url, "http://localhost:11434/v1");
+  EXPECT_EQ(o->chat.model, "qwen2.5:7b");
+  EXPECT_EQ(o->chat.timeout_s, 12.5);
   EXPECT_EQ(o->api_key_env, "OLLAMA_KEY");
   EXPECT_EQ(o->fallback, &offline);
   EXPECT_EQ(o->max_repair_rounds, 2);
@@ -57,7 +57,7 @@ TEST(LlmFlagsTest, DefaultsNeedOnlyAModel) {
   core::StatusOr<language::LlmPlannerOptions> o =
       LlmOptionsFromFlags(Parse({"--llm-model", "m"}), nullptr);
   ASSERT_TRUE(o.ok()) << o.status();
-  EXPECT_EQ(o->url, "http://127.0.0.1:8080/v1");
+  EXPECT_EQ(o->chat.url, "http://127.0.0.1:8080/v1");
   EXPECT_EQ(o->api_key_env, "SIMHUMAN_LLM_API_KEY");
   EXPECT_EQ(o->fallback, nullptr);
 }

@@ -1,6 +1,6 @@
 #include "simhuman/core/body_joint.h"
 
-#include <cctype>
+#include "simhuman/core/scene_catalog.h"
 
 namespace simhuman::core {
 namespace {
@@ -9,13 +9,9 @@ constexpr std::array<std::string_view, kNumBodyJoints> kNames = {
     "left hand", "right shoulder", "right elbow", "right hand",    "left hip",
     "left knee", "left foot",      "right hip",   "right knee",    "right foot"};
 
-// lower case, '_' read as ' '
+// the one canonical form of names (scene_catalog.h), digits kept: "Right_Palm" -> "right palm"
 std::string Canonical(std::string_view name) {
-  std::string norm;
-  for (char c : name) {
-    norm += (c == '_') ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  }
-  return norm;
+  return NormalizeName(name, TrailingDigits::kKeep);
 }
 }  // namespace
 

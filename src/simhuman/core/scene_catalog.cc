@@ -4,12 +4,14 @@
 
 namespace simhuman::core {
 
-std::string NormalizeName(std::string_view name) {
+std::string NormalizeName(std::string_view name, TrailingDigits digits) {
   std::string s;
   for (char c : name) {
     s += (c == '_') ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   }
-  while (!s.empty() && (std::isdigit(static_cast<unsigned char>(s.back())) || s.back() == ' ')) {
+  const bool drop_digits = digits == TrailingDigits::kDrop;
+  while (!s.empty() &&
+         (s.back() == ' ' || (drop_digits && std::isdigit(static_cast<unsigned char>(s.back()))))) {
     s.pop_back();
   }
   size_t b = s.find_first_not_of(' ');

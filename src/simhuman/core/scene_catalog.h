@@ -63,8 +63,16 @@ struct SceneCatalog {
   std::vector<std::string> ObjectIds() const;
 };
 
-/// Normalizes a part or object name for matching: lower case, '_' -> ' ', trailing digits and
-/// surrounding spaces removed ("Seat_Soft_Surface42" -> "seat soft surface").
-std::string NormalizeName(std::string_view name);
+/// What NormalizeName() does with digits at the end of a name.
+enum class TrailingDigits {
+  kDrop,  ///< removed: ScenePlan numbers its parts ("mattress25" matches "mattress")
+  kKeep,  ///< kept: exact names ("arm sofa style44" differs from "arm sofa style48"), enum values
+};
+
+/// The one canonical form of a part, object, joint or enum name for matching: lower case,
+/// '_' -> ' ', surrounding spaces removed, and with TrailingDigits::kDrop trailing digits too
+/// (with any spaces among them): "Seat_Soft_Surface42" -> "seat soft surface", or
+/// "seat soft surface42" with kKeep. Only ' ' counts as a space.
+std::string NormalizeName(std::string_view name, TrailingDigits digits = TrailingDigits::kDrop);
 
 }  // namespace simhuman::core

@@ -49,17 +49,16 @@ bool IsEmptyPlan(const nlohmann::json& j) {
 }  // namespace
 
 core::Status LlmPlannerOptions::Validate() const {
-  ChatClientOptions c;
-  c.url = url;
-  c.model = model;
-  c.timeout_s = timeout_s;
-  c.max_retries = max_retries;
-  c.backoff_s = backoff_s;
-  c.max_backoff_s = max_backoff_s;
-  c.max_reply_bytes = max_reply_bytes;
-  c.temperature = temperature;
-  c.max_tokens = max_tokens;
-  SH_RETURN_IF_ERROR(c.Validate());
+  // the chat client names its own field ("timeout_s: ..."); the path from here adds "chat."
+  if (core::Status s = chat.Validate(); !s.ok()) {
+    return core::Status(s.code(), "chat." + std::string(s.message()));
+  }
+  if (!chat.api_key.empty()) {
+    return absl::InvalidArgumentError(
+        "chat.api_key: must be empty; put the key in the environment variable named by "
+        "api_key_env (now '" +
+        Preview(api_key_env) + "')");
+  }
   if (!IsValidEnvName(api_key_env)) {
     return absl::InvalidArgumentError("api_key_env: '" + Preview(api_key_env) +
                                       "' is not an environment variable name (letters, digits "
@@ -145,16 +144,7 @@ core::StatusOr<PlanResult> LlmPlanner::Plan(std::string_view command, const Plan
 core::StatusOr<PlanResult> LlmPlanner::PlanWithLlm(std::string_view command,
                                                    const PlanContext& context) {
   SH_ASSIGN_OR_RETURN(std::vector<ChatMessage> messages, BuildMessages(command, context));
-  ChatClientOptions copts;
-  copts.url = options_.url;
-  copts.model = options_.model;
-  copts.timeout_s = options_.timeout_s;
-  copts.max_retries = options_.max_retries;
-  copts.backoff_s = options_.backoff_s;
-  copts.max_backoff_s = options_.max_backoff_s;
-  copts.max_reply_bytes = options_.max_reply_bytes;
-  copts.temperature = options_.temperature;
-  copts.max_tokens = options_.max_tokens;
+  ChatClientOptions copts = options_.chat;
   if (!options_.api_key_env.empty()) {
     if (const char* key = std::getenv(options_.api_key_env.c_str())) copts.api_key = key;
   }
@@ -182,7 +172,7 @@ core::StatusOr<PlanResult> LlmPlanner::PlanWithLlm(std::string_view command,
         if (error.ok()) {
           PlanResult result;
           result.chain = *std::move(chain);
-          result.chain.source = "llm:" + options_.model;
+          result.chain.source = "llm:" + options_.chat.model;
           for (const plan::ContactStep& step : result.chain.steps) {
             result.explanation.push_back(ExplainStep(step));
           }

@@ -19,21 +19,16 @@ namespace simhuman::language {
 
 /// Settings of LlmPlanner. Validate() names the field at fault and its valid range.
 struct LlmPlannerOptions {
-  /// Base URL of the API; "/chat/completions" is appended.
-  std::string url = "http://127.0.0.1:8080/v1";
-  std::string model;  ///< model name sent to the server (required)
+  /// The chat client's settings: URL ("/chat/completions" is appended), model (required),
+  /// per-attempt timeout, retries and backoff, reply size cap, temperature (0 for repeatable
+  /// plans) and token budget. `chat.api_key` must stay empty: the key comes from the variable
+  /// named by `api_key_env`, so it is never kept in (or written out with) the options.
+  ChatClientOptions chat;
   /// Name of the environment variable holding the API key (read at each Plan() call; unset or
   /// empty: no Authorization header). The key is never logged or put in a status message.
   std::string api_key_env = "SIMHUMAN_LLM_API_KEY";
-  double timeout_s = 60.0;              ///< per HTTP attempt: connect, send and the whole reply
-  int max_retries = 2;                  ///< retries after connection errors, 429 and 5xx; 0..10
-  double backoff_s = 0.5;               ///< first wait between retries; doubles each retry
-  double max_backoff_s = 8.0;           ///< cap of every wait, including a server's Retry-After
-  int max_repair_rounds = 2;            ///< rejected replies sent back with their errors; 0..5
-  size_t max_reply_bytes = 256 * 1024;  ///< a longer HTTP reply body is an error
-  size_t max_command_bytes = 2000;      ///< a longer command is InvalidArgument
-  double temperature = 0.0;             ///< 0..2; 0 for repeatable plans
-  int max_tokens = 2048;                ///< reply token budget sent to the server; 0: not sent
+  int max_repair_rounds = 2;        ///< rejected replies sent back with their errors; 0..5
+  size_t max_command_bytes = 2000;  ///< a longer command is InvalidArgument
   /// Folder with system.txt, user.txt and repair.txt.
   std::string template_dir = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/prompts";
   /// Planner used when the LLM fails (backend error, or no valid plan after the repair rounds);
@@ -41,7 +36,8 @@ struct LlmPlannerOptions {
   /// (an over-long command, a missing scene) never fall back.
   Planner* fallback = nullptr;
 
-  /// OK, or InvalidArgument starting with the field name ("timeout_s: ...").
+  /// OK, or InvalidArgument starting with the field name: "chat.<field>: ..." for the chat
+  /// client's settings (ChatClientOptions::Validate()), else e.g. "max_repair_rounds: ...".
   core::Status Validate() const;
 };
 

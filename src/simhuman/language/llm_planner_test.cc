@@ -72,13 +72,13 @@ class LlmPlannerTest : public ::testing::Test {
     unsetenv(kKeyEnv);
     scene_ = plan::fixtures::MakeTestScene();
     context_.scene = &scene_;
-    options_.url = server_.url();
-    options_.model = "test-model";
+    options_.chat.url = server_.url();
+    options_.chat.model = "test-model";
     options_.api_key_env = kKeyEnv;
-    options_.timeout_s = 0.3;
-    options_.max_retries = 2;
-    options_.backoff_s = 0.01;
-    options_.max_backoff_s = 0.05;
+    options_.chat.timeout_s = 0.3;
+    options_.chat.max_retries = 2;
+    options_.chat.backoff_s = 0.01;
+    options_.chat.max_backoff_s = 0.05;
   }
   void TearDown() override { unsetenv(kKeyEnv); }
 
@@ -199,7 +199,7 @@ TEST_F(LlmPlannerTest, SlowReplyTimesOut) {
   FakeReply slow = FakeReply::Completion(kGoodPlan);
   slow.delay_s = 5.0;
   server_.Push(slow);
-  options_.timeout_s = 0.15;
+  options_.chat.timeout_s = 0.15;
   auto start = std::chrono::steady_clock::now();
   core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
   ASSERT_FALSE(r.ok());
@@ -214,7 +214,7 @@ TEST_F(LlmPlannerTest, TrickledReplyHitsTheWholeReplyDeadline) {
   FakeReply trickle = FakeReply::Completion(kGoodPlan);
   trickle.trickle_s = 0.02;
   server_.Push(trickle);
-  options_.timeout_s = 0.2;
+  options_.chat.timeout_s = 0.2;
   auto start = std::chrono::steady_clock::now();
   core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
   ASSERT_FALSE(r.ok());
@@ -275,7 +275,7 @@ TEST_F(LlmPlannerTest, ClientErrorIsNotRetried) {
 }
 
 TEST_F(LlmPlannerTest, OversizedReplyIsRejected) {
-  options_.max_reply_bytes = 4096;
+  options_.chat.max_reply_bytes = 4096;
   server_.Push(FakeReply::Completion(std::string(kGoodPlan) + std::string(10000, ' ')));
   core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
   ASSERT_FALSE(r.ok());
@@ -297,7 +297,7 @@ TEST_F(LlmPlannerTest, ConnectionRefusedIsUnavailable) {
     FakeChatServer gone;
     port = gone.port();
   }
-  options_.url = "http://127.0.0.1:" + std::to_string(port) + "/v1";
+  options_.chat.url = "http://127.0.0.1:" + std::to_string(port) + "/v1";
   auto start = std::chrono::steady_clock::now();
   core::StatusOr<PlanResult> r = PlanCommand("sit on the chair");
   ASSERT_FALSE(r.ok());
@@ -430,7 +430,7 @@ TEST_F(LlmPlannerTest, EmptyPlanMeansTheModelFoundNoPlan) {
 TEST_F(LlmPlannerTest, FallbackPlannerIsUsedWhenTheLlmFails) {
   StubPlanner stub;
   options_.fallback = &stub;
-  options_.max_retries = 0;
+  options_.chat.max_retries = 0;
   server_.Push(FakeReply::Error(500, "boom"));
   core::StatusOr<PlanResult> r = PlanCommand("go to the chair");
   ASSERT_TRUE(r.ok()) << r.status();
@@ -468,21 +468,21 @@ TEST(FuzzCorpusTest, SeedsAreGroundedPlans) {
 
 TEST(LlmPlannerOptionsTest, ValidateNamesTheField) {
   LlmPlannerOptions o;
-  o.model = "m";
+  o.chat.model = "m";
   EXPECT_TRUE(o.Validate().ok()) << o.Validate();
   auto message = [](LlmPlannerOptions bad) { return std::string(bad.Validate().message()); };
   LlmPlannerOptions bad = o;
-  bad.url = "ftp://x";
-  EXPECT_THAT(message(bad), StartsWith("url: invalid URL 'ftp://x'"));
+  bad.chat.url = "ftp://x";
+  EXPECT_THAT(message(bad), StartsWith("chat.url: invalid URL 'ftp://x'"));
   bad = o;
-  bad.model = "";
-  EXPECT_THAT(message(bad), StartsWith("model:"));
+  bad.chat.model = "";
+  EXPECT_THAT(message(bad), StartsWith("chat.model:"));
   bad = o;
-  bad.timeout_s = 0;
-  EXPECT_THAT(message(bad), StartsWith("timeout_s: must be in (0, 3600]"));
+  bad.chat.timeout_s = 0;
+  EXPECT_THAT(message(bad), StartsWith("chat.timeout_s: must be in (0, 3600]"));
   bad = o;
-  bad.max_retries = 11;
-  EXPECT_THAT(message(bad), StartsWith("max_retries:"));
+  bad.chat.max_retries = 11;
+  EXPECT_THAT(message(bad), StartsWith("chat.max_retries:"));
   bad = o;
   bad.max_repair_rounds = -1;
   EXPECT_THAT(message(bad), StartsWith("max_repair_rounds:"));
@@ -490,16 +490,21 @@ TEST(LlmPlannerOptionsTest, ValidateNamesTheField) {
   bad.api_key_env = "MY KEY";
   EXPECT_THAT(message(bad), StartsWith("api_key_env:"));
   bad = o;
-  bad.max_reply_bytes = 10;
-  EXPECT_THAT(message(bad), StartsWith("max_reply_bytes:"));
+  bad.chat.max_reply_bytes = 10;
+  EXPECT_THAT(message(bad), StartsWith("chat.max_reply_bytes:"));
   bad = o;
-  bad.temperature = 3;
-  EXPECT_THAT(message(bad), StartsWith("temperature:"));
+  bad.chat.temperature = 3;
+  EXPECT_THAT(message(bad), StartsWith("chat.temperature:"));
+  // the key belongs in the environment, and a key given anyway is not echoed
+  bad = o;
+  bad.chat.api_key = "sk-not-here";
+  EXPECT_THAT(message(bad), StartsWith("chat.api_key: must be empty"));
+  EXPECT_THAT(message(bad), Not(HasSubstr("sk-not-here")));
 }
 
 TEST(LlmPlannerOptionsTest, MissingTemplatesAreNamed) {
   LlmPlannerOptions o;
-  o.model = "m";
+  o.chat.model = "m";
   o.template_dir = "/nonexistent/prompts";
   core::StatusOr<std::unique_ptr<LlmPlanner>> p = LlmPlanner::Create(o);
   ASSERT_FALSE(p.ok());

@@ -1,10 +1,10 @@
 #include "simhuman/plan/contact_chain.h"
 
 #include <array>
-#include <cctype>
 #include <utility>
 
 #include "simhuman/core/json_io.h"
+#include "simhuman/core/scene_catalog.h"
 
 namespace simhuman::plan {
 namespace {
@@ -18,19 +18,9 @@ constexpr std::string_view kChainOfContactsKey = "chain of contacts";
 constexpr std::array<std::string_view, 5> kTupleFields = {"object", "part", "joint", "contact",
                                                           "direction"};
 
-// lower case, '_' -> ' ', surrounding spaces removed
-std::string Canonical(std::string_view name) {
-  std::string s;
-  for (char c : name) {
-    s += (c == '_') ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  }
-  size_t b = s.find_first_not_of(' ');
-  if (b == std::string::npos) return {};
-  size_t e = s.find_last_not_of(' ');
-  return s.substr(b, e - b + 1);
+bool IsNone(std::string_view name) {
+  return core::NormalizeName(name, core::TrailingDigits::kKeep) == kNoneName;
 }
-
-bool IsNone(std::string_view name) { return Canonical(name) == kNoneName; }
 
 // JSON pointer token escaping (RFC 6901)
 std::string Token(std::string_view key) {
@@ -269,7 +259,7 @@ class Parser {
     pair.part = IsNone(part) ? std::string(kNoneName) : part;
     if (!IsNone(joint)) {
       // a standard joint is known at once; other body points are the agent's (grounding)
-      pair.joint_name = Canonical(joint);
+      pair.joint_name = core::NormalizeName(joint, core::TrailingDigits::kKeep);
       pair.joint = core::ParseBodyJoint(pair.joint_name);
       if (pair.joint_name.empty()) {
         return Error(field("joint"), "empty joint name; " + ValidJointsText());
@@ -332,7 +322,7 @@ std::string_view ContactTypeName(ContactType type) {
 }
 
 std::optional<ContactType> ParseContactType(std::string_view name) {
-  const std::string c = Canonical(name);
+  const std::string c = core::NormalizeName(name, core::TrailingDigits::kKeep);
   for (size_t i = 0; i < kContactTypeNames.size(); ++i) {
     if (kContactTypeNames[i] == c) return static_cast<ContactType>(i);
   }
@@ -348,7 +338,7 @@ std::string_view DirectionName(Direction direction) {
 }
 
 std::optional<Direction> ParseDirection(std::string_view name) {
-  const std::string c = Canonical(name);
+  const std::string c = core::NormalizeName(name, core::TrailingDigits::kKeep);
   for (size_t i = 0; i < kDirectionNames.size(); ++i) {
     if (kDirectionNames[i] == c) return static_cast<Direction>(i);
   }
@@ -437,7 +427,8 @@ absl::Status CheckPairShape(const ContactChain& chain, int step, int pair) {
     }
     return absl::OkStatus();
   }
-  if (Canonical(p.part) == Canonical(p.JointName())) {
+  if (core::NormalizeName(p.part, core::TrailingDigits::kKeep) ==
+      core::NormalizeName(p.JointName(), core::TrailingDigits::kKeep)) {
     return error("part", "joint " + Quote(p.JointName()) + " cannot contact itself");
   }
   return absl::OkStatus();

@@ -1,6 +1,5 @@
 #include "simhuman/plan/validate.h"
 
-#include <cctype>
 #include <utility>
 #include <vector>
 
@@ -8,17 +7,6 @@ namespace simhuman::plan {
 namespace {
 
 std::string Quote(std::string_view s) { return "'" + std::string(s) + "'"; }
-
-// lower case, '_' -> ' ', surrounding spaces removed; digits kept
-std::string Lower(std::string_view name) {
-  std::string s;
-  for (char c : name) {
-    s += (c == '_') ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  }
-  size_t b = s.find_first_not_of(' ');
-  if (b == std::string::npos) return {};
-  return s.substr(b, s.find_last_not_of(' ') - b + 1);
-}
 
 // the parts of `object` whose name or an alias equals `name` under `key`
 template <typename Key>
@@ -39,9 +27,11 @@ std::vector<const core::CatalogPart*> MatchParts(const core::CatalogObject& obje
 // More than one part at the deciding stage is ambiguous: never pick one.
 std::vector<const core::CatalogPart*> LookupPart(const core::CatalogObject& object,
                                                  std::string_view name) {
-  std::vector<const core::CatalogPart*> hits = MatchParts(object, name, Lower);
+  std::vector<const core::CatalogPart*> hits = MatchParts(object, name, [](std::string_view n) {
+    return core::NormalizeName(n, core::TrailingDigits::kKeep);
+  });
   if (!hits.empty()) return hits;
-  return MatchParts(object, name, core::NormalizeName);
+  return MatchParts(object, name, [](std::string_view n) { return core::NormalizeName(n); });
 }
 
 absl::Status Error(const ContactChain& chain, std::string_view pointer,

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 
@@ -42,7 +43,7 @@ TEST(WalkPolicyController, ActsWithFiniteTargetsAtItsOwnRate) {
   obs.world = world.get();
   obs.data = world->data();
   ASSERT_TRUE((*c)->Act(obs).ok());
-  double ctrl[kWalkActDim];
+  std::array<double, kWalkActDim> ctrl{};
   (*c)->Targets(0, ctrl);
   for (double v : ctrl) EXPECT_TRUE(std::isfinite(v));
   // standing on the target facing its heading, nearly untrained: not stepping
@@ -196,7 +197,9 @@ class FakeContact : public Controller {
     ++acts;
     return absl::OkStatus();
   }
-  void Targets(double, double* ctrl28) const override { std::fill(ctrl28, ctrl28 + 28, 0.0); }
+  void Targets(double, core::Span<double> ctrl) const override {
+    std::fill(ctrl.begin(), ctrl.end(), 0.0);
+  }
   double control_period_s() const override { return 0.04; }
   int acts = 0;
 };

@@ -1,0 +1,267 @@
+// Verb handlers for the body: sit, lie and rest on an object (with an optional pose), go to an
+// object (and which side of it), stand up, and touch or reach an object or one of its parts with
+// one or both hands.
+
+#include <set>
+#include <tuple>
+#include <utility>
+
+#include "simhuman/language/offline/objects.h"
+#include "simhuman/language/offline/session.h"
+#include "simhuman/language/offline_planner.h"
+
+namespace simhuman::language::offline {
+namespace {
+
+// part to touch and direction, for a reach without a named part
+std::pair<std::string, Direction> ReachPart(const CatalogObject& o) {
+  for (const char* p : {"board", "keyboard", "top", "seat surface", "mattress", "point", "body"}) {
+    if (HasPart(o, p)) {
+      const std::string name = p;
+      return {name, name == "point" || name == "body" ? Direction::kNone : Direction::kUp};
+    }
+  }
+  return {o.parts.empty() ? std::string() : o.parts[0].name, Direction::kNone};
+}
+
+// the direction of a touch on a named part: its outward side, up for top-like parts
+Direction PartDirection(const std::string& part) {
+  if (part == "screen" || part == "back surface" || part == "front side") return Direction::kFront;
+  if (part == "left side") return Direction::kLeft;
+  if (part == "right side") return Direction::kRight;
+  if (part == "back side") return Direction::kBack;
+  if (part == "body" || part == "point") return Direction::kNone;
+  return Direction::kUp;
+}
+
+}  // namespace
+
+absl::Status Session::SitOrLie(const Tokens& t, size_t b, bool lie, bool rest,
+                               const std::string& c) {
+  // [on|in|at|onto] NP [with|while|your ...variant]
+  size_t i = b;
+  while (i < t.size() && (t[i] == "on" || t[i] == "onto" || t[i] == "in" || t[i] == "at" ||
+                          t[i] == "to" || t[i] == "up")) {
+    ++i;
+  }
+  static const std::set<std::string> kStop = {
+      "with",  "while", "your", "lean", "hand", "hands", "knees", "knee",  "head", "elbows",
+      "elbow", "foot",  "feet", "legs", "leg",  "cross", "keep",  "raise", "and",  "facing"};
+  size_t j = Find(t, i, t.size(), kStop);
+  // "lie on the bed on your left side": a trailing "on" before "your" belongs to the pose
+  size_t np_end = j;
+  while (np_end > i && (t[np_end - 1] == "on" || t[np_end - 1] == "in")) --np_end;
+  const std::string part = lie ? "mattress" : "seat surface";
+  const CatalogObject* o = nullptr;
+  if (np_end > i) {
+    SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, np_end, 0, c));
+    SH_ASSIGN_OR_RETURN(o, Resolve(np, c, part));
+  } else if (on_ != nullptr && (HasPart(*on_, part) || (!lie && HasPart(*on_, "mattress")))) {
+    o = on_;
+  } else if (focus_ != nullptr &&
+             (HasPart(*focus_, part) || (!lie && HasPart(*focus_, "mattress")))) {
+    o = focus_;
+  } else {
+    std::vector<const CatalogObject*> fit;
+    for (const CatalogObject& x : scene_.objects) {
+      if (HasPart(x, part)) fit.push_back(&x);
+    }
+    if (fit.empty()) {
+      return Invalid("\"" + c + "\": nothing in this scene to " + (lie ? "lie" : "sit") +
+                     " on; the scene has: " + DescribeSceneObjects(scene_));
+    }
+    if (fit.size() > 1) {
+      std::vector<std::string> names;
+      for (const CatalogObject* x : fit) names.push_back(Describe(*x));
+      return Question(std::string(lie ? "Lie" : "Sit") + " on which: " + core::JoinNames(names) +
+                      "?");
+    }
+    o = fit[0];
+  }
+  if (!lie && !HasPart(*o, "seat surface") && !HasPart(*o, "mattress") && i > b &&
+      t[i - 1] == "at") {
+    // "sit at the table": the seat nearest to it
+    const CatalogObject* best = nullptr;
+    double best_d = 1e300;
+    bool tie = false;
+    for (const CatalogObject& x : scene_.objects) {
+      if (!HasPart(x, "seat surface")) continue;
+      const double d = CentreDistance(x, *o);
+      if (d < best_d - kTieM) {
+        tie = false;
+        best = &x;
+        best_d = d;
+      } else if (d <= best_d + kTieM) {
+        tie = true;
+      }
+    }
+    if (best == nullptr) {
+      return Invalid("\"" + c + "\": there is no seat to sit at " + Describe(*o) +
+                     "; the scene has: " + DescribeSceneObjects(scene_));
+    }
+    if (tie) return Question("Which seat at " + Describe(*o) + " should I sit on?");
+    o = best;
+  }
+  if (rest) lie = !HasPart(*o, "seat surface") && HasPart(*o, "mattress");
+  focus_ = o;
+  if (!(on_ == o && posture_ != Posture::kStand)) {
+    EnsureFree(o);
+    EnsureNear(*o);
+  }
+  if (lie) {
+    SH_RETURN_IF_ERROR(AddLie(*o));
+  } else if (!(on_ == o && posture_ == Posture::kSit && !steps_.empty() &&
+               steps_.back().kind == StepDraft::kSit && steps_.back().object == o)) {
+    SH_RETURN_IF_ERROR(AddSit(*o));
+  }
+  if (j < t.size()) {
+    size_t vb = j;
+    while (vb < t.size() && (t[vb] == "with" || t[vb] == "while" || t[vb] == "and")) ++vb;
+    SH_ASSIGN_OR_RETURN(std::optional<Variant> v, ParseVariant(t, vb, t.size(), c));
+    if (!v) {
+      return Invalid("did not understand '" + Join(t, j, t.size()) + "' in \"" + c +
+                     "\"; poses I know: hands/elbows on the arms, hands on the knees or stomach, "
+                     "foot on the other knee, lean forward/back, knees up, hands on the pillow, "
+                     "on the left/right side, head up");
+    }
+    SH_RETURN_IF_ERROR(AddVariant(*v, c));
+  }
+  return absl::OkStatus();
+}
+
+absl::Status Session::Go(const Tokens& t, size_t b, const std::string& c) {
+  size_t i = b;
+  Direction side = Direction::kFront;
+  while (i < t.size() && (t[i] == "to" || t[i] == "near" || t[i] == "at" || t[i] == "up" ||
+                          t[i] == "in" || t[i] == "on")) {
+    ++i;
+  }
+  if (i < t.size() && t[i] == "front_of") {
+    ++i;
+  } else if (i < t.size() && t[i] == "behind") {
+    side = Direction::kBack;
+    ++i;
+  } else if (i + 2 < t.size() &&
+             (t[i] == "left" || t[i] == "right" || t[i] == "front" || t[i] == "back") &&
+             (t[i + 1] == "side" || (t[i] == "front" && t[i + 1] == "of")) && t[i + 2] == "of") {
+    side = t[i] == "left"    ? Direction::kLeft
+           : t[i] == "right" ? Direction::kRight
+           : t[i] == "back"  ? Direction::kBack
+                             : Direction::kFront;
+    i += 3;
+  } else if (i + 1 < t.size() && (t[i] == "front" || t[i] == "back") && t[i + 1] == "of") {
+    side = t[i] == "back" ? Direction::kBack : Direction::kFront;
+    i += 2;
+  } else if (i < t.size() && t[i] == "left_of") {
+    side = Direction::kLeft;
+    ++i;
+  } else if (i < t.size() && t[i] == "right_of") {
+    side = Direction::kRight;
+    ++i;
+  }
+  if (i >= t.size()) {
+    return Invalid("\"" + c +
+                   "\": go where? name an object; the scene has: " + DescribeSceneObjects(scene_));
+  }
+  SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, t.size(), 0, c));
+  SH_ASSIGN_OR_RETURN(const CatalogObject* o, Resolve(np, c));
+  focus_ = o;
+  EnsureFree(nullptr);
+  std::string text = "get close to " + Describe(*o);
+  if (side != Direction::kFront)
+    text += " (" + std::string(plan::DirectionName(side)) + " side)";
+  else
+    text += " (front)";
+  AddGetClose(*o, side, text);
+  return absl::OkStatus();
+}
+
+absl::Status Session::StandUp(const std::string& c) {
+  if (posture_ == Posture::kStand || on_ == nullptr) {
+    return Invalid("\"" + c + "\": the human is already standing; say first what to sit or lie on");
+  }
+  EnsureFree(nullptr);
+  return absl::OkStatus();
+}
+
+absl::Status Session::Reach(const Tokens& t, const std::string& c) {
+  // find the hand words and the verb; the object follows the verb's preposition
+  static const std::set<std::string> kHand = {"hand", "hands"};
+  size_t hand = Find(t, 0, t.size(), kHand);
+  std::string side = "right";
+  if (hand < t.size()) {
+    side = SideBefore(t, 0, hand);
+    if (side.empty()) side = t[hand] == "hands" ? "both" : "right";
+  }
+  // object words: everything after the last verb/preposition that is not the hand phrase
+  static const std::set<std::string> kLead = {"touch", "reach", "grab",  "put",    "rest",  "on",
+                                              "onto",  "to",    "at",    "for",    "with",  "your",
+                                              "left",  "right", "both",  "hand",   "hands", "lie",
+                                              "in",    "keep",  "using", "either", "each"};
+  // the object is the span that follows the first preposition after the verb, up to "with"
+  size_t b = 0;
+  while (b < t.size() && kLead.count(t[b])) {
+    // "left"/"right" belong to the object when no hand word follows them
+    if ((t[b] == "left" || t[b] == "right" || t[b] == "both") &&
+        !(b + 1 < t.size() && (kHand.count(t[b + 1])))) {
+      break;
+    }
+    ++b;
+  }
+  size_t e = t.size();
+  size_t with = Find(t, b, t.size(), {"with", "using"});
+  if (with < e) e = with;
+  if (b >= e) {
+    return Invalid("\"" + c + "\": touch what? name an object; the scene has: " +
+                   DescribeSceneObjects(scene_));
+  }
+  SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, b, e, 0, c));
+  if (!np.part.empty() && np.part_side.empty() && np.part == "arm" && side != "both") {
+    np.part_side = side;
+  }
+  SH_ASSIGN_OR_RETURN(const CatalogObject* o, Resolve(np, c));
+  if (side == "both" && np.part == "arm" && np.part_side.empty() && HasPart(*o, "left arm") &&
+      HasPart(*o, "right arm")) {
+    // both hands on the armrests: each hand on its own side
+    focus_ = o;
+    if (posture_ != Posture::kStand && on_ != o && FootprintDistance(*o, pos_) > kNearEnoughM) {
+      EnsureFree(nullptr);
+    }
+    EnsureNear(*o);
+    StepDraft d;
+    for (const std::string& s : Sides(side)) {
+      d.step.pairs.push_back(Pair(*o, s + " arm",
+                                  SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
+                                  ContactType::kContact, Direction::kUp));
+    }
+    d.text = "both hands touch the arms of " + Describe(*o);
+    Push(std::move(d));
+    return absl::OkStatus();
+  }
+  std::string part;
+  Direction dir = Direction::kNone;
+  if (np.part.empty()) {
+    std::tie(part, dir) = ReachPart(*o);
+  } else {
+    SH_ASSIGN_OR_RETURN(part, ResolvePart(*o, np, side, c));
+    dir = PartDirection(part);
+  }
+  focus_ = o;
+  // sitting, a reach within arm's length keeps the seat; anything else stands up first
+  if (posture_ != Posture::kStand && on_ != o && FootprintDistance(*o, pos_) > kNearEnoughM) {
+    EnsureFree(nullptr);
+  }
+  EnsureNear(*o);
+  StepDraft d;
+  std::vector<std::string> sides = Sides(side);
+  for (const std::string& s : sides) {
+    d.step.pairs.push_back(Pair(*o, part, SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
+                                ContactType::kContact, dir));
+  }
+  d.text = (side == "both" ? std::string("both hands touch the ") : side + " hand touches the ") +
+           part + " of " + Describe(*o);
+  Push(std::move(d));
+  return absl::OkStatus();
+}
+
+}  // namespace simhuman::language::offline

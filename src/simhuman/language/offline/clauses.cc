@@ -1,0 +1,149 @@
+#include "simhuman/language/offline/clauses.h"
+
+#include <cctype>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "simhuman/language/offline/lexicon.h"
+#include "simhuman/language/offline/session.h"
+#include "simhuman/language/offline_planner.h"
+
+namespace simhuman::language::offline {
+
+core::StatusOr<Tokens> Tokenize(std::string_view command) {
+  if (command.size() > kMaxCommandBytes) {
+    return Invalid("the command is " + std::to_string(command.size()) + " bytes long; at most " +
+                   std::to_string(kMaxCommandBytes) +
+                   " are accepted (split it into several commands)");
+  }
+  Tokens out;
+  std::string word;
+  auto flush = [&] {
+    if (!word.empty()) out.push_back(std::move(word));
+    word.clear();
+  };
+  for (size_t i = 0; i < command.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(command[i]);
+    if (std::isalnum(c)) {
+      word += static_cast<char>(std::tolower(c));
+    } else if (c == '\'') {
+      continue;  // "chair's" -> "chairs", "don't" -> "dont"
+    } else if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '-' || c == '_' ||
+               c == '/') {
+      flush();
+    } else if (c == ',' || c == '.' || c == ';' || c == '!' || c == '?' || c == ':') {
+      flush();
+      out.push_back("then");
+    } else {
+      char buf[96];
+      if (c >= 0x20 && c < 0x7f) {
+        std::snprintf(buf, sizeof(buf), "character '%c' at offset %zu", c, i);
+      } else {
+        std::snprintf(buf, sizeof(buf), "byte 0x%02x at offset %zu", c, i);
+      }
+      return Invalid(std::string("cannot read the command: unexpected ") + buf +
+                     "; commands are plain English words with , . ; separating clauses");
+    }
+  }
+  flush();
+  return out;
+}
+
+core::StatusOr<std::vector<Tokens>> SplitClauses(const Tokens& tokens) {
+  std::vector<Tokens> clauses(1);
+  for (const std::string& w : tokens) {
+    if (w == "then" || w == "and") {
+      if (!clauses.back().empty()) clauses.emplace_back();
+      if (static_cast<int>(clauses.size()) > kMaxClauses) {
+        return Invalid("the command has more than " + std::to_string(kMaxClauses) +
+                       " clauses; split it into several commands");
+      }
+      continue;
+    }
+    clauses.back().push_back(w);
+  }
+  if (clauses.back().empty()) clauses.pop_back();
+  return clauses;
+}
+
+absl::Status Session::Clause(const Tokens& t) {
+  const std::string c = Join(t);
+  for (const std::string& w : t) {
+    if (!Known(w) && scene_.Find(w) == nullptr) {
+      return Invalid("did not understand the word '" + w + "' in \"" + c +
+                     "\"; I understand: sit, lie, rest, stand up, go to / walk to / approach, "
+                     "touch / reach, put your hand(s) on, put the <colour> <shape> on <object>, "
+                     "with object types chair, armchair, sofa, stool, high stool, bed, table, "
+                     "laptop, box, cylinder, sphere. The scene has: " +
+                     DescribeSceneObjects(scene_));
+    }
+  }
+  size_t i = 0;
+  while (i < t.size() && (t[i] == "your" || t[i] == "then" || t[i] == "and")) ++i;
+  if (i >= t.size()) return absl::OkStatus();
+  const std::string& v = t[i];
+  auto next = [&](size_t k) { return k < t.size() ? t[k] : std::string(); };
+  if (v == "rest" && (IsBodyWord(next(i + 1)) || next(i + 1) == "left" || next(i + 1) == "right" ||
+                      next(i + 1) == "both")) {
+    SH_ASSIGN_OR_RETURN(std::optional<Variant> var, ParseVariant(t, i, t.size(), c));
+    if (var) return AddVariant(*var, c);
+    return Reach(t, c);
+  }
+  // "go lie on the bed", "go and sit down": the going is implied by the interaction
+  if (v == "go" && (next(i + 1) == "sit" || next(i + 1) == "lie" || next(i + 1) == "rest" ||
+                    next(i + 1) == "touch" || next(i + 1) == "put")) {
+    return Clause(Tokens(t.begin() + static_cast<long>(i) + 1, t.end()));
+  }
+  if (v == "go" && i + 1 == t.size()) return absl::OkStatus();
+  if (v == "sit" || v == "lie" || v == "rest") {
+    return SitOrLie(t, i + 1, v == "lie", v == "rest", c);
+  }
+  if (v == "stand" && next(i + 1) == "up") {
+    if (i + 2 < t.size() && t[i + 2] != "then") {
+      return Invalid("did not understand '" + Join(t, i + 2, t.size()) +
+                     "' after 'stand up' in \"" + c + "\"");
+    }
+    return StandUp(c);
+  }
+  if (v == "stand" || v == "go" ||
+      (v == "move" && (next(i + 1) == "to" || next(i + 1) == "near"))) {
+    return Go(t, i + 1, c);
+  }
+  if (v == "put" || v == "stack" || v == "move" || v == "rest" || v == "keep" || v == "place") {
+    if (IsBodyWord(next(i + 1)) || next(i + 1) == "left" || next(i + 1) == "right" ||
+        next(i + 1) == "both") {
+      SH_ASSIGN_OR_RETURN(std::optional<Variant> var, ParseVariant(t, i, t.size(), c));
+      if (var) return AddVariant(*var, c);
+      return Reach(t, c);
+    }
+    if (v == "keep") {
+      return Invalid("did not understand \"" + c + "\"");
+    }
+    return Tabletop(t, i + 1, c);
+  }
+  if (v == "touch" || v == "reach" || v == "grab") return Reach(t, c);
+  if (v == "geton") {
+    // "get on the bed (and lie down)": go to it if it is far; the next clause says what to do
+    if (i + 1 >= t.size()) {
+      return Invalid("\"" + c + "\": get on what? name an object; the scene has: " +
+                     DescribeSceneObjects(scene_));
+    }
+    SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i + 1, t.size(), 0, c));
+    SH_ASSIGN_OR_RETURN(const CatalogObject* o, Resolve(np, c));
+    focus_ = o;
+    EnsureFree(o);
+    EnsureNear(*o);
+    return absl::OkStatus();
+  }
+  // a pose: "cross your right foot over your left knee", "lean back", "knees up", "with ..."
+  SH_ASSIGN_OR_RETURN(std::optional<Variant> var, ParseVariant(t, i, t.size(), c));
+  if (var) return AddVariant(*var, c);
+  if (Has(t, i, t.size(), "touch") || Has(t, i, t.size(), "reach")) return Reach(t, c);
+  return Invalid("did not understand \"" + c +
+                 "\"; commands start with sit, lie, rest, stand up, go to, walk to, approach, "
+                 "touch, reach, put, place, stack, lean, cross, raise");
+}
+
+}  // namespace simhuman::language::offline

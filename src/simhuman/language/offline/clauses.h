@@ -1,0 +1,24 @@
+#pragma once
+/// Clause dispatch of the offline planner: a command's bytes become lower-case words, the words
+/// are split into clauses, and Session::Clause() (clauses.cc) hands each clause to its verb
+/// handler.
+
+#include <string_view>
+#include <vector>
+
+#include "simhuman/core/status.h"
+#include "simhuman/language/offline/common.h"
+
+namespace simhuman::language::offline {
+
+/// Splits a command into lower-case words. Letters and digits form words; apostrophes are
+/// dropped ("don't" -> "dont"); spaces, tabs, newlines, '-', '_' and '/' separate words; each
+/// of , . ; ! ? : becomes the clause separator "then". kInvalidArgument for a command longer
+/// than kMaxCommandBytes or any other byte (the message names it and its offset).
+core::StatusOr<Tokens> Tokenize(std::string_view command);
+
+/// Splits normalised words into clauses at "then" and "and" (dropping empty clauses).
+/// kInvalidArgument when there are more than kMaxClauses.
+core::StatusOr<std::vector<Tokens>> SplitClauses(const Tokens& tokens);
+
+}  // namespace simhuman::language::offline

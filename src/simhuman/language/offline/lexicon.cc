@@ -1,0 +1,253 @@
+#include "simhuman/language/offline/lexicon.h"
+
+#include <algorithm>
+
+namespace simhuman::language::offline {
+
+// phrases rewritten to one canonical token before anything else (longest match first)
+const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
+  static const auto* phrases = new std::vector<std::pair<Tokens, Tokens>>{
+      // clause separators
+      {{"and", "then"}, {"then"}},
+      {{"after", "that"}, {"then"}},
+      {{"after", "this"}, {"then"}},
+      {{"afterwards"}, {"then"}},
+      {{"afterward"}, {"then"}},
+      {{"finally"}, {"then"}},
+      {{"and", "finally"}, {"then"}},
+      {{"once", "done"}, {"then"}},
+      {{"next", "to"}, {"near"}},
+      {{"next"}, {"then"}},
+      {{"left", "and", "right"}, {"both"}},
+      // relations
+      {{"on", "top", "of"}, {"onto"}},
+      {{"on", "to"}, {"onto"}},
+      {{"in", "front", "of"}, {"front_of"}},
+      {{"to", "the", "left", "of"}, {"left_of"}},
+      {{"to", "the", "right", "of"}, {"right_of"}},
+      {{"on", "the", "left", "of"}, {"left_of"}},
+      {{"on", "the", "right", "of"}, {"right_of"}},
+      {{"left", "of"}, {"left_of"}},
+      {{"right", "of"}, {"right_of"}},
+      {{"in", "back", "of"}, {"behind"}},
+      {{"close", "to"}, {"near"}},
+      {{"closest", "to"}, {"nearest"}},
+      {{"nearest", "to"}, {"nearest"}},
+      {{"farthest", "from"}, {"farthest"}},
+      {{"furthest", "from"}, {"farthest"}},
+      {{"beside"}, {"near"}},
+      {{"besides"}, {"near"}},
+      {{"by"}, {"near"}},
+      {{"alongside"}, {"near"}},
+      {{"closest"}, {"nearest"}},
+      {{"furthest"}, {"farthest"}},
+      // verbs
+      {{"take", "a", "seat"}, {"sit"}},
+      {{"have", "a", "seat"}, {"sit"}},
+      {{"be", "seated"}, {"sit"}},
+      {{"seat", "yourself"}, {"sit"}},
+      {{"have", "a", "rest"}, {"rest"}},
+      {{"take", "a", "rest"}, {"rest"}},
+      {{"take", "a", "nap"}, {"lie"}},
+      {{"have", "a", "nap"}, {"lie"}},
+      {{"lay", "down"}, {"lie"}},
+      {{"get", "up"}, {"stand", "up"}},
+      {{"rise"}, {"stand", "up"}},
+      {{"get", "closer", "to"}, {"go"}},
+      {{"get", "close", "to"}, {"go"}},
+      {{"get", "near"}, {"go"}},
+      {{"make", "your", "way", "to"}, {"go"}},
+      {{"go", "over", "to"}, {"go"}},
+      {{"walk", "over", "to"}, {"go"}},
+      {{"pick", "up"}, {"grab"}},
+      {{"get", "on"}, {"geton"}},
+      {{"get", "onto"}, {"geton"}},
+      {{"climb", "on"}, {"geton"}},
+      {{"climb", "onto"}, {"geton"}},
+      {{"head", "over", "to"}, {"go"}},
+      {{"head", "to"}, {"go"}},
+      {{"head", "towards"}, {"go"}},
+      // politeness and the default lying pose
+      {{"i", "want", "you", "to"}, {}},
+      {{"i", "would", "like", "you", "to"}, {}},
+      {{"i", "need", "you", "to"}, {}},
+      {{"can", "you"}, {}},
+      {{"could", "you"}, {}},
+      {{"would", "you"}, {}},
+      {{"on", "your", "back"}, {}},
+      {{"face", "up"}, {}},
+      {{"facing", "up"}, {}},
+      // objects and parts
+      {{"high", "stool"}, {"high_stool"}},
+      {{"bar", "stool"}, {"high_stool"}},
+      {{"arm", "chair"}, {"armchair"}},
+      {{"easy", "chair"}, {"armchair"}},
+      {{"arm", "rest"}, {"armrest"}},
+      {{"arm", "rests"}, {"armrests"}},
+      {{"back", "rest"}, {"backrest"}},
+      {{"table", "top"}, {"tabletop"}},
+      {{"the", "other", "knee"}, {"other_knee"}},
+      {{"other", "knee"}, {"other_knee"}},
+      {{"the", "other", "leg"}, {"other_knee"}},
+      {{"other", "leg"}, {"other_knee"}},
+  };
+  return *phrases;
+}
+
+// single-word synonyms
+const std::map<std::string, std::string>& Synonyms() {
+  static const auto* words = new std::map<std::string, std::string>{
+      {"couch", "sofa"},      {"settee", "sofa"},      {"desk", "table"},
+      {"computer", "laptop"}, {"notebook", "laptop"},  {"crate", "box"},
+      {"cube", "box"},        {"block", "box"},        {"ball", "sphere"},
+      {"tube", "cylinder"},   {"gray", "grey"},        {"walk", "go"},
+      {"move", "move"},       {"head", "head"},        {"approach", "go"},
+      {"come", "go"},         {"run", "go"},           {"step", "go"},
+      {"proceed", "go"},      {"sleep", "lie"},        {"nap", "lie"},
+      {"lay", "lie"},         {"lying", "lie"},        {"recline", "lie"},
+      {"sitting", "sit"},     {"seated", "sit"},       {"sits", "sit"},
+      {"lies", "lie"},        {"relax", "rest"},       {"touch", "touch"},
+      {"tap", "touch"},       {"touches", "touch"},    {"reaches", "reach"},
+      {"reaching", "reach"},  {"grasp", "grab"},       {"hold", "grab"},
+      {"take", "grab"},       {"place", "put"},        {"set", "put"},
+      {"rest", "rest"},       {"leaning", "lean"},     {"onto", "onto"},
+      {"upon", "on"},         {"atop", "onto"},        {"palm", "hand"},
+      {"palms", "hands"},     {"belly", "stomach"},    {"tummy", "stomach"},
+      {"abdomen", "stomach"}, {"tummy", "stomach"},    {"backwards", "back"},
+      {"backward", "back"},   {"forwards", "forward"}, {"armrests", "armrests"},
+      {"largest", "big"},     {"large", "big"},        {"bigger", "big"},
+      {"biggest", "big"},     {"larger", "big"},       {"little", "small"},
+      {"smaller", "small"},   {"smallest", "small"},   {"tiny", "small"},
+      {"leftmost", "left"},   {"rightmost", "right"},  {"raise", "raise"},
+      {"lift", "raise"},      {"bend", "raise"},       {"pull", "raise"},
+      {"roll", "turn"},       {"towards", "to"},       {"toward", "to"},
+      {"into", "in"},         {"yourself", "your"},    {"dont", "dont"},
+      {"lap", "knees"},       {"thats", "that"},       {"crossed", "cross"},
+      {"crossing", "cross"},
+  };
+  return *words;
+}
+
+// words dropped everywhere: fillers and determiners (relations and "your" are kept)
+const std::set<std::string>& Fillers() {
+  static const auto* words = new std::set<std::string>{
+      "the",      "a",         "an",      "please",   "now",      "just",   "first",  "slowly",
+      "gently",   "carefully", "quickly", "also",     "again",    "down",   "over",   "kindly",
+      "could",    "you",       "can",     "should",   "i",        "want",   "would",  "like",
+      "to_",      "for",       "this",    "my",       "both_",    "along",  "there_", "comfortably",
+      "straight", "located",   "placed",  "standing", "sitting_", "lying_", "one_"};
+  return *words;
+}
+
+const std::set<std::string>& Colors() {
+  static const auto* words = new std::set<std::string>{
+      "red", "green", "blue", "yellow", "white", "black", "brown", "grey", "orange", "purple"};
+  return *words;
+}
+
+// object type words (singular and plural) -> canonical type
+const std::map<std::string, std::string>& TypeWords() {
+  static const auto* words = new std::map<std::string, std::string>{{"chair", "chair"},
+                                                                    {"chairs", "chair"},
+                                                                    {"armchair", "armchair"},
+                                                                    {"armchairs", "armchair"},
+                                                                    {"sofa", "sofa"},
+                                                                    {"sofas", "sofa"},
+                                                                    {"stool", "stool"},
+                                                                    {"stools", "stool"},
+                                                                    {"high_stool", "high_stool"},
+                                                                    {"bed", "bed"},
+                                                                    {"beds", "bed"},
+                                                                    {"table", "table"},
+                                                                    {"tables", "table"},
+                                                                    {"laptop", "laptop"},
+                                                                    {"laptops", "laptop"},
+                                                                    {"box", "box"},
+                                                                    {"boxes", "box"},
+                                                                    {"cylinder", "cylinder"},
+                                                                    {"cylinders", "cylinder"},
+                                                                    {"sphere", "sphere"},
+                                                                    {"spheres", "sphere"},
+                                                                    {"marker", "marker"},
+                                                                    {"markers", "marker"},
+                                                                    {"target", "marker"},
+                                                                    {"object", ""},
+                                                                    {"thing", ""},
+                                                                    {"one", ""}};
+  return *words;
+}
+
+// part words -> the name looked up among a part's name and aliases
+const std::map<std::string, std::string>& PartWords() {
+  static const auto* words = new std::map<std::string, std::string>{
+      {"seat", "seat"},         {"cushion", "seat"},      {"backrest", "back surface"},
+      {"back", "back surface"}, {"arm", "arm"},           {"arms", "arm"},
+      {"armrest", "arm"},       {"armrests", "arm"},      {"pillow", "pillow"},
+      {"pillows", "pillow"},    {"mattress", "mattress"}, {"top", "top"},
+      {"tabletop", "top"},      {"surface", "surface"},   {"board", "board"},
+      {"keyboard", "keyboard"}, {"keys", "keyboard"},     {"screen", "screen"},
+      {"display", "screen"},    {"monitor", "screen"},    {"lid", "lid"},
+      {"edge", "edge"},         {"body", "body"},         {"point", "point"}};
+  return *words;
+}
+
+const std::set<std::string>& Relations() {
+  static const auto* words = new std::set<std::string>{
+      "near", "nearest", "farthest", "left_of", "right_of", "front_of", "behind", "onto", "on"};
+  return *words;
+}
+
+const std::set<std::string>& OtherWords() {
+  static const auto* words = new std::set<std::string>{
+      "then",   "and",        "sit",   "lie",   "rest",    "stand", "up",      "go",     "move",
+      "touch",  "reach",      "grab",  "put",   "stack",   "cross", "lean",    "raise",  "turn",
+      "keep",   "with",       "while", "your",  "hand",    "hands", "elbow",   "elbows", "knee",
+      "knees",  "other_knee", "foot",  "feet",  "leg",     "legs",  "stomach", "head",   "shoulder",
+      "side",   "left",       "right", "both",  "forward", "front", "in",      "at",     "to",
+      "of",     "it",         "them",  "that",  "which",   "is",    "are",     "its",    "away",
+      "from",   "off",        "big",   "small", "tall",    "short", "far",     "nearby", "middle",
+      "centre", "center",     "there", "yours", "own",     "one",   "edge",    "each",   "against",
+      "dont",   "lean",       "place", "using", "either",  "s",     "geton"};
+  return *words;
+}
+
+bool Known(const std::string& w) {
+  return Colors().count(w) || TypeWords().count(w) || PartWords().count(w) ||
+         Relations().count(w) || OtherWords().count(w);
+}
+
+bool IsBodyWord(const std::string& w) {
+  static const std::set<std::string> kWords = {"hand",  "hands",      "elbow",    "elbows", "knee",
+                                               "knees", "other_knee", "foot",     "feet",   "leg",
+                                               "legs",  "stomach",    "shoulder", "your"};
+  return kWords.count(w) > 0;
+}
+
+// phrase rewriting, synonyms, fillers
+Tokens Normalize(const Tokens& in) {
+  Tokens out;
+  for (size_t i = 0; i < in.size();) {
+    const Tokens* best_to = nullptr;
+    size_t best_len = 0;
+    for (const auto& [from, to] : Phrases()) {
+      if (from.size() <= best_len || i + from.size() > in.size()) continue;
+      if (std::equal(from.begin(), from.end(), in.begin() + static_cast<long>(i))) {
+        best_to = &to;
+        best_len = from.size();
+      }
+    }
+    if (best_to != nullptr) {
+      for (const std::string& t : *best_to) out.push_back(t);
+      i += best_len;
+      continue;
+    }
+    std::string w = in[i++];
+    auto syn = Synonyms().find(w);
+    if (syn != Synonyms().end()) w = syn->second;
+    if (Fillers().count(w)) continue;
+    out.push_back(w);
+  }
+  return out;
+}
+
+}  // namespace simhuman::language::offline

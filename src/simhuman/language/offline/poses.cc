@@ -1,0 +1,312 @@
+// Sitting and lying poses (UniHSI's interaction variants): reading a pose from a clause ("with
+// your hands on your knees", "lean back", "cross your legs", "on your left side"), and adding
+// its pairs to the current sit or lie step.
+
+#include <algorithm>
+#include <set>
+
+#include "simhuman/language/offline/objects.h"
+#include "simhuman/language/offline/session.h"
+
+namespace simhuman::language::offline {
+namespace {
+
+// the pose in words, appended to the text of its step
+std::string VariantText(const Variant& v) {
+  const std::string limb = v.side == "both" ? "both" : v.side;
+  switch (v.kind) {
+    case VariantKind::kHandsOnArms:
+      return limb + (v.side == "both" ? " hands on the arms" : " hand on the " + v.side + " arm");
+    case VariantKind::kHandsOffArms:
+      return limb + (v.side == "both" ? " hands" : " hand") + " away from the arms";
+    case VariantKind::kElbowsOnArms:
+      return limb + (v.side == "both" ? " elbows on the arms" : " elbow on the " + v.side + " arm");
+    case VariantKind::kHandsOnKnees:
+      return limb + (v.side == "both" ? " hands on the knees" : " hand on the " + v.side + " knee");
+    case VariantKind::kHandsOnStomach:
+      return limb + (v.side == "both" ? " hands" : " hand") + " on the stomach";
+    case VariantKind::kFootOnKnee:
+      return v.side + " foot on the " + v.knee_side + " knee";
+    case VariantKind::kLeanForward:
+      return "leaning forward";
+    case VariantKind::kLeanBack:
+      return "leaning back";
+    case VariantKind::kKneesUp:
+      return v.side == "both" ? "knees up" : v.side + " knee up";
+    case VariantKind::kHandsOnPillow:
+      return limb + (v.side == "both" ? " hands" : " hand") + " on the pillow";
+    case VariantKind::kOnSide:
+      return "on the " + v.side + " side";
+    case VariantKind::kHeadUp:
+      return "head up";
+  }
+  return "";
+}
+
+}  // namespace
+
+absl::Status Session::AddVariant(const Variant& v, const std::string& clause) {
+  const bool lie_only = v.kind == VariantKind::kKneesUp || v.kind == VariantKind::kHandsOnPillow ||
+                        v.kind == VariantKind::kOnSide || v.kind == VariantKind::kHeadUp;
+  const bool sit_only = v.kind == VariantKind::kHandsOnArms ||
+                        v.kind == VariantKind::kHandsOffArms ||
+                        v.kind == VariantKind::kElbowsOnArms ||
+                        v.kind == VariantKind::kLeanForward || v.kind == VariantKind::kLeanBack;
+  const std::string what = VariantText(v);
+  if (posture_ == Posture::kStand || on_ == nullptr) {
+    return Invalid("\"" + clause + "\" (" + what + ") is a pose while " +
+                   (lie_only ? "lying" : "sitting") + "; say first what to " +
+                   (lie_only ? "lie" : "sit") + " on (e.g. \"" + (lie_only ? "lie" : "sit") +
+                   " on the " + (lie_only ? "bed" : "chair") + ", then " + clause + "\")");
+  }
+  if (lie_only && posture_ != Posture::kLie) {
+    return Invalid("\"" + clause + "\" (" + what + ") is a lying pose, but the human sits on " +
+                   Describe(*on_) + "; lie on a bed first");
+  }
+  if (sit_only && posture_ != Posture::kSit) {
+    return Invalid("\"" + clause + "\" (" + what + ") is a sitting pose, but the human lies on " +
+                   Describe(*on_) + "; sit up first (\"sit on it\")");
+  }
+  SH_ASSIGN_OR_RETURN(std::vector<ContactPair> pairs, VariantPairs(v, clause));
+  MergeIntoPoseStep(pairs, what);
+  return absl::OkStatus();
+}
+
+// the pairs of pose `v` on the object the human sits or lies on; errors name a missing part
+core::StatusOr<std::vector<ContactPair>> Session::VariantPairs(const Variant& v,
+                                                               const std::string& clause) const {
+  const CatalogObject& o = *on_;
+  std::vector<ContactPair> pairs;
+  auto need = [&](const std::string& part) -> absl::Status {
+    if (HasPart(o, part)) return absl::OkStatus();
+    return Invalid("\"" + clause + "\": " + Describe(o) + " has no " + part + " (its parts: " +
+                   PartsText(o) + "); objects with a " + part + ": " + ObjectsWith(scene_, part));
+  };
+  const bool lying = posture_ == Posture::kLie;
+  switch (v.kind) {
+    case VariantKind::kHandsOnArms:
+    case VariantKind::kHandsOffArms:
+    case VariantKind::kElbowsOnArms:
+      for (const std::string& s : Sides(v.side)) {
+        SH_RETURN_IF_ERROR(need(s + " arm"));
+        const bool elbow = v.kind == VariantKind::kElbowsOnArms;
+        BodyJoint j = elbow ? SideJoint(s, BodyJoint::kLeftElbow, BodyJoint::kRightElbow)
+                            : SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand);
+        if (v.kind == VariantKind::kHandsOffArms) {
+          pairs.push_back(Pair(o, s + " arm", j, ContactType::kNotContact, Direction::kNone));
+        } else {
+          pairs.push_back(Pair(o, s + " arm", j, ContactType::kContact, Direction::kUp));
+        }
+      }
+      break;
+    case VariantKind::kHandsOnKnees:
+      for (const std::string& s : Sides(v.side)) {
+        pairs.push_back(Pair(o, s + " knee",
+                             SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
+                             ContactType::kContact, Direction::kUp));
+      }
+      break;
+    case VariantKind::kHandsOnStomach:
+      for (const std::string& s : Sides(v.side)) {
+        pairs.push_back(Pair(o, "pelvis", SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
+                             ContactType::kContact, Direction::kNone));
+      }
+      break;
+    case VariantKind::kFootOnKnee:
+      pairs.push_back(Pair(o, v.knee_side + " knee",
+                           SideJoint(v.side, BodyJoint::kLeftFoot, BodyJoint::kRightFoot),
+                           ContactType::kContact, lying ? Direction::kUp : Direction::kNone));
+      break;
+    case VariantKind::kLeanForward:
+    case VariantKind::kLeanBack:
+      SH_RETURN_IF_ERROR(need("back surface"));
+      pairs.push_back(
+          Pair(o, "back surface", BodyJoint::kTorso,
+               v.kind == VariantKind::kLeanBack ? ContactType::kContact : ContactType::kNotContact,
+               Direction::kNone));
+      break;
+    case VariantKind::kKneesUp:
+      for (const std::string& s : Sides(v.side)) {
+        pairs.push_back(Pair(o, "mattress",
+                             SideJoint(s, BodyJoint::kLeftKnee, BodyJoint::kRightKnee),
+                             ContactType::kNotContact, Direction::kNone));
+      }
+      break;
+    case VariantKind::kHandsOnPillow:
+      for (const std::string& s : Sides(v.side)) {
+        pairs.push_back(Pair(o, "pillow", SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
+                             ContactType::kContact, Direction::kNone));
+      }
+      break;
+    case VariantKind::kOnSide:
+      // lying on the left side lifts the right shoulder off the mattress
+      pairs.push_back(Pair(o, "mattress",
+                           SideJoint(v.side, BodyJoint::kRightShoulder, BodyJoint::kLeftShoulder),
+                           ContactType::kNotContact, Direction::kNone));
+      break;
+    case VariantKind::kHeadUp:
+      pairs.push_back(
+          Pair(o, "pillow", BodyJoint::kHead, ContactType::kNotContact, Direction::kNone));
+      break;
+  }
+  return pairs;
+}
+
+void Session::MergeIntoPoseStep(const std::vector<ContactPair>& pairs, const std::string& what) {
+  const CatalogObject& o = *on_;
+  const bool lying = posture_ == Posture::kLie;
+  // merge into the current sit/lie step unless it already poses one of these joints
+  StepDraft* last = steps_.empty() ? nullptr : &steps_.back();
+  const StepDraft::Kind kind = lying ? StepDraft::kLie : StepDraft::kSit;
+  bool merge = last != nullptr && last->kind == kind && last->object == &o;
+  if (merge) {
+    for (size_t k = last->base_pairs; k < last->step.pairs.size(); ++k) {
+      for (const ContactPair& p : pairs) {
+        if (last->step.pairs[k].joint == p.joint) merge = false;
+      }
+    }
+  }
+  if (!merge) {
+    StepDraft d;
+    d.kind = kind;
+    d.object = &o;
+    if (lying) {
+      d.step.pairs.push_back(
+          Pair(o, "mattress", BodyJoint::kPelvis, ContactType::kContact, Direction::kUp));
+      d.step.pairs.push_back(
+          Pair(o, "pillow", BodyJoint::kHead, ContactType::kContact, Direction::kUp));
+      d.text = "lie on " + Describe(o);
+    } else if (HasPart(o, "seat surface")) {
+      d.step.pairs.push_back(
+          Pair(o, "seat surface", BodyJoint::kPelvis, ContactType::kContact, Direction::kUp));
+      d.text = "sit on " + Describe(o);
+    } else {
+      d.step.pairs.push_back(
+          Pair(o, "mattress", BodyJoint::kPelvis, ContactType::kContact, Direction::kUp));
+      d.step.pairs.push_back(
+          Pair(o, "pillow", BodyJoint::kHead, ContactType::kNotContact, Direction::kUp));
+      d.text = "sit on the edge of " + Describe(o);
+    }
+    d.base_pairs = d.step.pairs.size();
+    Push(std::move(d));
+    last = &steps_.back();
+  }
+  for (const ContactPair& p : pairs) {
+    // head up replaces the head-on-pillow pair of lying
+    auto same = std::find_if(last->step.pairs.begin(), last->step.pairs.end(),
+                             [&](const ContactPair& q) { return q.joint == p.joint; });
+    if (same != last->step.pairs.end()) {
+      *same = p;
+    } else {
+      last->step.pairs.push_back(p);
+    }
+  }
+  last->variant_texts.push_back(what);
+}
+
+core::StatusOr<std::optional<Variant>> Session::ParseVariant(const Tokens& t, size_t b, size_t e,
+                                                             const std::string& c) const {
+  static const std::set<std::string> kHand = {"hand", "hands"};
+  static const std::set<std::string> kElbow = {"elbow", "elbows"};
+  static const std::set<std::string> kFoot = {"foot", "feet", "leg", "legs"};
+  static const std::set<std::string> kKnee = {"knee", "knees", "other_knee"};
+  static const std::set<std::string> kArm = {"arm", "arms", "armrest", "armrests"};
+  auto limb_side = [&](size_t i) {
+    std::string s = SideBefore(t, b, i);
+    if (!s.empty()) return s;
+    const std::string& w = t[i];
+    return (w.back() == 's' || w == "feet") ? std::string("both") : std::string("right");
+  };
+  const bool away = Has(t, b, e, "away") || Has(t, b, e, "off") || Has(t, b, e, "dont");
+  size_t hand = Find(t, b, e, kHand);
+  size_t elbow = Find(t, b, e, kElbow);
+  size_t foot = Find(t, b, e, kFoot);
+  size_t knee = Find(t, b, e, kKnee);
+  size_t arm = Find(t, b, e, kArm);
+  Variant v{VariantKind::kLeanBack, "both", ""};
+  if (Has(t, b, e, "lean")) {
+    v.kind = (Has(t, b, e, "forward") || Has(t, b, e, "front_of")) ? VariantKind::kLeanForward
+                                                                   : VariantKind::kLeanBack;
+    if (v.kind == VariantKind::kLeanBack && !Has(t, b, e, "back") && !Has(t, b, e, "against") &&
+        !Has(t, b, e, "backrest")) {
+      return Invalid("\"" + c + "\": lean which way? say \"lean forward\" or \"lean back\"");
+    }
+    return std::optional<Variant>(v);
+  }
+  if (foot < e && knee < e) {
+    v.kind = VariantKind::kFootOnKnee;
+    std::string fs = SideBefore(t, b, foot), ks = SideBefore(t, b, knee);
+    if (t[knee] == "other_knee") ks = "";
+    if (fs.empty() && !ks.empty()) fs = ks == "left" ? "right" : "left";
+    if (fs.empty() || fs == "both") fs = "right";
+    if (ks.empty() || ks == "both") ks = fs == "left" ? "right" : "left";
+    if (ks == fs) {
+      return Invalid("\"" + c +
+                     "\": a foot cannot rest on its own knee; say e.g. \"right foot "
+                     "on the left knee\"");
+    }
+    v.side = fs;
+    v.knee_side = ks;
+    return std::optional<Variant>(v);
+  }
+  if (Has(t, b, e, "cross") && (Has(t, b, e, "legs") || foot < e)) {
+    v.kind = VariantKind::kFootOnKnee;
+    v.side = "right";
+    v.knee_side = "left";
+    return std::optional<Variant>(v);
+  }
+  if (elbow < e && arm < e) {
+    v.kind = VariantKind::kElbowsOnArms;
+    v.side = limb_side(elbow);
+    return std::optional<Variant>(v);
+  }
+  if (hand < e) {
+    v.side = limb_side(hand);
+    if (arm < e && (posture_ == Posture::kSit || away)) {
+      v.kind = away ? VariantKind::kHandsOffArms : VariantKind::kHandsOnArms;
+      std::string arm_side = SideBefore(t, b, arm);
+      if (v.side != "both" && !arm_side.empty() && arm_side != "both" && arm_side != v.side) {
+        return Invalid("\"" + c + "\": the " + v.side + " hand goes on the " + v.side +
+                       " arm; a hand on the opposite arm is not in the vocabulary");
+      }
+      return std::optional<Variant>(v);
+    }
+    if (knee < e) {
+      v.kind = VariantKind::kHandsOnKnees;
+      return std::optional<Variant>(v);
+    }
+    if (Has(t, b, e, "stomach")) {
+      v.kind = VariantKind::kHandsOnStomach;
+      return std::optional<Variant>(v);
+    }
+    if (Has(t, b, e, "pillow") && posture_ == Posture::kLie) {
+      v.kind = VariantKind::kHandsOnPillow;
+      return std::optional<Variant>(v);
+    }
+    return std::optional<Variant>();  // a reach
+  }
+  if (knee < e && (Has(t, b, e, "up") || Has(t, b, e, "raise"))) {
+    v.kind = VariantKind::kKneesUp;
+    v.side = limb_side(knee);
+    if (t[knee] == "knees") v.side = "both";
+    return std::optional<Variant>(v);
+  }
+  if (Has(t, b, e, "side") && foot == e && hand == e) {
+    std::string s = SideBefore(t, b, Find(t, b, e, {"side"}));
+    if (s != "left" && s != "right") {
+      return Invalid("\"" + c +
+                     "\": on which side? say \"on your left side\" or \"on your "
+                     "right side\"");
+    }
+    v.kind = VariantKind::kOnSide;
+    v.side = s;
+    return std::optional<Variant>(v);
+  }
+  if (Has(t, b, e, "head") && (Has(t, b, e, "up") || Has(t, b, e, "raise"))) {
+    v.kind = VariantKind::kHeadUp;
+    return std::optional<Variant>(v);
+  }
+  return std::optional<Variant>();
+}
+
+}  // namespace simhuman::language::offline

@@ -1,0 +1,138 @@
+#pragma once
+/// The offline planner's state while it reads one command (internal to language/): where the
+/// human is, its posture, what it sits or lies on, the object last referred to ("it"), and the
+/// steps planned so far. One Session per OfflinePlanner::Plan() call; not shared.
+///
+/// Its member functions live with their concept:
+/// - references.cc: resolving noun phrases to scene objects (and clarifying questions);
+/// - steps.cc: step builders (get close, implied stand-up and get-close steps, sit, lie) and
+///   chain assembly (Finish);
+/// - poses.cc: sitting and lying poses ("hands on the knees", "lean back", "knees up", ...);
+/// - body_verbs.cc: sit, lie, rest, go, stand up, touch/reach;
+/// - tabletop.cc: put/place/stack an object on or next to another;
+/// - clauses.cc: the clause dispatcher (which verb handler reads a clause).
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "simhuman/core/status.h"
+#include "simhuman/language/offline/common.h"
+#include "simhuman/language/offline/noun_phrase.h"
+#include "simhuman/language/offline/spatial.h"
+#include "simhuman/language/planner.h"
+
+namespace simhuman::language::offline {
+
+/// The human's posture as planned so far.
+enum class Posture { kStand, kSit, kLie };
+
+/// A sitting or lying pose added to the current sit or lie step (UniHSI's interaction
+/// variants).
+enum class VariantKind {
+  kHandsOnArms,
+  kHandsOffArms,
+  kElbowsOnArms,
+  kHandsOnKnees,
+  kHandsOnStomach,
+  kFootOnKnee,
+  kLeanForward,
+  kLeanBack,
+  kKneesUp,
+  kHandsOnPillow,
+  kOnSide,
+  kHeadUp,
+};
+
+/// One pose and the limbs it uses.
+struct Variant {
+  VariantKind kind;
+  std::string side;       // "left", "right" or "both" (the limb; for kOnSide the side lain on)
+  std::string knee_side;  // kFootOnKnee: the knee's side
+};
+
+/// A step being planned: its pairs, its text, and what kind of step it is (poses merge into
+/// the sit or lie step they follow).
+struct StepDraft {
+  ContactStep step;
+  std::string text;
+  enum Kind { kMove, kSit, kLie, kOther } kind = kOther;
+  const CatalogObject* object = nullptr;
+  size_t base_pairs = 0;                   // pairs of the sit/lie itself; poses come after
+  std::vector<std::string> variant_texts;  // the poses in words, appended to the text
+};
+
+/// A contact pair between body joint `joint` and `part` of `o`.
+ContactPair Pair(const CatalogObject& o, const std::string& part, BodyJoint joint, ContactType type,
+                 Direction dir);
+/// `left` for side "left", else `right`.
+BodyJoint SideJoint(const std::string& side, BodyJoint left, BodyJoint right);
+/// {"left", "right"} for "both", else {side}.
+std::vector<std::string> Sides(const std::string& side);
+
+/// The single part of `o` that `np` names (canonical name); `side` ("left"/"right") picks an
+/// arm when the words do not. kInvalidArgument when `o` has no such part, kFailedPrecondition
+/// (a question) when several parts match.
+core::StatusOr<std::string> ResolvePart(const CatalogObject& o, const NounPhrase& np,
+                                        const std::string& side, const std::string& clause);
+
+/// See the file comment.
+class Session {
+ public:
+  /// Starts from PlanContext::agents[0] (a standing human at the origin facing +x when there is
+  /// none); a sitting or lying start sits or lies on the nearest object that allows it.
+  /// `scene` must outlive the session.
+  Session(const core::SceneCatalog& scene, const PlanContext& context);
+
+  /// Plans one clause (normalised tokens without "then"/"and" separators) and appends its
+  /// steps. Errors follow Planner's status codes and quote the clause.
+  absl::Status Clause(const Tokens& t);
+
+  /// The grounded plan of all clauses so far. kInvalidArgument when no clause asked for
+  /// anything; kInternal when the plan fails plan::ValidateAndGround() (a bug).
+  core::StatusOr<PlanResult> Finish();
+
+ private:
+  // ---- references (references.cc)
+  core::StatusOr<const CatalogObject*> Resolve(const NounPhrase& np, const std::string& clause,
+                                               const std::string& need_part = "");
+  core::StatusOr<std::vector<const CatalogObject*>> Candidates(const NounPhrase& np,
+                                                               const std::string& clause);
+  std::string Ambiguity(const NounPhrase& np, const std::vector<const CatalogObject*>& c) const;
+  std::string Landmark(const CatalogObject& c,
+                       const std::vector<const CatalogObject*>& exclude) const;
+
+  // ---- steps (steps.cc)
+  void EnsureFree(const CatalogObject* target);
+  void EnsureNear(const CatalogObject& target);
+  void AddGetClose(const CatalogObject& o, Direction side, const std::string& text);
+  absl::Status AddSit(const CatalogObject& o);
+  absl::Status AddLie(const CatalogObject& o);
+  void Push(StepDraft d) { steps_.push_back(std::move(d)); }
+
+  // ---- poses (poses.cc)
+  absl::Status AddVariant(const Variant& v, const std::string& clause);
+  core::StatusOr<std::vector<ContactPair>> VariantPairs(const Variant& v,
+                                                        const std::string& clause) const;
+  void MergeIntoPoseStep(const std::vector<ContactPair>& pairs, const std::string& what);
+  core::StatusOr<std::optional<Variant>> ParseVariant(const Tokens& t, size_t b, size_t e,
+                                                      const std::string& c) const;
+
+  // ---- clause kinds (body_verbs.cc, tabletop.cc)
+  absl::Status SitOrLie(const Tokens& t, size_t b, bool lie, bool rest, const std::string& c);
+  absl::Status Go(const Tokens& t, size_t b, const std::string& c);
+  absl::Status StandUp(const std::string& c);
+  absl::Status Reach(const Tokens& t, const std::string& c);
+  absl::Status Tabletop(const Tokens& t, size_t b, const std::string& c);
+
+  const core::SceneCatalog& scene_;
+  Viewer viewer_;
+  Point2 pos_;
+  Posture posture_ = Posture::kStand;
+  const CatalogObject* on_ = nullptr;     // what the human sits or lies on
+  const CatalogObject* focus_ = nullptr;  // the object last referred to ("it")
+  std::vector<StepDraft> steps_;
+};
+
+}  // namespace simhuman::language::offline

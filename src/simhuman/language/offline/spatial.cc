@@ -1,0 +1,97 @@
+#include "simhuman/language/offline/spatial.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "simhuman/plan/metrics.h"
+
+namespace simhuman::language::offline {
+
+// horizontal distance from `p` to the object's footprint (its local bounds turned by its yaw)
+double FootprintDistance(const CatalogObject& o, Point2 p) {
+  if (o.shapes.empty()) return std::hypot(p.x - o.pose.pos.x(), p.y - o.pose.pos.y());
+  const auto [lo, hi] = o.LocalBounds();
+  const double yaw = plan::ObjectYaw(o.pose);
+  const double dx = p.x - o.pose.pos.x(), dy = p.y - o.pose.pos.y();
+  const double lx = std::cos(yaw) * dx + std::sin(yaw) * dy;
+  const double ly = -std::sin(yaw) * dx + std::cos(yaw) * dy;
+  const double ex = std::max({lo.x() - lx, 0.0, lx - hi.x()});
+  const double ey = std::max({lo.y() - ly, 0.0, ly - hi.y()});
+  return std::hypot(ex, ey);
+}
+
+double CentreDistance(const CatalogObject& a, const CatalogObject& b) {
+  return std::hypot(a.pose.pos.x() - b.pose.pos.x(), a.pose.pos.y() - b.pose.pos.y());
+}
+
+double Volume(const CatalogObject& o) {
+  if (o.shapes.empty()) return 0.0;
+  const auto [lo, hi] = o.LocalBounds();
+  const Eigen::Vector3d d = hi - lo;
+  return d.x() * d.y() * d.z();
+}
+
+std::optional<Rel> RelFromWord(const std::string& w) {
+  if (w == "near" || w == "at") return Rel::kNear;
+  if (w == "nearest") return Rel::kNearest;
+  if (w == "farthest") return Rel::kFarthest;
+  if (w == "left_of") return Rel::kLeftOf;
+  if (w == "right_of") return Rel::kRightOf;
+  if (w == "front_of") return Rel::kFrontOf;
+  if (w == "behind") return Rel::kBehind;
+  if (w == "on" || w == "onto") return Rel::kOn;
+  return std::nullopt;
+}
+
+std::string RelText(Rel r) {
+  switch (r) {
+    case Rel::kNear:
+      return "next to";
+    case Rel::kNearest:
+      return "nearest to";
+    case Rel::kFarthest:
+      return "farthest from";
+    case Rel::kLeftOf:
+      return "left of";
+    case Rel::kRightOf:
+      return "right of";
+    case Rel::kFrontOf:
+      return "in front of";
+    case Rel::kBehind:
+      return "behind";
+    case Rel::kOn:
+      return "on";
+  }
+  return "";
+}
+
+// the side relation of `a` seen from `ref` in the viewer's frame (the dominant axis)
+Rel SideRelation(const CatalogObject& a, const CatalogObject& ref, const Viewer& v) {
+  auto [f, l] = v.Local(a.pose.pos.x() - ref.pose.pos.x(), a.pose.pos.y() - ref.pose.pos.y());
+  if (std::abs(l) >= std::abs(f)) return l > 0 ? Rel::kLeftOf : Rel::kRightOf;
+  return f > 0 ? Rel::kBehind : Rel::kFrontOf;
+}
+
+bool HoldsSide(Rel r, const CatalogObject& a, const CatalogObject& ref, const Viewer& v) {
+  auto [f, l] = v.Local(a.pose.pos.x() - ref.pose.pos.x(), a.pose.pos.y() - ref.pose.pos.y());
+  switch (r) {
+    case Rel::kLeftOf:
+      return l > kTieM && l >= std::abs(f) - kTieM;
+    case Rel::kRightOf:
+      return -l > kTieM && -l >= std::abs(f) - kTieM;
+    case Rel::kBehind:
+      return f > kTieM && f >= std::abs(l) - kTieM;
+    case Rel::kFrontOf:
+      return -f > kTieM && -f >= std::abs(l) - kTieM;
+    default:
+      return false;
+  }
+}
+
+// `a` rests on `ref`: its origin lies over ref's footprint and above the floor
+bool RestsOn(const CatalogObject& a, const CatalogObject& ref) {
+  if (a.id == ref.id) return false;
+  return a.pose.pos.z() > 0.05 && FootprintDistance(ref, {a.pose.pos.x(), a.pose.pos.y()}) < 1e-6;
+}
+
+}  // namespace simhuman::language::offline
