@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "simhuman/plan/test_scene.h"
+#include "simhuman/plan/validate.h"
 
 namespace simhuman::plan {
 namespace {
@@ -159,8 +160,14 @@ TEST(PlanParseTest, MalformedUnknownTopKey) {
 }
 
 TEST(PlanParseTest, MalformedUnknownJoint) {
-  std::string msg = LoadError("malformed_unknown_joint.json");
-  EXPECT_THAT(msg, HasSubstr("/steps/0/pairs/0/joint: unknown joint 'butt'"));
+  // any joint name parses (an agent's body may have more points); grounding names the culprit
+  ASSERT_TRUE(LoadContactChainFile(PlanDataPath("malformed_unknown_joint.json")).ok());
+  absl::StatusOr<ContactChain> chain =
+      LoadAndGroundFile(PlanDataPath("malformed_unknown_joint.json"), fixtures::MakeTestScene());
+  ASSERT_FALSE(chain.ok());
+  std::string msg(chain.status().message());
+  EXPECT_THAT(msg, HasSubstr("malformed_unknown_joint.json"));
+  EXPECT_THAT(msg, HasSubstr("/steps/0/pairs/0/joint: unknown joint 'butt' for human 0"));
   EXPECT_THAT(msg, HasSubstr("valid joints: pelvis, torso, head, left shoulder"));
 }
 

@@ -164,8 +164,10 @@ TEST(PlanObjectPairTest, SideRelationUsesTheObjectsFrame) {
 TEST(PlanObjectPairTest, TupleFormHasNoObjectPairs) {
   // the tuple form keeps its 5 fields; a subject cannot be written there
   core::StatusOr<ContactChain> chain =
-      ParseContactChain(R"([[["box001", "top", "box000", "contact", "up"]]])", "t");
-  EXPECT_FALSE(chain.ok());
+      ParseAndGround(R"([[["box001", "top", "box000", "contact", "up"]]])", "t", Scene());
+  ASSERT_FALSE(chain.ok());
+  EXPECT_NE(chain.status().message().find("/0/0/2: unknown joint 'box000'"), std::string::npos)
+      << chain.status();
 }
 
 }  // namespace

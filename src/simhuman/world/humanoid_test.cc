@@ -9,6 +9,7 @@
 #include "simhuman/world/health.h"
 #include "simhuman/world/scene.h"
 #include "simhuman/world/sim_world.h"
+#include "simhuman/world/testing/mujoco_warnings.h"
 
 namespace simhuman::world {
 namespace {
@@ -76,6 +77,7 @@ TEST(HumanoidTest, TwoAgentsHaveSeparateNames) {
 }
 
 TEST(HealthTest, NonFiniteStateEndsWithAReason) {
+  testing::ScopedExpectMujocoWarnings expected;  // MuJoCo warns of the bad state it resets
   auto w = Empty();
   w->data()->qvel[3] = std::nan("");
   HealthReport r = w->Step();
@@ -84,6 +86,7 @@ TEST(HealthTest, NonFiniteStateEndsWithAReason) {
 }
 
 TEST(HealthTest, RunawayVelocityIsUnstable) {
+  testing::ScopedExpectMujocoWarnings expected;
   auto w = Empty();
   w->data()->qvel[10] = 1e6;
   HealthReport r = w->Step();
