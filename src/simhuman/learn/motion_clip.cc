@@ -12,6 +12,7 @@ namespace {
 
 constexpr double kQuatNormTol = 1e-3;
 constexpr double kMaxFps = 1000;
+constexpr double kMaxResampledFrames = 1e6;  // 9 h at 30 fps; 280 MB of frames
 
 std::array<double, 4> Slerp(const std::array<double, 4>& a, std::array<double, 4> b, double u) {
   double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
@@ -189,7 +190,16 @@ core::StatusOr<MotionClip> ResampleClip(const MotionClip& clip, double fps) {
   out.fps = fps;
   out.source = clip.source;
   const double dur = clip.duration_s();
-  const size_t n = static_cast<size_t>(std::floor(dur * fps + 1e-9)) + 1;
+  // a valid file can last for ages (fps 1e-6): refuse before the count overflows or the
+  // frames exhaust memory
+  const double count = std::floor(dur * fps + 1e-9) + 1;
+  if (!(count <= kMaxResampledFrames)) {
+    return absl::InvalidArgumentError("resample: the clip lasts " + core::FormatNumber(dur) +
+                                      " s: " + core::FormatNumber(count) + " frames at " +
+                                      core::FormatNumber(fps) + " fps, more than " +
+                                      core::FormatNumber(kMaxResampledFrames));
+  }
+  const size_t n = static_cast<size_t>(count);
   out.frames.reserve(n);
   for (size_t i = 0; i < n; ++i) out.frames.push_back(SampleClip(clip, i / fps));
   return out;
