@@ -1,6 +1,6 @@
 #include "simhuman/core/json_io.h"
 
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -59,49 +59,6 @@ StatusOr<nlohmann::json> ParseJson(std::string_view text, std::string_view sourc
 StatusOr<nlohmann::json> ReadJsonFile(const std::string& path) {
   SH_ASSIGN_OR_RETURN(std::string text, ReadFile(path));
   return ParseJson(text, path);
-}
-
-Status CheckKeys(const nlohmann::json& obj, const std::vector<std::string>& allowed,
-                 std::string_view where) {
-  if (!obj.is_object()) {
-    return absl::InvalidArgumentError(std::string(where) + ": expected a JSON object, got " +
-                                      obj.type_name());
-  }
-  for (auto it = obj.begin(); it != obj.end(); ++it) {
-    bool ok = false;
-    for (const auto& a : allowed) ok |= (a == it.key());
-    if (!ok) {
-      return absl::InvalidArgumentError(std::string(where) + ": unknown key '" + it.key() +
-                                        "'; valid keys are: " + JoinNames(allowed));
-    }
-  }
-  return absl::OkStatus();
-}
-
-StatusOr<double> GetNumber(const nlohmann::json& obj, const std::string& key,
-                           std::string_view where) {
-  std::string loc = std::string(where) + "/" + key;
-  if (!obj.contains(key)) return absl::InvalidArgumentError(loc + ": missing required number");
-  const auto& v = obj.at(key);
-  if (!v.is_number()) {
-    return absl::InvalidArgumentError(loc + ": expected a number, got " +
-                                      std::string(v.type_name()));
-  }
-  double d = v.get<double>();
-  if (!std::isfinite(d)) return absl::InvalidArgumentError(loc + ": number is not finite");
-  return d;
-}
-
-StatusOr<std::string> GetString(const nlohmann::json& obj, const std::string& key,
-                                std::string_view where) {
-  std::string loc = std::string(where) + "/" + key;
-  if (!obj.contains(key)) return absl::InvalidArgumentError(loc + ": missing required string");
-  const auto& v = obj.at(key);
-  if (!v.is_string()) {
-    return absl::InvalidArgumentError(loc + ": expected a string, got " +
-                                      std::string(v.type_name()));
-  }
-  return v.get<std::string>();
 }
 
 }  // namespace simhuman::core

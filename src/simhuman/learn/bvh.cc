@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "simhuman/core/json_io.h"
+#include "simhuman/core/json_reader.h"
 #include "simhuman/world/sim_world.h"
 
 namespace simhuman::learn {
@@ -20,6 +21,9 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
 constexpr double kDeg = M_PI / 180.0;
+// deepest joint nesting accepted (human skeletons with fingers are about 30 deep); deeper
+// files are refused before the recursive parse runs out of stack
+constexpr int kMaxJointDepth = 256;
 
 // ---------------------------------------------------------------------------------------------
 // parsing
@@ -115,8 +119,13 @@ core::StatusOr<BvhChannel> ChannelOf(const std::string& s) {
   return it->second;
 }
 
-absl::Status ParseJoint(Lexer& lx, BvhMotion* bvh, int parent, bool root) {
+absl::Status ParseJoint(Lexer& lx, BvhMotion* bvh, int parent, int depth) {
+  const bool root = depth == 0;
   SH_ASSIGN_OR_RETURN(Token name, lx.Next("a joint name"));
+  if (depth >= kMaxJointDepth) {
+    return lx.Error(name.line,
+                    "joints nested deeper than " + std::to_string(kMaxJointDepth) + " levels");
+  }
   BvhJoint j;
   j.name = name.text;
   j.parent = parent;
@@ -135,7 +144,7 @@ absl::Status ParseJoint(Lexer& lx, BvhMotion* bvh, int parent, bool root) {
   int ch_line = lx.line();
   SH_ASSIGN_OR_RETURN(double n, lx.Number("the channel count"));
   if (!(n == 3 || n == 6)) {
-    return lx.Error(ch_line, "joint '" + j.name + "' has " + std::to_string(static_cast<int>(n)) +
+    return lx.Error(ch_line, "joint '" + j.name + "' has " + core::FormatNumber(n) +
                                  " channels; valid: 6 (root or positions + rotations) or 3");
   }
   int rot = 0;
@@ -162,7 +171,7 @@ absl::Status ParseJoint(Lexer& lx, BvhMotion* bvh, int parent, bool root) {
     SH_ASSIGN_OR_RETURN(Token t, lx.Next("JOINT, End Site or '}'"));
     if (t.text == "}") return absl::OkStatus();
     if (t.text == "JOINT") {
-      SH_RETURN_IF_ERROR(ParseJoint(lx, bvh, self, false));
+      SH_RETURN_IF_ERROR(ParseJoint(lx, bvh, self, depth + 1));
     } else if (t.text == "End") {
       SH_RETURN_IF_ERROR(lx.Expect("Site"));
       SH_RETURN_IF_ERROR(lx.Expect("{"));
@@ -301,7 +310,7 @@ core::StatusOr<BvhMotion> ParseBvh(const std::string& text, const std::string& w
   BvhMotion bvh;
   SH_RETURN_IF_ERROR(lx.Expect("HIERARCHY"));
   SH_RETURN_IF_ERROR(lx.Expect("ROOT"));
-  SH_RETURN_IF_ERROR(ParseJoint(lx, &bvh, -1, true));
+  SH_RETURN_IF_ERROR(ParseJoint(lx, &bvh, -1, 0));
   if (!lx.done() && lx.Peek().text == "ROOT") {
     return lx.Error(lx.line(), "a second ROOT is not supported (one skeleton per file)");
   }
@@ -322,7 +331,8 @@ core::StatusOr<BvhMotion> ParseBvh(const std::string& text, const std::string& w
   // frame values: one line per frame, from the line after "Frame Time:"
   const auto& lines = lx.lines();
   const int n_frames = static_cast<int>(nf);
-  bvh.frames.reserve(n_frames);
+  // as many as announced, but no more than there are lines (Frames: 10000000 in a short file)
+  bvh.frames.reserve(std::min<size_t>(n_frames, lines.size() - static_cast<size_t>(ft_line)));
   for (size_t li = static_cast<size_t>(ft_line); li < lines.size(); ++li) {
     std::istringstream in(lines[li]);
     std::vector<double> row;

@@ -228,6 +228,27 @@ TEST(Bvh, ParseErrorsNameTheLine) {
   ExpectErrorAt(t, LineOf(t, "End Sight"), "Site");
 }
 
+// found by tests/fuzz/bvh_fuzz: the message cast a huge channel count to int (undefined)
+TEST(Bvh, MalformedChannelCountIsAnErrorNamingTheCount) {
+  std::string t = ThreeFrames();
+  t.replace(t.find("CHANNELS 6"), 10, "CHANNELS 888888888888888888");
+  ExpectErrorAt(t, LineOf(t, "CHANNELS 888"), "has 8.88889e+17 channels; valid: 6");
+}
+
+// a hierarchy nested 20000 joints deep overflowed the stack of the recursive parse (ASan
+// stack-overflow); now refused at the first joint below the limit
+TEST(Bvh, MalformedDeepNestingIsAnErrorNotAStackOverflow) {
+  std::string t =
+      "HIERARCHY\nROOT a0\n{\nOFFSET 0 0 0\n"
+      "CHANNELS 6 Xposition Yposition Zposition Xrotation Yrotation Zrotation\n";
+  for (int i = 1; i < 20000; ++i) {
+    t += "JOINT a" + std::to_string(i) +
+         "\n{\nOFFSET 0 0 0\nCHANNELS 3 Xrotation Yrotation "
+         "Zrotation\n";
+  }
+  ExpectErrorAt(t, LineOf(t, "JOINT a256\n"), "joints nested deeper than 256 levels");
+}
+
 TEST(Bvh, MissingJointsAreListed) {
   std::string t = ThreeFrames();
   // rename LeftFoot: the retargeter must say which joint it needs

@@ -5,16 +5,14 @@
 #include <nlohmann/json.hpp>
 
 #include "simhuman/core/json_io.h"
+#include "simhuman/core/json_reader.h"
 
 namespace simhuman::learn {
 namespace {
 
 constexpr double kQuatNormTol = 1e-3;
 constexpr double kMaxFps = 1000;
-
-std::string FrameWhere(const std::string& where, size_t f) {
-  return where + ": /frames/" + std::to_string(f);
-}
+constexpr double kMaxResampledFrames = 1e6;  // 9 h at 30 fps; 280 MB of frames
 
 std::array<double, 4> Slerp(const std::array<double, 4>& a, std::array<double, 4> b, double u) {
   double dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
@@ -34,6 +32,63 @@ std::array<double, 4> Slerp(const std::array<double, 4>& a, std::array<double, 4
   double n = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
   for (double& v : r) v /= n;
   return r;
+}
+
+// the clip in `j`; errors name the JSON pointer of the culprit
+core::StatusOr<MotionClip> ClipFromJson(const nlohmann::json& j) {
+  SH_RETURN_IF_ERROR(core::CheckKeys(j, {"format", "fps", "joints", "frames", "source"}, "/"));
+  for (const char* k : {"format", "fps", "joints", "frames"}) {
+    SH_RETURN_IF_ERROR(core::RequireKey(j, k, "/"));
+  }
+  SH_RETURN_IF_ERROR(core::ReadName(j.at("format"), "/format", {kClipFormat}, "format").status());
+  MotionClip clip;
+  SH_ASSIGN_OR_RETURN(
+      clip.fps, core::ReadNumber(j.at("fps"), "/fps", core::NumberRange::AboveUpTo(0, kMaxFps)));
+  if (j.contains("source")) {
+    SH_ASSIGN_OR_RETURN(clip.source, core::ReadString(j.at("source"), "/source"));
+  }
+  const auto& names = world::HumanoidJointNames();
+  SH_ASSIGN_OR_RETURN(std::vector<std::string> joints,
+                      core::ReadStrings(j.at("joints"), "/joints"));
+  if (joints.size() != names.size()) {
+    return core::JsonError("/joints", "expected the " + std::to_string(names.size()) +
+                                          " hinge names in actuator order, got an array of " +
+                                          std::to_string(joints.size()) +
+                                          "; the names are: " + core::JoinNames(names));
+  }
+  for (size_t k = 0; k < names.size(); ++k) {
+    if (joints[k] != names[k]) {
+      return core::JsonError(core::JsonPointer("/joints", k),
+                             "expected '" + names[k] + "', got '" + joints[k] +
+                                 "' (actuator order: " + core::JoinNames(names) + ")");
+    }
+  }
+  const nlohmann::json& jf = j.at("frames");
+  if (!jf.is_array() || jf.empty()) {
+    return core::JsonError("/frames", "expected a non-empty array of rows");
+  }
+  clip.frames.resize(jf.size());
+  for (size_t f = 0; f < jf.size(); ++f) {
+    const std::string at = core::JsonPointer("/frames", f);
+    const nlohmann::json& row = jf[f];
+    if (!row.is_array() || row.size() != static_cast<size_t>(kClipRowSize)) {
+      return core::JsonError(at, "expected an array of " + std::to_string(kClipRowSize) +
+                                     " numbers (x y z, qw qx qy qz, 28 angles), got " +
+                                     (row.is_array() ? "an array of " + std::to_string(row.size())
+                                                     : std::string(row.type_name())));
+    }
+    SH_ASSIGN_OR_RETURN(auto v, core::ReadFixedNumbers<kClipRowSize>(row, at));
+    ClipFrame& fr = clip.frames[f];
+    std::copy(v.begin(), v.begin() + 3, fr.root_pos_m.begin());
+    std::copy(v.begin() + 3, v.begin() + 7, fr.root_quat_wxyz.begin());
+    std::copy(v.begin() + 7, v.end(), fr.q_rad.begin());
+    double n = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6]);
+    if (std::abs(n - 1) > kQuatNormTol) {
+      return core::JsonError(at, "the root quaternion (entries 3-6) has norm " +
+                                     core::FormatNumber(n) + "; it must be a unit quaternion");
+    }
+  }
+  return clip;
 }
 
 }  // namespace
@@ -63,72 +118,8 @@ absl::Status MotionClip::Validate() const {
 
 core::StatusOr<MotionClip> ParseMotionClip(const std::string& json_text, const std::string& where) {
   SH_ASSIGN_OR_RETURN(nlohmann::json j, core::ParseJson(json_text, where));
-  if (!j.is_object()) return absl::InvalidArgumentError(where + ": a clip must be a JSON object");
-  SH_RETURN_IF_ERROR(core::Annotate(
-      core::CheckKeys(j, {"format", "fps", "joints", "frames", "source"}, "/"), where));
-  for (const char* k : {"format", "fps", "joints", "frames"}) {
-    if (!j.contains(k)) return absl::InvalidArgumentError(where + ": /" + k + " is missing");
-  }
-  if (!j["format"].is_string() || j["format"].get<std::string>() != kClipFormat) {
-    return absl::InvalidArgumentError(where + ": /format must be \"" + kClipFormat + "\"");
-  }
-  MotionClip clip;
-  if (!j["fps"].is_number()) return absl::InvalidArgumentError(where + ": /fps must be a number");
-  clip.fps = j["fps"].get<double>();
-  if (!(clip.fps > 0 && clip.fps <= kMaxFps)) {
-    return absl::InvalidArgumentError(where + ": /fps must be in (0, 1000]");
-  }
-  if (j.contains("source")) {
-    if (!j["source"].is_string()) {
-      return absl::InvalidArgumentError(where + ": /source must be a string");
-    }
-    clip.source = j["source"].get<std::string>();
-  }
-  const auto& names = world::HumanoidJointNames();
-  const nlohmann::json& jn = j["joints"];
-  if (!jn.is_array() || jn.size() != names.size()) {
-    return absl::InvalidArgumentError(where + ": /joints must list the " +
-                                      std::to_string(names.size()) +
-                                      " hinge names in actuator order: " + core::JoinNames(names));
-  }
-  for (size_t k = 0; k < names.size(); ++k) {
-    if (!jn[k].is_string() || jn[k].get<std::string>() != names[k]) {
-      return absl::InvalidArgumentError(where + ": /joints/" + std::to_string(k) + " must be '" +
-                                        names[k] + "' (actuator order: " + core::JoinNames(names) +
-                                        ")");
-    }
-  }
-  const nlohmann::json& jf = j["frames"];
-  if (!jf.is_array() || jf.empty()) {
-    return absl::InvalidArgumentError(where + ": /frames must be a non-empty array of rows");
-  }
-  clip.frames.resize(jf.size());
-  for (size_t f = 0; f < jf.size(); ++f) {
-    const nlohmann::json& row = jf[f];
-    if (!row.is_array() || row.size() != static_cast<size_t>(kClipRowSize)) {
-      return absl::InvalidArgumentError(FrameWhere(where, f) + " must hold " +
-                                        std::to_string(kClipRowSize) +
-                                        " numbers (x y z, qw qx qy qz, 28 angles)");
-    }
-    double v[kClipRowSize];
-    for (int k = 0; k < kClipRowSize; ++k) {
-      if (!row[k].is_number() || !std::isfinite(row[k].get<double>())) {
-        return absl::InvalidArgumentError(FrameWhere(where, f) + "/" + std::to_string(k) +
-                                          " is not a finite number");
-      }
-      v[k] = row[k].get<double>();
-    }
-    ClipFrame& fr = clip.frames[f];
-    std::copy(v, v + 3, fr.root_pos_m.begin());
-    std::copy(v + 3, v + 7, fr.root_quat_wxyz.begin());
-    std::copy(v + 7, v + kClipRowSize, fr.q_rad.begin());
-    double n = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6]);
-    if (std::abs(n - 1) > kQuatNormTol) {
-      return absl::InvalidArgumentError(FrameWhere(where, f) +
-                                        ": the root quaternion (entries 3-6) has norm " +
-                                        std::to_string(n) + "; it must be a unit quaternion");
-    }
-  }
+  core::StatusOr<MotionClip> clip = ClipFromJson(j);
+  if (!clip.ok()) return core::Annotate(clip.status(), where);
   return clip;
 }
 
@@ -199,7 +190,16 @@ core::StatusOr<MotionClip> ResampleClip(const MotionClip& clip, double fps) {
   out.fps = fps;
   out.source = clip.source;
   const double dur = clip.duration_s();
-  const size_t n = static_cast<size_t>(std::floor(dur * fps + 1e-9)) + 1;
+  // a valid file can last for ages (fps 1e-6): refuse before the count overflows or the
+  // frames exhaust memory
+  const double count = std::floor(dur * fps + 1e-9) + 1;
+  if (!(count <= kMaxResampledFrames)) {
+    return absl::InvalidArgumentError("resample: the clip lasts " + core::FormatNumber(dur) +
+                                      " s: " + core::FormatNumber(count) + " frames at " +
+                                      core::FormatNumber(fps) + " fps, more than " +
+                                      core::FormatNumber(kMaxResampledFrames));
+  }
+  const size_t n = static_cast<size_t>(count);
   out.frames.reserve(n);
   for (size_t i = 0; i < n; ++i) out.frames.push_back(SampleClip(clip, i / fps));
   return out;

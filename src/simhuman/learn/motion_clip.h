@@ -54,7 +54,8 @@ std::string MotionClipToJson(const MotionClip& clip);
 absl::Status SaveMotionClip(const MotionClip& clip, const std::string& path);
 
 /// The clip resampled at `fps` over the same duration: linear interpolation of positions and
-/// angles, slerp of the root quaternion. InvalidArgument for fps outside (0, 1000].
+/// angles, slerp of the root quaternion. InvalidArgument for fps outside (0, 1000] and for
+/// more than 1e6 resampled frames (a valid clip at a tiny fps lasts for ages).
 core::StatusOr<MotionClip> ResampleClip(const MotionClip& clip, double fps);
 
 /// The pose at time t_s (clamped to the clip), interpolated as in ResampleClip.

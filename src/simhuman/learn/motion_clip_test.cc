@@ -121,5 +121,17 @@ TEST(MotionClip, ResampleInterpolates) {
   EXPECT_FALSE(ResampleClip(c, 0).ok());
 }
 
+// malformed_tiny_fps: a valid clip at fps 1e-300 lasts 1e300 s; resampling it cast 3e301 to
+// size_t (undefined), and at fps 1e-6 it asked for 17 GB (found with tests/fuzz/motion_clip_fuzz)
+TEST(MotionClip, MalformedTinyFpsIsAnErrorWhenResampled) {
+  for (double fps : {1e-300, 1e-6}) {
+    auto c = ParseMotionClip(ClipText("fps", fps), "malformed_tiny_fps.clip.json");
+    ASSERT_TRUE(c.ok()) << c.status();  // the file itself is valid
+    auto r = ResampleClip(*c, 30);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.status().message().find("more than 1000000"), std::string::npos) << r.status();
+  }
+}
+
 }  // namespace
 }  // namespace simhuman::learn

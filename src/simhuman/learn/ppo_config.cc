@@ -2,119 +2,113 @@
 
 #include <string>
 
+#include "simhuman/core/field_table.h"
+
 namespace simhuman::learn {
+namespace {
+
+using core::NumberRange;
+using F = core::Field<PpoConfig>;
+
+// one table drives reading, validation and JSON output; cross-field checks are in Validate()
+const core::FieldTable<PpoConfig>& Table() {
+  const NumberRange kPositive = NumberRange::Above(0);
+  const NumberRange kAtLeast0 = NumberRange::AtLeast(0);
+  const NumberRange kAtLeast1 = NumberRange::AtLeast(1);
+  const NumberRange kThreads = NumberRange::Closed(1, 64);
+  static const core::FieldTable<PpoConfig> kTable(
+      "training config",
+      {F("task", &PpoConfig::task, "training task").OneOf({"walk", "reach"}),
+       F("total_steps", &PpoConfig::total_steps, "env steps of the run").In(kAtLeast1),
+       F("num_envs", &PpoConfig::num_envs, "parallel envs").In(NumberRange::Closed(1, 4096)),
+       F("threads", &PpoConfig::threads, "env worker threads").In(kThreads),
+       F("torch_threads", &PpoConfig::torch_threads, "LibTorch threads while collecting")
+           .In(kThreads),
+       F("update_torch_threads", &PpoConfig::update_torch_threads,
+         "LibTorch threads during the update")
+           .In(kThreads),
+       F("rollout_chunks", &PpoConfig::rollout_chunks,
+         "env chunks inferred and stepped per worker (0: whole batch); at most num_envs")
+           .In(kAtLeast0),
+       F("physics_solver", &PpoConfig::physics_solver, "MuJoCo solver of the training physics")
+           .OneOf({"auto", "newton", "pgs"}),
+       F("seed", &PpoConfig::seed, "run seed"),
+       F("rollout_steps", &PpoConfig::rollout_steps, "steps per env per iteration").In(kAtLeast1),
+       F("epochs", &PpoConfig::epochs, "PPO epochs per iteration").In(kAtLeast1),
+       F("minibatches", &PpoConfig::minibatches, "minibatches per epoch").In(kAtLeast1),
+       F("lr", &PpoConfig::lr, "Adam learning rate").In(kPositive),
+       F("lr_final_frac", &PpoConfig::lr_final_frac, "final lr as a fraction of lr")
+           .In(NumberRange::Closed(0, 1)),
+       F("gamma", &PpoConfig::gamma, "discount").In(NumberRange::AboveUpTo(0, 1)),
+       F("lambda", &PpoConfig::lambda, "GAE lambda").In(NumberRange::Closed(0, 1)),
+       F("clip", &PpoConfig::clip, "PPO ratio clip").In(kPositive),
+       F("value_clip", &PpoConfig::value_clip, "value clip around the old prediction")
+           .In(kPositive),
+       F("value_coef", &PpoConfig::value_coef, "value loss weight"),
+       F("entropy_coef", &PpoConfig::entropy_coef, "entropy bonus weight"),
+       F("max_grad_norm", &PpoConfig::max_grad_norm, "gradient norm clip").In(kPositive),
+       F("init_std", &PpoConfig::init_std, "initial action std dev").In(kPositive),
+       F("hidden", &PpoConfig::hidden, "actor layer widths").MinItems(1).In(kAtLeast1),
+       F("critic_hidden", &PpoConfig::critic_hidden,
+         "value network layer widths (empty: as hidden)")
+           .In(kAtLeast1),
+       F("checkpoint_every_s", &PpoConfig::checkpoint_every_s, "wall seconds between checkpoints"),
+       F("max_bad_updates", &PpoConfig::max_bad_updates,
+         "non-finite updates in a row before aborting")
+           .In(kAtLeast1),
+       F("curriculum_max_steps", &PpoConfig::curriculum_max_steps,
+         "env steps at one curriculum level before it rises (0: only on success)"),
+       F("init_from", &PpoConfig::init_from, "policy file to start from (empty: random)"),
+       F("critic_warmup_iters", &PpoConfig::critic_warmup_iters,
+         "value-only iterations after init_from")
+           .In(kAtLeast0),
+       F("amp_clips", &PpoConfig::amp_clips, "AMP clip files (.clip.json or .bvh)").NonEmpty(),
+       F("amp_task_weight", &PpoConfig::amp_task_weight, "AMP task reward weight").In(kAtLeast0),
+       F("amp_style_weight", &PpoConfig::amp_style_weight, "AMP style reward weight").In(kAtLeast0),
+       F("amp_grad_penalty", &PpoConfig::amp_grad_penalty, "discriminator gradient penalty")
+           .In(kAtLeast0),
+       F("amp_disc_hidden", &PpoConfig::amp_disc_hidden, "discriminator layer widths")
+           .MinItems(1)
+           .In(kAtLeast1),
+       F("amp_disc_lr", &PpoConfig::amp_disc_lr, "discriminator learning rate").In(kPositive),
+       F("amp_disc_batch", &PpoConfig::amp_disc_batch, "pairs per discriminator minibatch")
+           .In(kAtLeast1),
+       F("amp_disc_updates", &PpoConfig::amp_disc_updates,
+         "discriminator minibatches per iteration")
+           .In(kAtLeast1),
+       F("amp_replay_size", &PpoConfig::amp_replay_size,
+         "agent pairs kept for the discriminator; at least amp_disc_batch")});
+  return kTable;
+}
+
+}  // namespace
 
 absl::Status PpoConfig::Validate() const {
-  if (task != "walk" && task != "reach") {
-    return absl::InvalidArgumentError("task '" + task + "' is unknown; valid: walk, reach");
-  }
-  if (total_steps <= 0) return absl::InvalidArgumentError("total_steps must be positive");
-  if (num_envs <= 0 || num_envs > 4096)
-    return absl::InvalidArgumentError("num_envs must be in [1, 4096]");
-  if (threads <= 0 || threads > 64 || torch_threads <= 0 || torch_threads > 64 ||
-      update_torch_threads <= 0 || update_torch_threads > 64) {
-    return absl::InvalidArgumentError(
-        "threads, torch_threads and update_torch_threads must be in [1, 64]");
-  }
-  if (physics_solver != "auto" && physics_solver != "newton" && physics_solver != "pgs") {
-    return absl::InvalidArgumentError("physics_solver '" + physics_solver +
-                                      "' is unknown; valid: auto, newton, pgs");
-  }
+  SH_RETURN_IF_ERROR(Table().Validate(*this));
   if (physics_solver == "pgs" && task != "walk") {
-    return absl::InvalidArgumentError("physics_solver '" + physics_solver +
+    return absl::InvalidArgumentError("training config: physics_solver '" + physics_solver +
                                       "' applies to the walk task only; task is '" + task + "'");
   }
-  if (rollout_chunks < 0 || rollout_chunks > num_envs) {
-    return absl::InvalidArgumentError("rollout_chunks must be in [0, num_envs]");
-  }
-  if (critic_warmup_iters < 0) {
-    return absl::InvalidArgumentError("critic_warmup_iters must not be negative");
-  }
-  if (rollout_steps <= 0 || epochs <= 0 || minibatches <= 0) {
-    return absl::InvalidArgumentError("rollout_steps, epochs and minibatches must be positive");
+  if (rollout_chunks > num_envs) {
+    return absl::InvalidArgumentError(
+        "training config 'rollout_chunks' = " + std::to_string(rollout_chunks) +
+        " is invalid; it must not exceed num_envs (" + std::to_string(num_envs) + ")");
   }
   if (static_cast<int64_t>(num_envs) * rollout_steps < minibatches) {
-    return absl::InvalidArgumentError("num_envs x rollout_steps must be >= minibatches");
-  }
-  if (!(lr > 0) || !(lr_final_frac >= 0 && lr_final_frac <= 1)) {
-    return absl::InvalidArgumentError("lr must be > 0 and lr_final_frac in [0, 1]");
-  }
-  if (!(gamma > 0 && gamma <= 1) || !(lambda >= 0 && lambda <= 1)) {
-    return absl::InvalidArgumentError("gamma must be in (0, 1] and lambda in [0, 1]");
-  }
-  if (!(clip > 0) || !(value_clip > 0) || !(max_grad_norm > 0) || !(init_std > 0)) {
-    return absl::InvalidArgumentError("clip, value_clip, max_grad_norm, init_std must be > 0");
-  }
-  if (hidden.empty() || *std::min_element(hidden.begin(), hidden.end()) <= 0) {
-    return absl::InvalidArgumentError("hidden must list positive layer widths");
-  }
-  if (!critic_hidden.empty() &&
-      *std::min_element(critic_hidden.begin(), critic_hidden.end()) <= 0) {
     return absl::InvalidArgumentError(
-        "critic_hidden must list positive layer widths (or be empty: the same as hidden)");
-  }
-  if (max_bad_updates <= 0) return absl::InvalidArgumentError("max_bad_updates must be positive");
-  if (!(amp_task_weight >= 0) || !(amp_style_weight >= 0) || !(amp_grad_penalty >= 0)) {
-    return absl::InvalidArgumentError(
-        "amp_task_weight, amp_style_weight and amp_grad_penalty must be >= 0");
-  }
-  if (amp_disc_hidden.empty() ||
-      *std::min_element(amp_disc_hidden.begin(), amp_disc_hidden.end()) <= 0) {
-    return absl::InvalidArgumentError("amp_disc_hidden must list positive layer widths");
-  }
-  if (!(amp_disc_lr > 0) || amp_disc_batch <= 0 || amp_disc_updates <= 0) {
-    return absl::InvalidArgumentError(
-        "amp_disc_lr, amp_disc_batch and amp_disc_updates must be positive");
+        "training config: num_envs x rollout_steps (" + std::to_string(num_envs) + " x " +
+        std::to_string(rollout_steps) + ") must be at least minibatches (" +
+        std::to_string(minibatches) + ")");
   }
   if (amp_replay_size < amp_disc_batch) {
-    return absl::InvalidArgumentError("amp_replay_size must be >= amp_disc_batch");
-  }
-  for (const std::string& c : amp_clips) {
-    if (c.empty()) return absl::InvalidArgumentError("amp_clips holds an empty path");
+    return absl::InvalidArgumentError(
+        "training config 'amp_replay_size' = " + std::to_string(amp_replay_size) +
+        " is invalid; it must be at least amp_disc_batch (" + std::to_string(amp_disc_batch) + ")");
   }
   return absl::OkStatus();
 }
 
-nlohmann::json PpoConfig::ToJson() const {
-  return nlohmann::json{{"task", task},
-                        {"total_steps", total_steps},
-                        {"num_envs", num_envs},
-                        {"threads", threads},
-                        {"torch_threads", torch_threads},
-                        {"update_torch_threads", update_torch_threads},
-                        {"rollout_chunks", rollout_chunks},
-                        {"physics_solver", physics_solver},
-                        {"seed", seed},
-                        {"rollout_steps", rollout_steps},
-                        {"epochs", epochs},
-                        {"minibatches", minibatches},
-                        {"lr", lr},
-                        {"lr_final_frac", lr_final_frac},
-                        {"gamma", gamma},
-                        {"lambda", lambda},
-                        {"clip", clip},
-                        {"value_clip", value_clip},
-                        {"value_coef", value_coef},
-                        {"entropy_coef", entropy_coef},
-                        {"max_grad_norm", max_grad_norm},
-                        {"init_std", init_std},
-                        {"hidden", hidden},
-                        {"critic_hidden", critic_hidden},
-                        {"checkpoint_every_s", checkpoint_every_s},
-                        {"max_bad_updates", max_bad_updates},
-                        {"curriculum_max_steps", curriculum_max_steps},
-                        {"init_from", init_from},
-                        {"critic_warmup_iters", critic_warmup_iters},
-                        {"amp_clips", amp_clips},
-                        {"amp_task_weight", amp_task_weight},
-                        {"amp_style_weight", amp_style_weight},
-                        {"amp_grad_penalty", amp_grad_penalty},
-                        {"amp_disc_hidden", amp_disc_hidden},
-                        {"amp_disc_lr", amp_disc_lr},
-                        {"amp_disc_batch", amp_disc_batch},
-                        {"amp_disc_updates", amp_disc_updates},
-                        {"amp_replay_size", amp_replay_size}};
-}
+nlohmann::json PpoConfig::ToJson() const { return Table().ToJson(*this); }
 
 core::StatusOr<PpoConfig> PpoConfig::FromCheckpointJson(const nlohmann::json& j) {
   SH_ASSIGN_OR_RETURN(PpoConfig c, FromJson(j));
@@ -123,59 +117,8 @@ core::StatusOr<PpoConfig> PpoConfig::FromCheckpointJson(const nlohmann::json& j)
 }
 
 core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
-  if (!j.is_object()) return absl::InvalidArgumentError("training config must be a JSON object");
   PpoConfig c;
-  nlohmann::json known = c.ToJson();
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    if (!known.contains(it.key())) {
-      return absl::InvalidArgumentError("/" + it.key() + ": unknown training config key");
-    }
-  }
-  try {
-    auto get = [&](const char* k, auto& v) {
-      if (j.contains(k)) j.at(k).get_to(v);
-    };
-    get("task", c.task);
-    get("total_steps", c.total_steps);
-    get("num_envs", c.num_envs);
-    get("threads", c.threads);
-    get("torch_threads", c.torch_threads);
-    get("update_torch_threads", c.update_torch_threads);
-    get("rollout_chunks", c.rollout_chunks);
-    get("physics_solver", c.physics_solver);
-    get("seed", c.seed);
-    get("rollout_steps", c.rollout_steps);
-    get("epochs", c.epochs);
-    get("minibatches", c.minibatches);
-    get("lr", c.lr);
-    get("lr_final_frac", c.lr_final_frac);
-    get("gamma", c.gamma);
-    get("lambda", c.lambda);
-    get("clip", c.clip);
-    get("value_clip", c.value_clip);
-    get("value_coef", c.value_coef);
-    get("entropy_coef", c.entropy_coef);
-    get("max_grad_norm", c.max_grad_norm);
-    get("init_std", c.init_std);
-    get("hidden", c.hidden);
-    get("critic_hidden", c.critic_hidden);
-    get("checkpoint_every_s", c.checkpoint_every_s);
-    get("max_bad_updates", c.max_bad_updates);
-    get("curriculum_max_steps", c.curriculum_max_steps);
-    get("init_from", c.init_from);
-    get("critic_warmup_iters", c.critic_warmup_iters);
-    get("amp_clips", c.amp_clips);
-    get("amp_task_weight", c.amp_task_weight);
-    get("amp_style_weight", c.amp_style_weight);
-    get("amp_grad_penalty", c.amp_grad_penalty);
-    get("amp_disc_hidden", c.amp_disc_hidden);
-    get("amp_disc_lr", c.amp_disc_lr);
-    get("amp_disc_batch", c.amp_disc_batch);
-    get("amp_disc_updates", c.amp_disc_updates);
-    get("amp_replay_size", c.amp_replay_size);
-  } catch (const nlohmann::json::exception& e) {
-    return absl::InvalidArgumentError(std::string("training config: ") + e.what());
-  }
+  SH_RETURN_IF_ERROR(Table().Read(j, "/", &c));
   SH_RETURN_IF_ERROR(c.Validate());
   return c;
 }

@@ -71,9 +71,15 @@ struct PpoConfig {
   int amp_disc_updates = 8;         ///< discriminator minibatches per iteration
   int64_t amp_replay_size = 65536;  ///< agent pairs kept for discriminator training
 
+  /// Every field in range (one field table, ppo_config.cc, drives Validate, ToJson and
+  /// FromJson), then the checks between fields; the message names the key, its value and what
+  /// is valid.
   absl::Status Validate() const;
+  /// Every key.
   nlohmann::json ToJson() const;
-  /// Strict: unknown keys are InvalidArgument naming the key; missing keys keep defaults.
+  /// Strict: an unknown key is InvalidArgument naming it and listing the valid keys, a wrong
+  /// type one naming its JSON pointer and the expected type, a bad value one from Validate();
+  /// missing keys keep defaults.
   static core::StatusOr<PpoConfig> FromJson(const nlohmann::json& j);
   /// FromJson for the config stored in a checkpoint. Keys added after the checkpoint was
   /// written take the value that reproduces what that run built, not today's default: a

@@ -29,7 +29,7 @@ core::StatusOr<const Embodiment*> FindEmbodiment(std::string_view name) {
     if (e.name == name) return &e;
   }
   return absl::InvalidArgumentError("unknown agent kind '" + std::string(name) +
-                                    "'; valid kinds are: " + core::JoinNames(EmbodimentNames()));
+                                    "'; valid agent kinds are: " + core::JoinNames(EmbodimentNames()));
 }
 
 HumanoidSpec MakeHumanoidSpec(const Embodiment& kind, double scale, int index) {

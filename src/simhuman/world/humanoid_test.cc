@@ -145,7 +145,7 @@ TEST(EmbodimentTest, KindsAreDataAndAnUnknownKindIsNamed) {
   EXPECT_EQ(Embodiments()[0].name, kDefaultAgentKind);
   core::StatusOr<const Embodiment*> bad = FindEmbodiment("robot");
   ASSERT_FALSE(bad.ok());
-  EXPECT_NE(bad.status().message().find("valid kinds are: humanoid, humanoid_right_hand"),
+  EXPECT_NE(bad.status().message().find("valid agent kinds are: humanoid, humanoid_right_hand"),
             std::string::npos)
       << bad.status();
   // the default kind's catalog is the 15 standard points

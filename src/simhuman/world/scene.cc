@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include "simhuman/core/geometry.h"
 #include "simhuman/core/json_io.h"
+#include "simhuman/core/json_reader.h"
 #include "simhuman/world/embodiment.h"
 
 namespace simhuman::world {
@@ -19,8 +18,8 @@ namespace {
 using nlohmann::json;
 
 constexpr double kDegToRad = M_PI / 180.0;
-constexpr double kMinHumanScale = 0.3;  // exclusive, as the model builder checks
-constexpr double kMaxHumanScale = 1.5;  // exclusive
+// (0.3, 1.5), exclusive as the model builder checks
+const core::NumberRange kHumanScaleRange = {0.3, 1.5, true, true};
 constexpr double kHumanRadiusM = 0.25;  // standing footprint of an adult (scaled)
 constexpr double kHumanHeightM = 1.8;   // objects higher than this (scaled) do not block
 constexpr double kDefaultHumanClearanceM = 0.35;
@@ -41,78 +40,6 @@ const std::vector<std::pair<std::string, std::string>> kPlanNames = {
     {"bar stool", "high_stool"}, {"bed", "bed"},           {"table", "table"},
     {"desk", "table"},           {"laptop", "laptop"},     {"box", "box"}};
 
-// JSON pointer of `key` under `parent` (RFC 6901 escaping)
-std::string Ptr(const std::string& parent, const std::string& key) {
-  std::string k;
-  for (char c : key) {
-    if (c == '~') {
-      k += "~0";
-    } else if (c == '/') {
-      k += "~1";
-    } else {
-      k += c;
-    }
-  }
-  return (parent == "/" ? std::string() : parent) + "/" + k;
-}
-std::string Ptr(const std::string& parent, size_t index) {
-  return Ptr(parent, std::to_string(index));
-}
-
-std::string Num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-core::Status Err(const std::string& where, const std::string& msg) {
-  return absl::InvalidArgumentError(where + ": " + msg);
-}
-
-core::StatusOr<double> Number(const json& v, const std::string& where) {
-  if (!v.is_number()) return Err(where, "expected a number, got " + std::string(v.type_name()));
-  double d = v.get<double>();
-  if (!std::isfinite(d)) return Err(where, "number is not finite");
-  return d;
-}
-
-// an optional number member
-core::StatusOr<std::optional<double>> OptNumber(const json& obj, const std::string& key,
-                                                const std::string& where) {
-  if (!obj.contains(key)) return std::optional<double>();
-  SH_ASSIGN_OR_RETURN(double d, Number(obj.at(key), Ptr(where, key)));
-  return std::optional<double>(d);
-}
-
-core::StatusOr<std::string> String(const json& v, const std::string& where) {
-  if (!v.is_string()) return Err(where, "expected a string, got " + std::string(v.type_name()));
-  return v.get<std::string>();
-}
-
-// an array of min_len..max_len finite numbers
-core::StatusOr<std::vector<double>> Numbers(const json& v, size_t min_len, size_t max_len,
-                                            const std::string& where) {
-  std::string want = min_len == max_len
-                         ? std::to_string(min_len)
-                         : std::to_string(min_len) + " or " + std::to_string(max_len);
-  if (!v.is_array() || v.size() < min_len || v.size() > max_len) {
-    return Err(where, "expected an array of " + want + " numbers, got " +
-                          (v.is_array() ? "an array of " + std::to_string(v.size())
-                                        : std::string(v.type_name())));
-  }
-  std::vector<double> out;
-  for (size_t i = 0; i < v.size(); ++i) {
-    SH_ASSIGN_OR_RETURN(double d, Number(v[i], Ptr(where, i)));
-    out.push_back(d);
-  }
-  return out;
-}
-
-core::Status Required(const json& obj, const std::string& key, const std::string& where) {
-  if (!obj.contains(key)) return Err(Ptr(where, key), "missing required key");
-  return absl::OkStatus();
-}
-
 std::string SourceStem(std::string_view source) {
   std::string s(source);
   size_t slash = s.find_last_of('/');
@@ -125,50 +52,56 @@ std::string SourceStem(std::string_view source) {
 
 core::StatusOr<ObjectSpec> ParseObject(const json& j, const std::string& where, size_t index) {
   SH_RETURN_IF_ERROR(core::CheckKeys(j, kObjectKeys, where));
-  SH_RETURN_IF_ERROR(Required(j, "type", where));
-  SH_RETURN_IF_ERROR(Required(j, "pos", where));
+  SH_RETURN_IF_ERROR(core::RequireKey(j, "type", where));
+  SH_RETURN_IF_ERROR(core::RequireKey(j, "pos", where));
   ObjectSpec o;
-  SH_ASSIGN_OR_RETURN(std::string type, String(j.at("type"), Ptr(where, "type")));
+  SH_ASSIGN_OR_RETURN(std::string type,
+                      core::ReadString(j.at("type"), core::JsonPointer(where, "type")));
   std::optional<std::string> canon = CanonicalObjectType(type);
   if (!canon) {
-    return Err(Ptr(where, "type"), "unknown object type '" + type +
-                                       "'; valid types are: " + core::JoinNames(ObjectTypes()));
+    return core::JsonError(
+        core::JsonPointer(where, "type"),
+        "unknown object type '" + type + "'; valid types are: " + core::JoinNames(ObjectTypes()));
   }
   o.type = *canon;
   if (j.contains("id")) {
-    SH_ASSIGN_OR_RETURN(o.id, String(j.at("id"), Ptr(where, "id")));
-    if (o.id.empty()) return Err(Ptr(where, "id"), "empty object id");
+    SH_ASSIGN_OR_RETURN(o.id, core::ReadString(j.at("id"), core::JsonPointer(where, "id")));
+    if (o.id.empty()) return core::JsonError(core::JsonPointer(where, "id"), "empty object id");
   } else {
     char buf[16];
     std::snprintf(buf, sizeof(buf), "%03zu", index);
     o.id = o.type + buf;
   }
-  SH_ASSIGN_OR_RETURN(std::vector<double> pos, Numbers(j.at("pos"), 2, 3, Ptr(where, "pos")));
+  SH_ASSIGN_OR_RETURN(std::vector<double> pos,
+                      core::ReadNumbers(j.at("pos"), core::JsonPointer(where, "pos"), 2, 3));
   o.pos = Eigen::Vector3d(pos[0], pos[1], pos.size() > 2 ? pos[2] : 0.0);
-  SH_ASSIGN_OR_RETURN(std::optional<double> yaw_deg, OptNumber(j, "yaw_deg", where));
+  SH_ASSIGN_OR_RETURN(std::optional<double> yaw_deg, core::ReadOptionalNumber(j, "yaw_deg", where));
   o.yaw_rad = yaw_deg.value_or(0.0) * kDegToRad;
-  SH_ASSIGN_OR_RETURN(std::optional<double> scale, OptNumber(j, "scale", where));
+  SH_ASSIGN_OR_RETURN(std::optional<double> scale, core::ReadOptionalNumber(j, "scale", where));
   o.scale = scale.value_or(1.0);
-  SH_ASSIGN_OR_RETURN(o.mass_kg, OptNumber(j, "mass_kg", where));
+  SH_ASSIGN_OR_RETURN(o.mass_kg, core::ReadOptionalNumber(j, "mass_kg", where));
   if (j.contains("color")) {
-    SH_ASSIGN_OR_RETURN(o.color, String(j.at("color"), Ptr(where, "color")));
+    SH_ASSIGN_OR_RETURN(o.color,
+                        core::ReadString(j.at("color"), core::JsonPointer(where, "color")));
     if (!ColorRgba(o.color)) {
-      return Err(Ptr(where, "color"), "unknown colour '" + o.color +
-                                          "'; valid colours are: " + core::JoinNames(ColorNames()));
+      return core::JsonError(
+          core::JsonPointer(where, "color"),
+          "unknown colour '" + o.color + "'; valid colours are: " + core::JoinNames(ColorNames()));
     }
   }
   if (j.contains("size")) {
     const json& size = j.at("size");
-    std::string sw = Ptr(where, "size");
-    if (!size.is_object()) return Err(sw, "expected an object of size parameters");
+    std::string sw = core::JsonPointer(where, "size");
+    if (!size.is_object()) return core::JsonError(sw, "expected an object of size parameters");
     std::vector<std::string> keys;
     for (const SizeParam& p : SizeParams(o.type)) keys.push_back(p.name);
     for (auto it = size.begin(); it != size.end(); ++it) {
       if (std::find(keys.begin(), keys.end(), it.key()) == keys.end()) {
-        return Err(Ptr(sw, it.key()), "unknown size key for type " + o.type +
-                                          "; valid keys are: " + core::JoinNames(keys));
+        return core::JsonError(
+            core::JsonPointer(sw, it.key()),
+            "unknown size key for type " + o.type + "; valid keys are: " + core::JoinNames(keys));
       }
-      SH_ASSIGN_OR_RETURN(double v, Number(it.value(), Ptr(sw, it.key())));
+      SH_ASSIGN_OR_RETURN(double v, core::ReadNumber(it.value(), core::JsonPointer(sw, it.key())));
       o.size[it.key()] = v;
     }
   }
@@ -177,30 +110,24 @@ core::StatusOr<ObjectSpec> ParseObject(const json& j, const std::string& where, 
 
 core::StatusOr<HumanSpec> ParseHuman(const json& j, const std::string& where) {
   SH_RETURN_IF_ERROR(core::CheckKeys(j, kHumanKeys, where));
-  SH_RETURN_IF_ERROR(Required(j, "pos", where));
+  SH_RETURN_IF_ERROR(core::RequireKey(j, "pos", where));
   HumanSpec h;
-  SH_ASSIGN_OR_RETURN(std::vector<double> pos, Numbers(j.at("pos"), 2, 2, Ptr(where, "pos")));
+  SH_ASSIGN_OR_RETURN(std::vector<double> pos,
+                      core::ReadNumbers(j.at("pos"), core::JsonPointer(where, "pos"), 2, 2));
   h.pos_xy = Eigen::Vector2d(pos[0], pos[1]);
-  SH_ASSIGN_OR_RETURN(std::optional<double> yaw_deg, OptNumber(j, "yaw_deg", where));
+  SH_ASSIGN_OR_RETURN(std::optional<double> yaw_deg, core::ReadOptionalNumber(j, "yaw_deg", where));
   h.yaw_rad = yaw_deg.value_or(0.0) * kDegToRad;
-  SH_ASSIGN_OR_RETURN(std::optional<double> scale, OptNumber(j, "scale", where));
+  SH_ASSIGN_OR_RETURN(std::optional<double> scale,
+                      core::ReadOptionalNumber(j, "scale", where, kHumanScaleRange));
   h.scale = scale.value_or(1.0);
-  if (!(h.scale > kMinHumanScale && h.scale < kMaxHumanScale)) {
-    return Err(Ptr(where, "scale"), "human scale " + Num(h.scale) + " is outside (" +
-                                        Num(kMinHumanScale) + ", " + Num(kMaxHumanScale) + ")");
-  }
   if (j.contains("posture")) {
-    SH_ASSIGN_OR_RETURN(h.posture, String(j.at("posture"), Ptr(where, "posture")));
-    const auto& valid = HumanPostures();
-    if (std::find(valid.begin(), valid.end(), h.posture) == valid.end()) {
-      return Err(Ptr(where, "posture"), "unknown posture '" + h.posture +
-                                            "'; valid postures are: " + core::JoinNames(valid));
-    }
+    SH_ASSIGN_OR_RETURN(h.posture,
+                        core::ReadName(j.at("posture"), core::JsonPointer(where, "posture"),
+                                       HumanPostures(), "posture"));
   }
   if (j.contains("kind")) {
-    SH_ASSIGN_OR_RETURN(h.kind, String(j.at("kind"), Ptr(where, "kind")));
-    core::StatusOr<const Embodiment*> kind = FindEmbodiment(h.kind);
-    if (!kind.ok()) return Err(Ptr(where, "kind"), std::string(kind.status().message()));
+    SH_ASSIGN_OR_RETURN(h.kind, core::ReadName(j.at("kind"), core::JsonPointer(where, "kind"),
+                                               EmbodimentNames(), "agent kind"));
   }
   return h;
 }
@@ -210,25 +137,26 @@ core::StatusOr<SceneSpec> ParseOurForm(const json& j, std::string_view source) {
   SceneSpec spec;
   spec.name = SourceStem(source);
   if (j.contains("name")) {
-    SH_ASSIGN_OR_RETURN(spec.name, String(j.at("name"), "/name"));
+    SH_ASSIGN_OR_RETURN(spec.name, core::ReadString(j.at("name"), "/name"));
   }
-  SH_RETURN_IF_ERROR(Required(j, "objects", "/"));
+  SH_RETURN_IF_ERROR(core::RequireKey(j, "objects", "/"));
   const json& objects = j.at("objects");
   if (!objects.is_array()) {
-    return Err("/objects", "expected an array of objects, got " + std::string(objects.type_name()));
+    return core::JsonError("/objects",
+                           "expected an array of objects, got " + std::string(objects.type_name()));
   }
   for (size_t i = 0; i < objects.size(); ++i) {
-    SH_ASSIGN_OR_RETURN(ObjectSpec o, ParseObject(objects[i], Ptr("/objects", i), i));
+    SH_ASSIGN_OR_RETURN(ObjectSpec o, ParseObject(objects[i], core::JsonPointer("/objects", i), i));
     spec.objects.push_back(std::move(o));
   }
   if (j.contains("humans")) {
     const json& humans = j.at("humans");
     if (!humans.is_array() || humans.empty()) {
-      return Err("/humans",
-                 "expected a non-empty array of humans (omit the key for one default human)");
+      return core::JsonError(
+          "/humans", "expected a non-empty array of humans (omit the key for one default human)");
     }
     for (size_t i = 0; i < humans.size(); ++i) {
-      SH_ASSIGN_OR_RETURN(HumanSpec h, ParseHuman(humans[i], Ptr("/humans", i)));
+      SH_ASSIGN_OR_RETURN(HumanSpec h, ParseHuman(humans[i], core::JsonPointer("/humans", i)));
       spec.humans.push_back(std::move(h));
     }
   }
@@ -245,20 +173,22 @@ std::vector<std::string> PlanNames() {
 // returns the summed z angle
 core::StatusOr<double> PlanRotationZ(const json& rotate, const std::string& where) {
   if (!rotate.is_array() || rotate.empty()) {
-    return Err(where, "expected a non-empty array of [x, y, z] rotations");
+    return core::JsonError(where, "expected a non-empty array of [x, y, z] rotations");
   }
   double z = 0.0;
   for (size_t i = 0; i < rotate.size(); ++i) {
-    std::string w = Ptr(where, i);
-    SH_ASSIGN_OR_RETURN(std::vector<double> r, Numbers(rotate[i], 3, 3, w));
+    std::string w = core::JsonPointer(where, i);
+    SH_ASSIGN_OR_RETURN(std::vector<double> r, core::ReadNumbers(rotate[i], w, 3, 3));
     if (i == 0) {
       if (std::abs(r[0] - M_PI / 2) > kScenePlanRotTolerance ||
           std::abs(r[1]) > kScenePlanRotTolerance || std::abs(r[2]) > kScenePlanRotTolerance) {
-        return Err(w, "the first rotation must be the Y-up to Z-up fix [1.5707963267948966, 0, 0]");
+        return core::JsonError(
+            w, "the first rotation must be the Y-up to Z-up fix [1.5707963267948966, 0, 0]");
       }
     } else {
       if (std::abs(r[0]) > kScenePlanRotTolerance || std::abs(r[1]) > kScenePlanRotTolerance) {
-        return Err(w, "only rotations about z ([0, 0, angle]) are supported after the first");
+        return core::JsonError(
+            w, "only rotations about z ([0, 0, angle]) are supported after the first");
       }
       z += r[2];
     }
@@ -276,22 +206,23 @@ double PlanYawOffset(const std::string& type) { return type == "bed" ? M_PI : M_
 core::StatusOr<SceneSpec> ParsePlanForm(const json& j, const std::string& where,
                                         const std::string& name, std::vector<std::string>* ptrs) {
   SH_RETURN_IF_ERROR(core::CheckKeys(j, kPlanKeys, where));
-  SH_RETURN_IF_ERROR(Required(j, "obj", where));
-  std::string ow = Ptr(where, "obj");
+  SH_RETURN_IF_ERROR(core::RequireKey(j, "obj", where));
+  std::string ow = core::JsonPointer(where, "obj");
   const json& objs = j.at("obj");
   if (!objs.is_object()) {
-    return Err(ow, "expected an object of objects keyed \"000\", \"001\", ...");
+    return core::JsonError(ow, "expected an object of objects keyed \"000\", \"001\", ...");
   }
   SceneSpec spec;
   spec.name = name;
   for (auto it = objs.begin(); it != objs.end(); ++it) {
-    std::string w = Ptr(ow, it.key());
+    std::string w = core::JsonPointer(ow, it.key());
     const json& o = it.value();
     SH_RETURN_IF_ERROR(core::CheckKeys(o, kPlanObjectKeys, w));
-    SH_RETURN_IF_ERROR(Required(o, "name", w));
-    SH_RETURN_IF_ERROR(Required(o, "transfer", w));
-    SH_RETURN_IF_ERROR(Required(o, "rotate", w));
-    SH_ASSIGN_OR_RETURN(std::string plan_name, String(o.at("name"), Ptr(w, "name")));
+    SH_RETURN_IF_ERROR(core::RequireKey(o, "name", w));
+    SH_RETURN_IF_ERROR(core::RequireKey(o, "transfer", w));
+    SH_RETURN_IF_ERROR(core::RequireKey(o, "rotate", w));
+    SH_ASSIGN_OR_RETURN(std::string plan_name,
+                        core::ReadString(o.at("name"), core::JsonPointer(w, "name")));
     std::string norm;
     for (char c : plan_name) {
       norm += c == '_' ? ' ' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -299,20 +230,24 @@ core::StatusOr<SceneSpec> ParsePlanForm(const json& j, const std::string& where,
     auto match = std::find_if(kPlanNames.begin(), kPlanNames.end(),
                               [&](const auto& p) { return p.first == norm; });
     if (match == kPlanNames.end()) {
-      return Err(Ptr(w, "name"), "unknown ScenePlan object name '" + plan_name +
-                                     "'; valid names are: " + core::JoinNames(PlanNames()));
+      return core::JsonError(core::JsonPointer(w, "name"),
+                             "unknown ScenePlan object name '" + plan_name +
+                                 "'; valid names are: " + core::JoinNames(PlanNames()));
     }
     ObjectSpec spec_o;
     spec_o.type = match->second;
     spec_o.id = plan_name + it.key();
-    SH_ASSIGN_OR_RETURN(std::vector<double> t, Numbers(o.at("transfer"), 3, 3, Ptr(w, "transfer")));
+    SH_ASSIGN_OR_RETURN(
+        std::vector<double> t,
+        core::ReadNumbers(o.at("transfer"), core::JsonPointer(w, "transfer"), 3, 3));
     spec_o.pos = Eigen::Vector3d(t[0], t[1], t[2]);
-    SH_ASSIGN_OR_RETURN(double z, PlanRotationZ(o.at("rotate"), Ptr(w, "rotate")));
+    SH_ASSIGN_OR_RETURN(double z, PlanRotationZ(o.at("rotate"), core::JsonPointer(w, "rotate")));
     spec_o.yaw_rad = core::WrapAngle(z + PlanYawOffset(spec_o.type));
     // "scale" scales PartNet's unit-size meshes; our objects are metric, so it is only checked
     if (o.contains("scale")) {
-      SH_ASSIGN_OR_RETURN(double s, Number(o.at("scale"), Ptr(w, "scale")));
-      if (!(s > 0)) return Err(Ptr(w, "scale"), "scale must be positive");
+      SH_RETURN_IF_ERROR(core::ReadNumber(o.at("scale"), core::JsonPointer(w, "scale"),
+                                          core::NumberRange::Above(0))
+                             .status());
     }
     spec.objects.push_back(std::move(spec_o));
     ptrs->push_back(w);
@@ -356,7 +291,8 @@ core::Status Finish(SceneSpec& spec, const std::vector<std::string>& ptrs, bool 
     const std::string& w = ptrs[i];
     auto [it, fresh] = seen.emplace(o.id, w);
     if (!fresh) {
-      return Err(w, "duplicate object id '" + o.id + "' (also used by " + it->second + ")");
+      return core::JsonError(
+          w, "duplicate object id '" + o.id + "' (also used by " + it->second + ")");
     }
     core::StatusOr<core::CatalogObject> obj = BuildObject(o);
     if (!obj.ok()) return core::Annotate(obj.status(), w);
@@ -383,9 +319,10 @@ core::Status Finish(SceneSpec& spec, const std::vector<std::string>& ptrs, bool 
       Eigen::Vector3d local =
           o.pose.ApplyInverse(Eigen::Vector3d(human.pos_xy.x(), human.pos_xy.y(), o.pose.pos.z()));
       if (DistanceXy(b, local.head<2>()) < kHumanRadiusM * human.scale) {
-        return Err(Ptr("/humans", h), "a standing human at (" + Num(human.pos_xy.x()) + ", " +
-                                          Num(human.pos_xy.y()) + ") overlaps object '" + o.id +
-                                          "'");
+        return core::JsonError(core::JsonPointer("/humans", h),
+                               "a standing human at (" + core::FormatNumber(human.pos_xy.x()) +
+                                   ", " + core::FormatNumber(human.pos_xy.y()) +
+                                   ") overlaps object '" + o.id + "'");
       }
     }
   }
@@ -534,7 +471,7 @@ const std::vector<std::string>& HumanPostures() {
 core::StatusOr<SceneSpec> ParseSceneJson(const nlohmann::json& j, std::string_view source) {
   auto parse = [&]() -> core::StatusOr<SceneSpec> {
     if (!j.is_object())
-      return Err("/", "expected a JSON object, got " + std::string(j.type_name()));
+      return core::JsonError("/", "expected a JSON object, got " + std::string(j.type_name()));
     std::vector<std::string> ptrs;
     if (j.contains("obj")) {
       SH_ASSIGN_OR_RETURN(SceneSpec spec, ParsePlanForm(j, "/", SourceStem(source), &ptrs));
@@ -548,18 +485,20 @@ core::StatusOr<SceneSpec> ParseSceneJson(const nlohmann::json& j, std::string_vi
         if (it.value().is_object() && it.value().contains("obj")) plans.push_back(it.key());
       }
       if (plans.size() == 1 && j.size() == 1) {
-        std::string w = Ptr("/", plans[0]);
+        std::string w = core::JsonPointer("/", plans[0]);
         SH_ASSIGN_OR_RETURN(SceneSpec spec, ParsePlanForm(j.at(plans[0]), w, plans[0], &ptrs));
         SH_RETURN_IF_ERROR(Finish(spec, ptrs, true));
         return spec;
       }
       if (plans.size() > 1) {
-        return Err("/", "holds " + std::to_string(plans.size()) + " ScenePlan entries (" +
-                            core::JoinNames(plans) + "); pass one of them");
+        return core::JsonError("/", "holds " + std::to_string(plans.size()) +
+                                        " ScenePlan entries (" + core::JoinNames(plans) +
+                                        "); pass one of them");
       }
     }
     SH_ASSIGN_OR_RETURN(SceneSpec spec, ParseOurForm(j, source));
-    for (size_t i = 0; i < spec.objects.size(); ++i) ptrs.push_back(Ptr("/objects", i));
+    for (size_t i = 0; i < spec.objects.size(); ++i)
+      ptrs.push_back(core::JsonPointer("/objects", i));
     SH_RETURN_IF_ERROR(Finish(spec, ptrs, false));
     return spec;
   };
@@ -585,7 +524,8 @@ core::StatusOr<SceneSpec> BuiltinScene(std::string_view name) {
     // the same checks as a scene file (a failure here is a bug in the layout)
     SceneSpec spec = fn();
     std::vector<std::string> ptrs;
-    for (size_t i = 0; i < spec.objects.size(); ++i) ptrs.push_back(Ptr("/objects", i));
+    for (size_t i = 0; i < spec.objects.size(); ++i)
+      ptrs.push_back(core::JsonPointer("/objects", i));
     core::Status st = Finish(spec, ptrs, false);
     if (!st.ok()) return core::Annotate(st, "built-in scene " + n);
     return spec;

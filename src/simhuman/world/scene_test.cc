@@ -101,8 +101,8 @@ TEST(SceneTest, NonFiniteAndWrongTypesInMemoryJson) {
   j = {{"objects", nlohmann::json::array()}, {"humans", nlohmann::json::array()}};
   EXPECT_THAT(ParseError(j), HasSubstr("/humans: expected a non-empty array"));
   j = {{"objects", nlohmann::json::array()}, {"humans", {{{"pos", {0, 0}}, {"kind", "robot"}}}}};
-  EXPECT_THAT(ParseError(j), HasSubstr("/humans/0/kind: unknown agent kind 'robot'; valid kinds "
-                                       "are: humanoid, humanoid_right_hand"));
+  EXPECT_THAT(ParseError(j), HasSubstr("/humans/0/kind: unknown agent kind 'robot'; valid agent "
+                                       "kinds are: humanoid, humanoid_right_hand"));
   j = {{"name", "x"}};
   EXPECT_THAT(ParseError(j), HasSubstr("/objects: missing required key"));
   EXPECT_THAT(ParseError(nlohmann::json::array()), HasSubstr("expected a JSON object"));

@@ -48,11 +48,15 @@ struct MpcConfig {
   /// Largest offset (rad) the hand servo may add to one arm joint's servo target.
   double hand_servo_max_rad = 0.6;
 
-  /// Every field finite and in range; the message names the field and the valid range.
+  /// Every field finite and in range (one field table, mpc_config.cc, drives Validate, ToJson
+  /// and FromJson); the message names the field, its value and the valid range.
   absl::Status Validate() const;
+  /// Every key, "preset" included.
   nlohmann::json ToJson() const;
-  /// Strict: unknown keys and wrong types are errors naming the key. Missing keys keep the
-  /// preset's value (the preset named by "preset", default "fast").
+  /// Strict: an unknown key is an error naming it and listing the valid keys, a wrong type one
+  /// naming its JSON pointer and the expected type, a bad value one naming the key, the value
+  /// and the valid range. Missing keys keep the preset's value (the preset named by "preset",
+  /// default "fast"). Errors start with `where` (a file name; empty: no prefix).
   static absl::StatusOr<MpcConfig> FromJson(const nlohmann::json& j, std::string_view where);
   /// "fast" (real time on 2 cores) or "quality" (more samples, finer planning).
   static absl::StatusOr<MpcConfig> Preset(std::string_view name);

@@ -1,0 +1,85 @@
+#include "simhuman/learn/ppo_config.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace simhuman::learn {
+namespace {
+
+using nlohmann::json;
+using ::testing::HasSubstr;
+
+std::string Error(const json& j) {
+  core::StatusOr<PpoConfig> c = PpoConfig::FromJson(j);
+  return c.ok() ? std::string() : std::string(c.status().message());
+}
+
+TEST(PpoConfigTable, DefaultsRoundTripThroughToJsonWithEveryKey) {
+  const PpoConfig defaults;
+  json j = defaults.ToJson();
+  EXPECT_EQ(j.size(), 38u);  // every key, as before the table
+  EXPECT_TRUE(j["seed"].is_number_unsigned());
+  EXPECT_TRUE(j["total_steps"].is_number_integer());
+  auto back = PpoConfig::FromJson(json::parse(j.dump()));
+  ASSERT_TRUE(back.ok()) << back.status();
+  EXPECT_EQ(back->ToJson(), j);
+  // missing keys keep the defaults; 3e7 is an integer
+  auto partial = PpoConfig::FromJson(json{{"total_steps", 3e7}, {"hidden", {64, 64}}});
+  ASSERT_TRUE(partial.ok()) << partial.status();
+  EXPECT_EQ(partial->total_steps, 30'000'000);
+  EXPECT_EQ(partial->hidden, (std::vector<int>{64, 64}));
+  EXPECT_EQ(partial->num_envs, defaults.num_envs);
+  EXPECT_EQ(partial->critic_hidden, defaults.critic_hidden);
+  // the whole uint64 range of seeds, exactly
+  auto seed = PpoConfig::FromJson(json::parse("{\"seed\": 18446744073709551615}"));
+  ASSERT_TRUE(seed.ok()) << seed.status();
+  EXPECT_EQ(seed->seed, 18446744073709551615u);
+}
+
+TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
+  EXPECT_THAT(Error(json{{"learning_rate", 1e-4}}),
+              HasSubstr("unknown key 'learning_rate'; valid keys are: task, total_steps"));
+  EXPECT_EQ(Error(json{{"num_envs", 5000}}),
+            "training config 'num_envs' = 5000 is invalid; valid range is [1, 4096]");
+  EXPECT_EQ(Error(json{{"gamma", 0}}),
+            "training config 'gamma' = 0 is invalid; valid range is (0, 1]");
+  EXPECT_EQ(Error(json{{"task", "fly"}}),
+            "training config 'task' = \"fly\" is invalid; valid values are: walk, reach");
+  EXPECT_EQ(Error(json{{"hidden", json::array()}}),
+            "training config 'hidden' = [] is invalid; it needs at least 1 entry");
+  EXPECT_THAT(Error(json{{"amp_disc_hidden", {256, -1}}}),
+              HasSubstr("'amp_disc_hidden' = [256, -1] is invalid; entry 1 (-1) is outside"));
+  EXPECT_THAT(
+      Error(json{{"amp_clips", {"a.bvh", ""}}}),
+      HasSubstr("'amp_clips' = [\"a.bvh\", \"\"] is invalid; entry 1: it must not be empty"));
+  // types: the pointer and what was expected
+  EXPECT_EQ(Error(json{{"lr", "fast"}}), "/lr: expected a number, got string");
+  EXPECT_EQ(Error(json{{"num_envs", 64.5}}), "/num_envs: expected an integer, got 64.5");
+  EXPECT_EQ(Error(json{{"epochs", true}}), "/epochs: expected an integer, got boolean");
+  EXPECT_THAT(Error(json{{"seed", -1}}), HasSubstr("/seed: expected an integer in [0, "));
+  EXPECT_EQ(Error(json{{"critic_hidden", {64, "x"}}}),
+            "/critic_hidden/1: expected an integer, got string");
+  EXPECT_EQ(Error(json::array()), "/: expected a JSON object, got array");
+}
+
+TEST(PpoConfigTable, CrossFieldChecksFollowTheTable) {
+  EXPECT_THAT(Error(json{{"num_envs", 4}, {"rollout_chunks", 5}}),
+              HasSubstr("'rollout_chunks' = 5 is invalid; it must not exceed num_envs (4)"));
+  EXPECT_TRUE(Error(json{{"num_envs", 4}, {"rollout_chunks", 4}}).empty());
+  EXPECT_THAT(Error(json{{"num_envs", 1}, {"rollout_steps", 2}, {"minibatches", 3}}),
+              HasSubstr("num_envs x rollout_steps (1 x 2) must be at least minibatches (3)"));
+  EXPECT_THAT(Error(json{{"amp_disc_batch", 10}, {"amp_replay_size", 9}}),
+              HasSubstr("'amp_replay_size' = 9 is invalid; it must be at least amp_disc_batch"));
+  EXPECT_THAT(Error(json{{"physics_solver", "pgs"}, {"task", "reach"}}),
+              HasSubstr("applies to the walk task only"));
+  // Validate() checks a struct built in code the same way
+  PpoConfig c;
+  c.threads = 0;
+  EXPECT_EQ(std::string(c.Validate().message()),
+            "training config 'threads' = 0 is invalid; valid range is [1, 64]");
+}
+
+}  // namespace
+}  // namespace simhuman::learn
