@@ -14,7 +14,9 @@ namespace simhuman::control {
 namespace {
 
 constexpr double kSeatTolM = 0.06;
-constexpr double kStandingHeadM = 1.4;  // an adult's head point while standing (about 1.58 m)
+// a head point above this is a standing adult's (1.6 m at the start), below it a seated one's
+// (about 1.2 m on a chair)
+constexpr double kStandingHeadM = 1.3;
 constexpr double kGripTolRad = 0.15;
 
 // holds the agent's standing servo targets from the start; asks for its own physics timestep
