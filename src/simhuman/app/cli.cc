@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 
 #include "simhuman/app/clip_command.h"
 #include "simhuman/app/common.h"
@@ -61,145 +62,164 @@ std::string ParsedCommand(const CLI::App& app) {
   return "";
 }
 
-}  // namespace
+// `simhuman export-policy`'s flags
+struct ExportFlags {
+  std::string checkpoint, out, eval_summary;
+};
 
-std::string VersionText() {
-  return std::string("simhuman ") + kVersion + " (git " + std::string(core::GitRevision()) +
-         ", MuJoCo " + mj_versionString() + ")";
-}
+// `simhuman clip`'s two subcommands
+struct ClipCommands {
+  CLI::App* convert = nullptr;
+  CLI::App* gait = nullptr;
+};
 
-int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app{"simhuman: simulated humans that carry out Chain-of-Contacts plans", "simhuman"};
-  app.set_version_flag("--version", VersionText(), "Print the version and exit");
-  app.require_subcommand(0, 1);
-
-  RunFlags run;
+// `simhuman run`: its flags into `run`; `preset` tells later whether --preset was given
+CLI::App* AddRunCommand(CLI::App& app, RunFlags* run, CLI::Option** preset) {
   CLI::App* run_cmd = app.add_subcommand("run", "Run one plan in one scene and write the results");
   run_cmd
-      ->add_option("--scene", run.scene,
+      ->add_option("--scene", run->scene,
                    "Built-in scene name (see 'simhuman scenes') or scene JSON file")
       ->required();
-  run_cmd->add_option("--plan", run.plan,
+  run_cmd->add_option("--plan", run->plan,
                       "Chain-of-Contacts plan JSON file (this or --command is required)");
-  run_cmd->add_option("--command", run.command,
+  run_cmd->add_option("--command", run->command,
                       "Text command to plan and run instead of --plan, e.g. \"sit on the chair\"");
   run_cmd
-      ->add_option("--planner", run.planner,
+      ->add_option("--planner", run->planner,
                    "Planner for --command: " + core::JoinNames(PlannerNames()))
       ->capture_default_str();
-  AddLlmFlags(*run_cmd, run.llm);
-  run_cmd->add_option("--seed", run.seed, "Random seed of the controllers")
+  AddLlmFlags(*run_cmd, run->llm);
+  run_cmd->add_option("--seed", run->seed, "Random seed of the controllers")
       ->check(SeedValidator())
       ->capture_default_str();
-  CLI::Option* run_preset =
-      run_cmd->add_option("--preset", run.preset, "MPC preset: fast or quality")
-          ->capture_default_str();
-  run_cmd->add_option("--config", run.config, "MPC settings JSON file (keys of MpcConfig)");
-  run_cmd->add_option("--out", run.out, "Output folder")->capture_default_str();
-  run_cmd->add_flag("--video", run.video, "Also render DIR/video.mp4 and DIR/contact_sheet.png");
-  run_cmd->add_option("--policy", run.policy,
+  *preset = run_cmd->add_option("--preset", run->preset, "MPC preset: fast or quality")
+                ->capture_default_str();
+  run_cmd->add_option("--config", run->config, "MPC settings JSON file (keys of MpcConfig)");
+  run_cmd->add_option("--out", run->out, "Output folder")->capture_default_str();
+  run_cmd->add_flag("--video", run->video, "Also render DIR/video.mp4 and DIR/contact_sheet.png");
+  run_cmd->add_option("--policy", run->policy,
                       "Walking policy for get-close steps (default assets/policies/walk.pt if "
                       "present)");
-  run_cmd->add_flag("--no-walk", run.no_walk, "Do get-close steps with the MPC only");
-  run_cmd->add_option("--start", run.start,
+  run_cmd->add_flag("--no-walk", run->no_walk, "Do get-close steps with the MPC only");
+  run_cmd->add_option("--start", run->start,
                       "Where the first human starts, standing: X,Y[,YAW_DEG] (m, degrees; "
                       "overrides the scene)");
-  run_cmd->add_option("--settle", run.settle_s, "Seconds to keep simulating after the last step")
+  run_cmd->add_option("--settle", run->settle_s, "Seconds to keep simulating after the last step")
       ->capture_default_str();
+  return run_cmd;
+}
 
-  EvalFlags ev;
+// `simhuman eval`: its flags into `ev`; `preset` tells later whether --preset was given
+CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
   std::string suites = core::JoinNames(eval::SuiteNames());
   CLI::App* eval_cmd = app.add_subcommand("eval", "Run a benchmark suite of random episodes");
-  eval_cmd->add_option("--suite", ev.suite, "Suite: " + suites)->required();
-  eval_cmd->add_option("--episodes", ev.episodes, "Number of episodes")->capture_default_str();
-  eval_cmd->add_option("--seed", ev.seed, "Seed of the suite (episode i uses DeriveSeed(seed, i))")
+  eval_cmd->add_option("--suite", ev->suite, "Suite: " + suites)->required();
+  eval_cmd->add_option("--episodes", ev->episodes, "Number of episodes")->capture_default_str();
+  eval_cmd->add_option("--seed", ev->seed, "Seed of the suite (episode i uses DeriveSeed(seed, i))")
       ->check(SeedValidator())
       ->capture_default_str();
-  eval_cmd->add_option("--out", ev.out, "Output folder (default out/eval_<suite>)");
-  CLI::Option* eval_preset =
-      eval_cmd->add_option("--preset", ev.preset, "MPC preset: fast or quality")
-          ->capture_default_str();
-  eval_cmd->add_option("--config", ev.config, "MPC settings JSON file (keys of MpcConfig)");
-  eval_cmd->add_option("--corpus", ev.corpus,
+  eval_cmd->add_option("--out", ev->out, "Output folder (default out/eval_<suite>)");
+  *preset = eval_cmd->add_option("--preset", ev->preset, "MPC preset: fast or quality")
+                ->capture_default_str();
+  eval_cmd->add_option("--config", ev->config, "MPC settings JSON file (keys of MpcConfig)");
+  eval_cmd->add_option("--corpus", ev->corpus,
                        "language suite: command corpus (JSON lines; default: the one in the "
                        "sources)");
-  eval_cmd->add_option("--planner", ev.planner, "language suite: planner")->capture_default_str();
-  AddLlmFlags(*eval_cmd, ev.llm);
+  eval_cmd->add_option("--planner", ev->planner, "language suite: planner")->capture_default_str();
+  AddLlmFlags(*eval_cmd, ev->llm);
   eval_cmd
-      ->add_option("--video-every", ev.video_every,
+      ->add_option("--video-every", ev->video_every,
                    "Render every K-th episode's contact sheet to DIR/ep<i>.png (0: none)")
       ->capture_default_str();
 
-  eval_cmd->add_option("--policy", ev.policy,
+  eval_cmd->add_option("--policy", ev->policy,
                        "Walking policy file (walk suite; get-close steps of other suites)");
-  eval_cmd->add_flag("--video", ev.video, "walk suite: also write MP4s of rendered episodes");
+  eval_cmd->add_flag("--video", ev->video, "walk suite: also write MP4s of rendered episodes");
   eval_cmd
-      ->add_option("--physics-solver", ev.physics_solver,
+      ->add_option("--physics-solver", ev->physics_solver,
                    "walk suites: MuJoCo solver, newton or pgs (e.g. to check a policy trained "
                    "with physics_solver pgs)")
       ->capture_default_str();
+  return eval_cmd;
+}
 
-  PlanFlags pl;
+// `simhuman plan`: its flags into `pl`
+CLI::App* AddPlanCommand(CLI::App& app, PlanFlags* pl) {
   CLI::App* plan_cmd =
       app.add_subcommand("plan", "Turn a text command into a Chain-of-Contacts plan and print it");
   plan_cmd
-      ->add_option("--scene", pl.scene,
+      ->add_option("--scene", pl->scene,
                    "Built-in scene name (see 'simhuman scenes') or scene JSON file")
       ->required();
-  plan_cmd->add_option("--command", pl.command, "The command, e.g. \"sit on the sofa\"")
+  plan_cmd->add_option("--command", pl->command, "The command, e.g. \"sit on the sofa\"")
       ->required();
-  plan_cmd->add_flag("--explain", pl.explain, "Also print one line per step in words");
-  plan_cmd->add_option("--planner", pl.planner, "Planner: " + core::JoinNames(PlannerNames()))
+  plan_cmd->add_flag("--explain", pl->explain, "Also print one line per step in words");
+  plan_cmd->add_option("--planner", pl->planner, "Planner: " + core::JoinNames(PlannerNames()))
       ->capture_default_str();
-  plan_cmd->add_option("--out", pl.out, "Also write the plan JSON to this file");
-  AddLlmFlags(*plan_cmd, pl.llm);
+  plan_cmd->add_option("--out", pl->out, "Also write the plan JSON to this file");
+  AddLlmFlags(*plan_cmd, pl->llm);
+  return plan_cmd;
+}
 
-  app.add_subcommand("scenes", "List the built-in scenes and their objects");
-
-  TrainFlags tf;
+// `simhuman train`: its flags into `tf`; `steps` and `seed` tell later whether --steps and
+// --seed were given
+CLI::App* AddTrainCommand(CLI::App& app, TrainFlags* tf, CLI::Option** steps, CLI::Option** seed) {
   CLI::App* train_cmd = app.add_subcommand("train", "Train a policy with PPO (resumable)");
-  train_cmd->add_option("--task", tf.task, "Task: walk or reach (a toy point mass)")
+  train_cmd->add_option("--task", tf->task, "Task: walk or reach (a toy point mass)")
       ->capture_default_str();
-  CLI::Option* steps_opt = train_cmd->add_option("--steps", tf.steps, "Total env steps (30M, 500k)")
-                               ->capture_default_str();
-  train_cmd->add_option("--out", tf.out, "Run folder of a new run");
-  train_cmd->add_option("--resume", tf.resume, "Run folder to continue from its checkpoint");
-  train_cmd->add_option("--config", tf.config, "PPO settings JSON file (keys of PpoConfig)");
-  CLI::Option* seed_opt = train_cmd->add_option("--seed", tf.seed, "Seed of the run")
-                              ->check(SeedValidator())
-                              ->capture_default_str();
-  train_cmd->add_option("--envs", tf.envs, "Parallel environments")->check(CLI::Range(1, 4096));
-  train_cmd->add_option("--threads", tf.threads, "Worker threads")->check(CLI::Range(1, 64));
-  train_cmd->add_flag("--quiet", tf.quiet, "No progress bar");
-  train_cmd->add_option("--init-from", tf.init_from,
+  *steps = train_cmd->add_option("--steps", tf->steps, "Total env steps (30M, 500k)")
+               ->capture_default_str();
+  train_cmd->add_option("--out", tf->out, "Run folder of a new run");
+  train_cmd->add_option("--resume", tf->resume, "Run folder to continue from its checkpoint");
+  train_cmd->add_option("--config", tf->config, "PPO settings JSON file (keys of PpoConfig)");
+  *seed = train_cmd->add_option("--seed", tf->seed, "Seed of the run")
+              ->check(SeedValidator())
+              ->capture_default_str();
+  train_cmd->add_option("--envs", tf->envs, "Parallel environments")->check(CLI::Range(1, 4096));
+  train_cmd->add_option("--threads", tf->threads, "Worker threads")->check(CLI::Range(1, 64));
+  train_cmd->add_flag("--quiet", tf->quiet, "No progress bar");
+  train_cmd->add_option("--init-from", tf->init_from,
                         "Policy file (e.g. assets/policies/walk.pt) a new run's policy starts from "
                         "(fine-tuning; the value network starts fresh)");
-  train_cmd->add_option("--amp-clips", tf.amp_clips,
+  train_cmd->add_option("--amp-clips", tf->amp_clips,
                         "Comma-separated motion clips (.clip.json) or BVH files: turns on AMP "
                         "(walk task)");
+  return train_cmd;
+}
 
-  ClipFlags cf;
+// `simhuman clip convert` and `simhuman clip gait`: their flags into `cf`
+ClipCommands AddClipCommands(CLI::App& app, ClipFlags* cf) {
+  ClipCommands cmds;
   CLI::App* clip_cmd = app.add_subcommand("clip", "Make motion clips for AMP (convert, gait)");
   clip_cmd->require_subcommand(1);
-  CLI::App* clip_convert = clip_cmd->add_subcommand("convert", "Retarget a BVH file to a clip");
-  clip_convert->add_option("--bvh", cf.bvh, "BVH file (CMU-style)")->required();
-  clip_convert->add_option("--out", cf.out, "Clip file to write (.clip.json)")->required();
-  clip_convert->add_option("--fps", cf.fps, "Resample to this frame rate (default: the BVH's)");
-  CLI::App* clip_gait =
-      clip_cmd->add_subcommand("gait", "Write the walking task's reference gait as a clip");
-  clip_gait->add_option("--out", cf.out, "Clip file to write (.clip.json)")->required();
-  clip_gait->add_option("--seconds", cf.seconds, "Length in seconds")->capture_default_str();
-  clip_gait->add_option("--speed", cf.speed_mps, "Forward speed, m/s")->capture_default_str();
-  clip_gait->add_option("--fps", cf.fps, "Frame rate (default 30)");
+  cmds.convert = clip_cmd->add_subcommand("convert", "Retarget a BVH file to a clip");
+  cmds.convert->add_option("--bvh", cf->bvh, "BVH file (CMU-style)")->required();
+  cmds.convert->add_option("--out", cf->out, "Clip file to write (.clip.json)")->required();
+  cmds.convert->add_option("--fps", cf->fps, "Resample to this frame rate (default: the BVH's)");
+  cmds.gait = clip_cmd->add_subcommand("gait", "Write the walking task's reference gait as a clip");
+  cmds.gait->add_option("--out", cf->out, "Clip file to write (.clip.json)")->required();
+  cmds.gait->add_option("--seconds", cf->seconds, "Length in seconds")->capture_default_str();
+  cmds.gait->add_option("--speed", cf->speed_mps, "Forward speed, m/s")->capture_default_str();
+  cmds.gait->add_option("--fps", cf->fps, "Frame rate (default 30)");
+  return cmds;
+}
 
-  std::string export_ckpt, export_out, export_eval;
+// `simhuman export-policy`: its flags into `ex`
+CLI::App* AddExportCommand(CLI::App& app, ExportFlags* ex) {
   CLI::App* export_cmd =
       app.add_subcommand("export-policy", "Write the small policy file of a checkpoint");
-  export_cmd->add_option("--checkpoint", export_ckpt, "checkpoint.pt or policy file")->required();
-  export_cmd->add_option("--out", export_out, "Policy file to write")->required();
-  export_cmd->add_option("--eval-summary", export_eval,
+  export_cmd->add_option("--checkpoint", ex->checkpoint, "checkpoint.pt or policy file")
+      ->required();
+  export_cmd->add_option("--out", ex->out, "Policy file to write")->required();
+  export_cmd->add_option("--eval-summary", ex->eval_summary,
                          "summary.json of a `simhuman eval` of this policy (provenance)");
+  return export_cmd;
+}
 
+// parses `args` into `app`'s flags; returns the exit code when that already ends the run (help,
+// version, a parse error), nullopt when the parsed command is to run
+std::optional<int> ParseArgs(CLI::App& app, const std::vector<std::string>& args, std::ostream& out,
+                             std::ostream& err) {
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
   try {
@@ -223,6 +243,40 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         << (cmd.empty() ? "" : " " + cmd) << " --help' for the valid options" << std::endl;
     return kExitBadInput;
   }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string VersionText() {
+  return std::string("simhuman ") + kVersion + " (git " + std::string(core::GitRevision()) +
+         ", MuJoCo " + mj_versionString() + ")";
+}
+
+int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"simhuman: simulated humans that carry out Chain-of-Contacts plans", "simhuman"};
+  app.set_version_flag("--version", VersionText(), "Print the version and exit");
+  app.require_subcommand(0, 1);
+
+  RunFlags run;
+  CLI::Option* run_preset = nullptr;
+  CLI::App* run_cmd = AddRunCommand(app, &run, &run_preset);
+  EvalFlags ev;
+  CLI::Option* eval_preset = nullptr;
+  CLI::App* eval_cmd = AddEvalCommand(app, &ev, &eval_preset);
+  PlanFlags pl;
+  CLI::App* plan_cmd = AddPlanCommand(app, &pl);
+  app.add_subcommand("scenes", "List the built-in scenes and their objects");
+  TrainFlags tf;
+  CLI::Option* steps_opt = nullptr;
+  CLI::Option* seed_opt = nullptr;
+  CLI::App* train_cmd = AddTrainCommand(app, &tf, &steps_opt, &seed_opt);
+  ClipFlags cf;
+  const ClipCommands clip = AddClipCommands(app, &cf);
+  ExportFlags ex;
+  CLI::App* export_cmd = AddExportCommand(app, &ex);
+
+  if (std::optional<int> code = ParseArgs(app, args, out, err)) return *code;
 
   if (run_cmd->parsed()) {
     run.preset_given = run_preset->count() > 0;
@@ -239,10 +293,11 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     tf.seed_given = seed_opt->count() > 0;
     return TrainCommand(tf, out, err);
   }
-  if (clip_convert->parsed()) return ClipConvertCommand(cf, out, err);
-  if (clip_gait->parsed()) return ClipGaitCommand(cf, out, err);
-  if (export_cmd->parsed())
-    return ExportPolicyCommand(export_ckpt, export_out, export_eval, out, err);
+  if (clip.convert->parsed()) return ClipConvertCommand(cf, out, err);
+  if (clip.gait->parsed()) return ClipGaitCommand(cf, out, err);
+  if (export_cmd->parsed()) {
+    return ExportPolicyCommand(ex.checkpoint, ex.out, ex.eval_summary, out, err);
+  }
   err << "simhuman: error: a command is required; valid commands are: run, plan, eval, scenes, "
          "train, export-policy, clip (or "
          "--version, --help)"

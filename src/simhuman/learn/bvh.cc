@@ -371,12 +371,41 @@ core::StatusOr<BvhMotion> LoadBvh(const std::string& path) {
   return ParseBvh(text, path);
 }
 
-core::StatusOr<MotionClip> RetargetBvh(const BvhMotion& bvh, const std::string& where) {
-  if (bvh.joints.empty() || bvh.frames.empty()) {
-    return absl::InvalidArgumentError(where + ": no skeleton or no frames");
-  }
-  // ---- find the joints that drive our segments
-  std::map<std::string, int> jt;
+namespace {
+
+// the BVH joints that drive our segments (indices into BvhMotion::joints; -1: none)
+struct DrivingJoints {
+  std::map<std::string, int> by_key;  // Aliases() key -> joint
+  int hips = -1, head = -1, neck = -1, chest = -1;
+};
+
+// the rest pose (all channels zero) and how it maps onto ours
+struct RestFrame {
+  std::vector<Vector3d> rest;  // global joint positions (file units)
+  Matrix3d A;                  // BVH axes -> ours (rows: forward, left, up)
+  double scale = 1;            // file units -> m, from the standing hip height
+};
+
+// one of our segments: driving joint, child marker (rest direction), our rest direction, parent
+struct SegDef {
+  int joint;
+  int child;  // -1: no rest correction
+  Vector3d ours;
+  int parent;
+  bool flatten;
+};
+
+// our hinges, from the compiled humanoid (actuator order)
+struct HingeTable {
+  std::array<Vector3d, world::kHumanoidDofs> axis;
+  std::array<double, world::kHumanoidDofs> lo, hi;  // range (rad)
+  std::array<int, world::kHumanoidDofs> seg_of;     // the segment the hinge turns
+};
+
+// finds the joints that drive our segments by their aliases; errors name the missing ones
+core::StatusOr<DrivingJoints> FindDrivingJoints(const BvhMotion& bvh, const std::string& where) {
+  DrivingJoints dj;
+  std::map<std::string, int>& jt = dj.by_key;
   std::vector<std::string> missing;
   for (const char* key :
        {"hips", "head", "leftarm", "leftforearm", "rightarm", "rightforearm", "leftupleg",
@@ -393,24 +422,32 @@ core::StatusOr<MotionClip> RetargetBvh(const BvhMotion& bvh, const std::string& 
         where + ": cannot retarget: no joint for " + core::JoinNames(missing) +
         " (names compare without case, '_', '-', spaces and a 'prefix:')");
   }
-  const int hips = jt["hips"], head = jt["head"];
-  const int neck = jt["neck"] >= 0 && IsAncestor(bvh, jt["neck"], head) ? jt["neck"] : head;
-  const int chest = bvh.joints[neck].parent;
-  if (chest <= 0) {
+  dj.hips = jt["hips"];
+  dj.head = jt["head"];
+  dj.neck = jt["neck"] >= 0 && IsAncestor(bvh, jt["neck"], dj.head) ? jt["neck"] : dj.head;
+  dj.chest = bvh.joints[dj.neck].parent;
+  if (dj.chest <= 0) {
     return absl::InvalidArgumentError(where + ": no spine joint between the hips and '" +
-                                      bvh.joints[neck].name + "'");
+                                      bvh.joints[dj.neck].name + "'");
   }
+  return dj;
+}
 
-  // ---- rest pose (all channels zero): global joint positions
+// the rest pose's joint positions, our axes in BVH terms and the scale to our standing height
+core::StatusOr<RestFrame> MakeRestFrame(const BvhMotion& bvh, const DrivingJoints& dj,
+                                        const std::string& where) {
+  RestFrame rf;
   const size_t nj = bvh.joints.size();
-  std::vector<Vector3d> rest(nj);
+  std::vector<Vector3d>& rest = rf.rest;
+  rest.resize(nj);
   for (size_t i = 0; i < nj; ++i) {
     int p = bvh.joints[i].parent;
     rest[i] = (p < 0 ? Vector3d::Zero() : rest[p]) + bvh.joints[i].offset;
   }
+  const int hips = dj.hips, neck = dj.neck;
   // BVH axes -> ours: up from the hips to the neck, left from the right to the left thigh
   Vector3d up = (rest[neck] - rest[hips]).normalized();
-  Vector3d left = rest[jt["leftupleg"]] - rest[jt["rightupleg"]];
+  Vector3d left = rest[dj.by_key.at("leftupleg")] - rest[dj.by_key.at("rightupleg")];
   left = (left - left.dot(up) * up);
   if (left.norm() < 1e-9 || (rest[neck] - rest[hips]).norm() < 1e-9) {
     return absl::InvalidArgumentError(where +
@@ -419,77 +456,168 @@ core::StatusOr<MotionClip> RetargetBvh(const BvhMotion& bvh, const std::string& 
   }
   left.normalize();
   Vector3d fwd = left.cross(up);
-  Matrix3d A;
-  A.row(0) = fwd.transpose();
-  A.row(1) = left.transpose();
-  A.row(2) = up.transpose();
+  rf.A.row(0) = fwd.transpose();
+  rf.A.row(1) = left.transpose();
+  rf.A.row(2) = up.transpose();
   // standing height: hips above the lowest rest point
   double lowest = 0;
   for (size_t i = 0; i < nj; ++i) lowest = std::min(lowest, (rest[i] - rest[hips]).dot(up));
   if (lowest > -1e-9) return absl::InvalidArgumentError(where + ": the legs have no length");
-  const double scale = world::kPelvisStandHeight / -lowest;
+  rf.scale = world::kPelvisStandHeight / -lowest;
+  return rf;
+}
 
-  // ---- segments: driving joint, child marker (rest direction), our rest direction, parent
-  struct SegDef {
-    int joint;
-    int child;  // -1: no rest correction
-    Vector3d ours;
-    int parent;
-    bool flatten;
-  };
+// our segments (kSegNames order) in terms of the driving joints
+std::array<SegDef, kNumSegs> SegmentDefs(const BvhMotion& bvh, const DrivingJoints& dj) {
+  auto jt = [&](const char* key) { return dj.by_key.at(key); };
   auto child_or = [&](int j, int preferred) {
     return preferred >= 0 ? preferred : FirstChild(bvh, j);
   };
+  const int hips = dj.hips, head = dj.head, neck = dj.neck, chest = dj.chest;
   const Vector3d kUp(0, 0, 1), kDown(0, 0, -1), kFwd(1, 0, 0);
-  SegDef segs[kNumSegs] = {
+  return {{
       {hips, -1, kUp, -1, false},
       {chest, neck, kUp, kPelvis, false},
       {head, FirstChild(bvh, head), kUp, kTorso, false},
-      {jt["rightarm"], jt["rightforearm"], kDown, kTorso, false},
-      {jt["rightforearm"], child_or(jt["rightforearm"], jt["righthand"]), kDown, kRUpperArm, false},
-      {jt["leftarm"], jt["leftforearm"], kDown, kTorso, false},
-      {jt["leftforearm"], child_or(jt["leftforearm"], jt["lefthand"]), kDown, kLUpperArm, false},
-      {jt["rightupleg"], jt["rightleg"], kDown, kPelvis, false},
-      {jt["rightleg"], jt["rightfoot"], kDown, kRThigh, false},
-      {jt["rightfoot"], child_or(jt["rightfoot"], jt["righttoe"]), kFwd, kRShin, true},
-      {jt["leftupleg"], jt["leftleg"], kDown, kPelvis, false},
-      {jt["leftleg"], jt["leftfoot"], kDown, kLThigh, false},
-      {jt["leftfoot"], child_or(jt["leftfoot"], jt["lefttoe"]), kFwd, kLShin, true},
-  };
-  Matrix3d C[kNumSegs];
+      {jt("rightarm"), jt("rightforearm"), kDown, kTorso, false},
+      {jt("rightforearm"), child_or(jt("rightforearm"), jt("righthand")), kDown, kRUpperArm, false},
+      {jt("leftarm"), jt("leftforearm"), kDown, kTorso, false},
+      {jt("leftforearm"), child_or(jt("leftforearm"), jt("lefthand")), kDown, kLUpperArm, false},
+      {jt("rightupleg"), jt("rightleg"), kDown, kPelvis, false},
+      {jt("rightleg"), jt("rightfoot"), kDown, kRThigh, false},
+      {jt("rightfoot"), child_or(jt("rightfoot"), jt("righttoe")), kFwd, kRShin, true},
+      {jt("leftupleg"), jt("leftleg"), kDown, kPelvis, false},
+      {jt("leftleg"), jt("leftfoot"), kDown, kLThigh, false},
+      {jt("leftfoot"), child_or(jt("leftfoot"), jt("lefttoe")), kFwd, kLShin, true},
+  }};
+}
+
+// per segment, the rotation from our rest direction to the BVH rest bone (in our axes)
+std::array<Matrix3d, kNumSegs> RestCorrections(const std::array<SegDef, kNumSegs>& segs,
+                                               const RestFrame& rf) {
+  const std::vector<Vector3d>& rest = rf.rest;
+  std::array<Matrix3d, kNumSegs> C;
   for (int s = 0; s < kNumSegs; ++s) {
     C[s] = Matrix3d::Identity();
     if (segs[s].child < 0) continue;
-    Vector3d d = A * (rest[segs[s].child] - rest[segs[s].joint]);
+    Vector3d d = rf.A * (rest[segs[s].child] - rest[segs[s].joint]);
     if (segs[s].flatten) d.z() = 0;
     if (d.norm() < 1e-9) continue;  // a zero-length bone: no correction
     C[s] = RotBetween(segs[s].ours, d.normalized());
   }
+  return C;
+}
 
-  // ---- our hinge axes and ranges, from the compiled humanoid
+// our hinge axes, ranges and segments, from the compiled humanoid
+core::StatusOr<HingeTable> LoadHingeTable() {
   SH_ASSIGN_OR_RETURN(std::unique_ptr<world::SimWorld> sim,
                       world::SimWorld::Create(core::SceneCatalog(), {world::AgentSpec()}, {}));
   const mjModel* m = sim->model();
   const world::AgentIndex& ag = sim->agent(0);
   const auto& jnames = world::HumanoidJointNames();
-  std::array<Vector3d, world::kHumanoidDofs> axis;
-  std::array<double, world::kHumanoidDofs> lo, hi;
-  std::array<int, world::kHumanoidDofs> seg_of;
+  HingeTable ht;
   for (int k = 0; k < world::kHumanoidDofs; ++k) {
     int jid = m->actuator_trnid[2 * ag.actuator[k]];
-    axis[k] = Vector3d(m->jnt_axis[3 * jid], m->jnt_axis[3 * jid + 1], m->jnt_axis[3 * jid + 2]);
-    lo[k] = m->jnt_range[2 * jid];
-    hi[k] = m->jnt_range[2 * jid + 1];
+    ht.axis[k] = Vector3d(m->jnt_axis[3 * jid], m->jnt_axis[3 * jid + 1], m->jnt_axis[3 * jid + 2]);
+    ht.lo[k] = m->jnt_range[2 * jid];
+    ht.hi[k] = m->jnt_range[2 * jid + 1];
     const char* body = mj_id2name(m, mjOBJ_BODY, m->jnt_bodyid[jid]);
-    seg_of[k] = -1;
+    ht.seg_of[k] = -1;
     for (int s = 0; s < kNumSegs; ++s) {
-      if (std::string(body) == kSegNames[s]) seg_of[k] = s;
+      if (std::string(body) == kSegNames[s]) ht.seg_of[k] = s;
     }
-    if (seg_of[k] < 0)
+    if (ht.seg_of[k] < 0)
       return absl::InternalError("retarget: hinge '" + jnames[k] + "' has no segment");
   }
+  return ht;
+}
+
+// forward kinematics of one frame row: global joint rotations G and positions P (file units)
+void GlobalPose(const BvhMotion& bvh, const std::vector<double>& row, std::vector<Matrix3d>* g,
+                std::vector<Vector3d>* p) {
+  std::vector<Matrix3d>& G = *g;
+  std::vector<Vector3d>& P = *p;
+  for (size_t i = 0; i < bvh.joints.size(); ++i) {
+    const BvhJoint& j = bvh.joints[i];
+    Matrix3d L = Matrix3d::Identity();
+    // position channels replace the OFFSET (the root's are its position)
+    Vector3d local = j.offset;
+    for (size_t c = 0; c < j.channels.size(); ++c) {
+      double v = row[j.first_channel + c];
+      switch (j.channels[c]) {
+        case BvhChannel::kXrot:
+          L = L * AxisRot(0, v * kDeg);
+          break;
+        case BvhChannel::kYrot:
+          L = L * AxisRot(1, v * kDeg);
+          break;
+        case BvhChannel::kZrot:
+          L = L * AxisRot(2, v * kDeg);
+          break;
+        case BvhChannel::kXpos:
+          local.x() = v;
+          break;
+        case BvhChannel::kYpos:
+          local.y() = v;
+          break;
+        case BvhChannel::kZpos:
+          local.z() = v;
+          break;
+      }
+    }
+    G[i] = j.parent < 0 ? L : G[j.parent] * L;
+    P[i] = j.parent < 0 ? local : P[j.parent] + G[j.parent] * local;
+  }
+}
+
+// our hinge angles from the segments' rotations R (our axes): segments with three hinges are
+// intrinsic x-y-z Euler angles, one hinge a twist; clamped to the hinge ranges
+absl::Status SegmentHinges(const std::array<Matrix3d, kNumSegs>& R,
+                           const std::array<SegDef, kNumSegs>& segs, const HingeTable& ht,
+                           ClipFrame* fr) {
+  const auto& jnames = world::HumanoidJointNames();
+  for (int k = 0; k < world::kHumanoidDofs;) {
+    int s = ht.seg_of[k];
+    Matrix3d rel = R[segs[s].parent].transpose() * R[s];
+    int n = 1;
+    while (k + n < world::kHumanoidDofs && ht.seg_of[k + n] == s) ++n;
+    if (n == 3) {
+      Vector3d e = EulerXYZ(rel);
+      for (int a = 0; a < 3; ++a) {
+        double sign = ht.axis[k + a][a];
+        if (std::abs(std::abs(sign) - 1) > 1e-9) {
+          return absl::InternalError("retarget: hinge '" + jnames[k + a] +
+                                     "' is not along a body axis in x, y, z order");
+        }
+        fr->q_rad[k + a] = e[a] * sign;
+      }
+    } else if (n == 1) {
+      fr->q_rad[k] = TwistAngle(rel, ht.axis[k]);
+    } else {
+      return absl::InternalError("retarget: segment with " + std::to_string(n) + " hinges");
+    }
+    for (int a = 0; a < n; ++a)
+      fr->q_rad[k + a] = std::clamp(fr->q_rad[k + a], ht.lo[k + a], ht.hi[k + a]);
+    k += n;
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+core::StatusOr<MotionClip> RetargetBvh(const BvhMotion& bvh, const std::string& where) {
+  if (bvh.joints.empty() || bvh.frames.empty()) {
+    return absl::InvalidArgumentError(where + ": no skeleton or no frames");
+  }
+  SH_ASSIGN_OR_RETURN(const DrivingJoints dj, FindDrivingJoints(bvh, where));
+  SH_ASSIGN_OR_RETURN(const RestFrame rf, MakeRestFrame(bvh, dj, where));
+  const Matrix3d& A = rf.A;
+  const std::array<SegDef, kNumSegs> segs = SegmentDefs(bvh, dj);
+  const std::array<Matrix3d, kNumSegs> C = RestCorrections(segs, rf);
+  SH_ASSIGN_OR_RETURN(const HingeTable ht, LoadHingeTable());
 
   // ---- frames
+  const size_t nj = bvh.joints.size();
   MotionClip clip;
   clip.fps = 1.0 / bvh.frame_time_s;
   clip.source = where;
@@ -498,73 +626,18 @@ core::StatusOr<MotionClip> RetargetBvh(const BvhMotion& bvh, const std::string& 
   std::vector<Vector3d> P(nj);  // global joint positions (file units)
   Vector3d origin_xy = Vector3d::Zero();
   for (size_t f = 0; f < bvh.frames.size(); ++f) {
-    const std::vector<double>& row = bvh.frames[f];
-    for (size_t i = 0; i < nj; ++i) {
-      const BvhJoint& j = bvh.joints[i];
-      Matrix3d L = Matrix3d::Identity();
-      // position channels replace the OFFSET (the root's are its position)
-      Vector3d local = j.offset;
-      for (size_t c = 0; c < j.channels.size(); ++c) {
-        double v = row[j.first_channel + c];
-        switch (j.channels[c]) {
-          case BvhChannel::kXrot:
-            L = L * AxisRot(0, v * kDeg);
-            break;
-          case BvhChannel::kYrot:
-            L = L * AxisRot(1, v * kDeg);
-            break;
-          case BvhChannel::kZrot:
-            L = L * AxisRot(2, v * kDeg);
-            break;
-          case BvhChannel::kXpos:
-            local.x() = v;
-            break;
-          case BvhChannel::kYpos:
-            local.y() = v;
-            break;
-          case BvhChannel::kZpos:
-            local.z() = v;
-            break;
-        }
-      }
-      G[i] = j.parent < 0 ? L : G[j.parent] * L;
-      P[i] = j.parent < 0 ? local : P[j.parent] + G[j.parent] * local;
-    }
-    Matrix3d R[kNumSegs];
+    GlobalPose(bvh, bvh.frames[f], &G, &P);
+    std::array<Matrix3d, kNumSegs> R;
     for (int s = 0; s < kNumSegs; ++s) R[s] = A * G[segs[s].joint] * A.transpose() * C[s];
     ClipFrame& fr = clip.frames[f];
-    Vector3d p = scale * (A * P[hips]);
+    Vector3d p = rf.scale * (A * P[dj.hips]);
     if (f == 0) origin_xy = Vector3d(p.x(), p.y(), 0);
     p -= origin_xy;
     for (int k = 0; k < 3; ++k) fr.root_pos_m[k] = p[k];
     Eigen::Quaterniond q(R[kPelvis]);
     q.normalize();
     fr.root_quat_wxyz = {q.w(), q.x(), q.y(), q.z()};
-    // hinges: segments with three hinges are intrinsic x-y-z Euler angles, one hinge a twist
-    for (int k = 0; k < world::kHumanoidDofs;) {
-      int s = seg_of[k];
-      Matrix3d rel = R[segs[s].parent].transpose() * R[s];
-      int n = 1;
-      while (k + n < world::kHumanoidDofs && seg_of[k + n] == s) ++n;
-      if (n == 3) {
-        Vector3d e = EulerXYZ(rel);
-        for (int a = 0; a < 3; ++a) {
-          double sign = axis[k + a][a];
-          if (std::abs(std::abs(sign) - 1) > 1e-9) {
-            return absl::InternalError("retarget: hinge '" + jnames[k + a] +
-                                       "' is not along a body axis in x, y, z order");
-          }
-          fr.q_rad[k + a] = e[a] * sign;
-        }
-      } else if (n == 1) {
-        fr.q_rad[k] = TwistAngle(rel, axis[k]);
-      } else {
-        return absl::InternalError("retarget: segment with " + std::to_string(n) + " hinges");
-      }
-      for (int a = 0; a < n; ++a)
-        fr.q_rad[k + a] = std::clamp(fr.q_rad[k + a], lo[k + a], hi[k + a]);
-      k += n;
-    }
+    SH_RETURN_IF_ERROR(SegmentHinges(R, segs, ht, &fr));
   }
   SH_RETURN_IF_ERROR(core::Annotate(clip.Validate(), where));
   return clip;

@@ -212,6 +212,315 @@ ReferencePose GetAgentPose(const world::AgentIndex& a, const mjData* d) {
   return p;
 }
 
+namespace {
+
+// variables of the solve: root position and rotation increment, then the hinges
+constexpr int kNumVars = 6 + kHumanoidDofs;
+
+// where the agent is now: the starting point of every first guess
+struct Start {
+  Eigen::Vector3d pos;                                    // root position (m, world)
+  double yaw = 0;                                         // pelvis yaw (rad)
+  std::array<Eigen::Vector3d, core::kNumBodyJoints> pts;  // body points (m, world)
+  double obj_yaw = 0;  // yaw of the focus object, the pelvis yaw without one (rad)
+};
+
+// top centre (world) of the first contact part of body joint `j` (the pelvis / head)
+std::optional<Eigen::Vector3d> PartTop(const StepTask& task, core::BodyJoint j) {
+  for (const ContactTerm& t : task.terms) {
+    if (t.joint == j && t.part && t.type == plan::ContactType::kContact) {
+      auto [lo, hi] = core::ShapesBounds(t.part->shapes);
+      Eigen::Vector3d c((lo.x() + hi.x()) / 2, (lo.y() + hi.y()) / 2, hi.z());
+      return t.object->pose.Apply(c);
+    }
+  }
+  return std::nullopt;
+}
+
+// rise phase 2, seat-off: hips and knees still flexed, trunk over the feet, weight on the feet
+void SetUpSeatOff(const Start& st, double s, Problem* pr, Vars* v) {
+  pr->base = BasePostureHinges(Posture::kSit);
+  pr->base[JointIndex("abdomen_y")] = 30 * kDeg;
+  for (const char* n : {"right_hip_y", "left_hip_y"}) pr->base[JointIndex(n)] = 95 * kDeg;
+  for (const char* n : {"right_knee", "left_knee"}) pr->base[JointIndex(n)] = 85 * kDeg;
+  for (const char* n : {"right_shoulder_y", "left_shoulder_y"}) {
+    pr->base[JointIndex(n)] = 45 * kDeg;
+  }
+  v->h = pr->base;
+  pr->anchor_feet = true;
+  pr->balance = true;
+  pr->feet_on_floor = true;
+  pr->feet_anchor = {st.pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
+                     st.pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+  pr->base_quat =
+      YawQuat(st.yaw) * Eigen::Quaterniond(Eigen::AngleAxisd(25 * kDeg, Eigen::Vector3d::UnitY()));
+  v->quat = pr->base_quat;
+  v->pos = st.pos + YawQuat(st.yaw) * Eigen::Vector3d(0.12 * s, 0, 0.05 * s);
+}
+
+// rise phase 1, the first phase of getting up: still seated, pelvis tipped and trunk leaning
+// forward, feet drawn back under the knees, so the weight can then move onto the feet
+void SetUpLeanForward(const Start& st, Problem* pr, Vars* v) {
+  pr->base = BasePostureHinges(Posture::kSit);
+  pr->base[JointIndex("abdomen_y")] = 30 * kDeg;
+  for (const char* n : {"right_hip_y", "left_hip_y"}) pr->base[JointIndex(n)] = 110 * kDeg;
+  for (const char* n : {"right_knee", "left_knee"}) pr->base[JointIndex(n)] = 105 * kDeg;
+  for (const char* n : {"right_shoulder_y", "left_shoulder_y"}) {
+    pr->base[JointIndex(n)] = 45 * kDeg;
+  }
+  v->h = pr->base;
+  pr->feet_on_floor = true;
+  pr->anchor_feet = true;  // feet stay where they are (they cannot slide back under load)
+  pr->feet_anchor = {st.pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
+                     st.pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+  pr->root_anchor = st.pos;
+  pr->anchor_root_xy = true;
+  pr->base_quat =
+      YawQuat(st.yaw) * Eigen::Quaterniond(Eigen::AngleAxisd(20 * kDeg, Eigen::Vector3d::UnitY()));
+  v->quat = pr->base_quat;
+  v->pos = st.pos;
+}
+
+// standing (and leaning): balanced, on the way to the stand point or with the feet kept
+void SetUpStand(const StepTask& task, const Start& st, double s, Problem* pr, Vars* v) {
+  pr->balance = true;
+  if (task.get_close) {
+    // stand up / get close: stand on the way to the stand point, feet free
+    Eigen::Vector3d to = task.stand_point - st.pos;
+    to.z() = 0;
+    double reach = std::min(to.norm(), 0.25 * s);
+    pr->root_anchor = st.pos + (to.norm() > 1e-6 ? Eigen::Vector3d(to.normalized() * reach)
+                                                 : Eigen::Vector3d::Zero());
+    if (st.pos.z() < 0.75 * world::kPelvisStandHeight * s) {
+      // getting up from a seat: stand over the feet
+      pr->root_anchor = 0.5 * (st.pts[static_cast<int>(core::BodyJoint::kLeftFoot)] +
+                               st.pts[static_cast<int>(core::BodyJoint::kRightFoot)]);
+      pr->feet_anchor = {st.pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
+                         st.pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+      pr->anchor_feet = true;
+    }
+    pr->anchor_root_xy = true;
+    v->pos = pr->root_anchor;
+    v->quat = YawQuat(st.yaw);  // no turning in place without a walking skill
+  } else {
+    // reach etc.: feet stay where they are
+    pr->anchor_feet = true;
+    pr->feet_anchor = {st.pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
+                       st.pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+    Eigen::Vector3d mid = 0.5 * (pr->feet_anchor[0] + pr->feet_anchor[1]);
+    v->pos = Eigen::Vector3d(mid.x(), mid.y(), 0);
+    v->pos -= YawQuat(st.yaw) * Eigen::Vector3d(0.04 * s, 0, 0);
+  }
+  v->pos.z() = world::kPelvisStandHeight * s - 0.01;
+  pr->base_quat = v->quat;
+}
+
+// sitting: pelvis on the seat part (on a bed, on the front edge below the pillow), facing out
+void SetUpSit(const StepTask& task, const Start& st, double s, Problem* pr, Vars* v) {
+  const core::CatalogObject* focus = task.focus;
+  auto top = PartTop(task, core::BodyJoint::kPelvis);
+  Eigen::Vector3d seat = top ? *top : st.pos;
+  v->quat = YawQuat(st.obj_yaw);
+  // pelvis a little behind the seat centre, but on a deep seat (sofa, armchair) no deeper
+  // than a person sits upright: kMaxSitDepthM behind the front edge, so the feet can be
+  // drawn back under the knees to stand up again; thighs horizontal
+  double back = 0.04 * s;
+  for (const ContactTerm& t : task.terms) {
+    if (t.joint != core::BodyJoint::kPelvis || !t.part || !top) continue;
+    auto [lo, hi] = core::ShapesBounds(t.part->shapes);
+    double centre_to_edge = 0.5 * (hi.x() - lo.x());
+    back = std::min(back, kMaxSitDepthM * s - centre_to_edge);
+    break;
+  }
+  v->pos = seat + YawQuat(st.obj_yaw) * Eigen::Vector3d(-back, 0, 0);
+  // on a bed, sit on the front edge where lying back later puts the head on the pillow
+  const core::CatalogPart* pillow = focus ? focus->FindPart("pillow") : nullptr;
+  const core::CatalogPart* mattress = focus ? focus->FindPart("mattress") : nullptr;
+  if (pillow && mattress) {
+    auto [mlo, mhi] = core::ShapesBounds(mattress->shapes);
+    auto [plo, phi] = core::ShapesBounds(pillow->shapes);
+    double pillow_y = 0.5 * (plo.y() + phi.y());
+    double dir = pillow_y > 0.5 * (mlo.y() + mhi.y()) ? 1.0 : -1.0;
+    double y = std::clamp(pillow_y - dir * 0.62 * s, mlo.y() + 0.2, mhi.y() - 0.2);
+    Eigen::Vector3d local(mhi.x() - 0.2 * s, y, mhi.z());
+    seat = focus->pose.Apply(local);
+    v->pos = seat;
+  }
+  v->pos.z() = seat.z() + 0.12 * s;
+  pr->base_quat = v->quat;
+  pr->feet_on_floor = true;
+}
+
+// lying on the back or the side: along the bed from the mattress to the pillow
+void SetUpLie(const StepTask& task, const Start& st, double s, Problem* pr, Vars* v) {
+  auto pelvis_top = PartTop(task, core::BodyJoint::kPelvis);
+  auto head_top = PartTop(task, core::BodyJoint::kHead);
+  Eigen::Vector3d mat = pelvis_top ? *pelvis_top : st.pos;
+  Eigen::Vector3d head =
+      head_top ? *head_top : mat + YawQuat(st.obj_yaw) * Eigen::Vector3d(0, 1, 0);
+  Eigen::Vector3d h = head - mat;
+  h.z() = 0;
+  if (h.norm() < 1e-6) h = YawQuat(st.obj_yaw) * Eigen::Vector3d(0, 1, 0);
+  h.normalize();
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  // lie along the bed on the line nearest to where the agent is, as long as the head still
+  // lands on the pillow: less to shuffle across the mattress
+  for (const ContactTerm& t : task.terms) {
+    if (t.joint != core::BodyJoint::kHead || !t.part) continue;
+    Eigen::Vector3d across(-h.y(), h.x(), 0);
+    auto [plo, phi] = core::ShapesBounds(t.part->shapes);
+    Eigen::Vector3d half_w = t.object->pose.quat * (0.5 * (phi - plo));
+    double room = std::max(0.0, std::abs(half_w.dot(across)) - 0.12 * s);
+    double off = std::clamp((st.pos - head).dot(across), -room, room);
+    head += across * off;
+  }
+  if (task.posture == Posture::kLieBack) {
+    v->quat = FrameQuat(up, h);
+    v->pos = head - h * 0.62 * s;
+    v->pos.z() = mat.z() + 0.095 * s;
+  } else {
+    // on the side: front faces the side of the bed the agent came from
+    Eigen::Vector3d side = YawQuat(st.obj_yaw) * Eigen::Vector3d::UnitX();
+    side = (side - side.dot(h) * h).normalized();
+    v->quat = FrameQuat(side, h);
+    v->pos = head - h * 0.62 * s;
+    v->pos.z() = mat.z() + 0.16 * s;
+  }
+  pr->base_quat = v->quat;
+  pr->feet_on_floor = false;
+}
+
+// the problem's posture, anchors and first guess for the task (or the rise phase), then the
+// warm start when there is one
+void SetUpProblem(const StepTask& task, const ReferencePoseOptions& options, const Start& st,
+                  double s, Problem* pr, Vars* v) {
+  if (options.rise == 2) {
+    SetUpSeatOff(st, s, pr, v);
+  } else if (options.rise == 1) {
+    SetUpLeanForward(st, pr, v);
+  }
+  switch (options.rise ? Posture::kLean : task.posture) {
+    case Posture::kLean:
+      if (options.rise) break;
+      [[fallthrough]];
+    case Posture::kStand:
+      SetUpStand(task, st, s, pr, v);
+      break;
+    case Posture::kSit:
+      SetUpSit(task, st, s, pr, v);
+      break;
+    case Posture::kLieBack:
+    case Posture::kLieSide:
+      SetUpLie(task, st, s, pr, v);
+      break;
+  }
+
+  if (options.warm_start) {
+    const ReferencePose& w = *options.warm_start;
+    v->pos = Eigen::Vector3d(w.root[0], w.root[1], w.root[2]);
+    v->quat = Eigen::Quaterniond(w.root[3], w.root[4], w.root[5], w.root[6]).normalized();
+    v->h = w.hinges;
+  }
+}
+
+// sum of squares of a residual
+double SquaredNorm(const std::vector<double>& r) {
+  double s2 = 0;
+  for (double x : r) s2 += x * x;
+  return s2;
+}
+
+// forward-difference Jacobian of the residual at `v`, whose residual is `r0`; a step that a
+// joint limit blocks is taken backwards, and a column stays zero when both ways are blocked
+Eigen::MatrixXd ResidualJacobian(const Problem& pr, const Vars& v, const std::vector<double>& r0,
+                                 const mjModel* m, const world::AgentIndex& a) {
+  const int nr = static_cast<int>(r0.size());
+  Eigen::MatrixXd J(nr, kNumVars);
+  constexpr double kEps = 1e-5;
+  for (int k = 0; k < kNumVars; ++k) {
+    Eigen::VectorXd dx = Eigen::VectorXd::Zero(kNumVars);
+    dx[k] = kEps;
+    Vars vk = Step(v, dx, m, a);
+    std::vector<double> rk = Residual(pr, vk);
+    double actual = (k >= 6) ? vk.h[k - 6] - v.h[k - 6] : kEps;
+    if (std::abs(actual) < 1e-12) {
+      dx[k] = -kEps;
+      vk = Step(v, dx, m, a);
+      rk = Residual(pr, vk);
+      actual = (k >= 6) ? vk.h[k - 6] - v.h[k - 6] : -kEps;
+    }
+    for (int i = 0; i < nr; ++i) {
+      J(i, k) = std::abs(actual) < 1e-12 ? 0.0 : (rk[i] - r0[i]) / actual;
+    }
+  }
+  return J;
+}
+
+// Levenberg-Marquardt with forward-difference Jacobians from `v`, for at most `iterations`
+// steps; leaves the best pose found in `v` and returns its cost (squared residual)
+double MinimizeResidual(const Problem& pr, int iterations, const mjModel* m,
+                        const world::AgentIndex& a, Vars* v) {
+  double lambda = 1e-2;
+  std::vector<double> r0 = Residual(pr, *v);
+  double c0 = SquaredNorm(r0);
+  for (int it = 0; it < iterations; ++it) {
+    const int nr = static_cast<int>(r0.size());
+    Eigen::MatrixXd J = ResidualJacobian(pr, *v, r0, m, a);
+    Eigen::Map<Eigen::VectorXd> rv(r0.data(), nr);
+    Eigen::MatrixXd H = J.transpose() * J;
+    Eigen::VectorXd g = J.transpose() * rv;
+    bool improved = false;
+    for (int tries = 0; tries < 6 && !improved; ++tries) {
+      Eigen::MatrixXd A = H;
+      A.diagonal().array() += lambda * (1.0 + H.diagonal().array());
+      Eigen::VectorXd dx = -A.ldlt().solve(g);
+      // limit the step
+      double mx = dx.cwiseAbs().maxCoeff();
+      if (mx > 0.3) dx *= 0.3 / mx;
+      Vars vn = Step(*v, dx, m, a);
+      std::vector<double> rn = Residual(pr, vn);
+      double cn = SquaredNorm(rn);
+      if (cn < c0) {
+        *v = vn;
+        r0 = rn;
+        c0 = cn;
+        lambda = std::max(1e-6, lambda * 0.3);
+        improved = true;
+      } else {
+        lambda *= 10;
+      }
+    }
+    if (!improved) break;
+  }
+  return c0;
+}
+
+// the solved pose `v` with its residual and mean contact error; `d` holds `v`'s kinematics
+ReferencePose MakeReferencePose(const world::SimWorld& world, int agent, const StepTask& task,
+                                const Vars& v, double cost, const mjData* d) {
+  ReferencePose out;
+  for (int i = 0; i < 3; ++i) out.root[i] = v.pos[i];
+  out.root[3] = v.quat.w();
+  out.root[4] = v.quat.x();
+  out.root[5] = v.quat.y();
+  out.root[6] = v.quat.z();
+  out.hinges = v.h;
+  out.residual = std::sqrt(cost);
+  double err = 0;
+  int n = 0;
+  auto pts = world.BodyPoints(d, agent);
+  for (const ContactTerm& t : task.terms) {
+    if (t.type != plan::ContactType::kContact) continue;
+    Eigen::Vector3d p = pts[static_cast<int>(t.joint)];
+    err += std::abs((p - t.Nearest(p, pts)).norm() - t.clearance_m);
+    ++n;
+  }
+  out.contact_error_m = n ? err / n : 0.0;
+  return out;
+}
+
+}  // namespace
+
 ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const StepTask& task,
                                  const mjData* d_now, mjData* scratch,
                                  const ReferencePoseOptions& options) {
@@ -229,268 +538,23 @@ ReferencePose SolveReferencePose(const world::SimWorld& world, int agent, const 
   pr.scale = a.scale;
   double s = a.scale;
 
-  Eigen::Vector3d cur_pos(d_now->qpos[a.root_qpos], d_now->qpos[a.root_qpos + 1],
-                          d_now->qpos[a.root_qpos + 2]);
-  double cur_yaw = world::PelvisYaw(d_now, a);
-  auto now_pts = world.BodyPoints(d_now, agent);
+  Start st;
+  st.pos = Eigen::Vector3d(d_now->qpos[a.root_qpos], d_now->qpos[a.root_qpos + 1],
+                           d_now->qpos[a.root_qpos + 2]);
+  st.yaw = world::PelvisYaw(d_now, a);
+  st.pts = world.BodyPoints(d_now, agent);
 
   Vars v;
   v.h = pr.base;
-  v.pos = cur_pos;
-  v.quat = YawQuat(cur_yaw);
-  const core::CatalogObject* focus = task.focus;
-  double obj_yaw = focus ? plan::ObjectYaw(focus->pose) : cur_yaw;
+  v.pos = st.pos;
+  v.quat = YawQuat(st.yaw);
+  st.obj_yaw = task.focus ? plan::ObjectYaw(task.focus->pose) : st.yaw;
 
-  // top centre (world) of the first contact part of the pelvis / head
-  auto part_top = [&](core::BodyJoint j) -> std::optional<Eigen::Vector3d> {
-    for (const ContactTerm& t : task.terms) {
-      if (t.joint == j && t.part && t.type == plan::ContactType::kContact) {
-        auto [lo, hi] = core::ShapesBounds(t.part->shapes);
-        Eigen::Vector3d c((lo.x() + hi.x()) / 2, (lo.y() + hi.y()) / 2, hi.z());
-        return t.object->pose.Apply(c);
-      }
-    }
-    return std::nullopt;
-  };
-
-  if (options.rise == 2) {
-    // seat-off: hips and knees still flexed, trunk over the feet, weight on the feet
-    pr.base = BasePostureHinges(Posture::kSit);
-    pr.base[JointIndex("abdomen_y")] = 30 * kDeg;
-    for (const char* n : {"right_hip_y", "left_hip_y"}) pr.base[JointIndex(n)] = 95 * kDeg;
-    for (const char* n : {"right_knee", "left_knee"}) pr.base[JointIndex(n)] = 85 * kDeg;
-    for (const char* n : {"right_shoulder_y", "left_shoulder_y"}) {
-      pr.base[JointIndex(n)] = 45 * kDeg;
-    }
-    v.h = pr.base;
-    pr.anchor_feet = true;
-    pr.balance = true;
-    pr.feet_on_floor = true;
-    pr.feet_anchor = {now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
-                      now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
-    pr.base_quat = YawQuat(cur_yaw) *
-                   Eigen::Quaterniond(Eigen::AngleAxisd(25 * kDeg, Eigen::Vector3d::UnitY()));
-    v.quat = pr.base_quat;
-    v.pos = cur_pos + YawQuat(cur_yaw) * Eigen::Vector3d(0.12 * s, 0, 0.05 * s);
-  } else if (options.rise == 1) {
-    // the first phase of getting up: still seated, pelvis tipped and trunk leaning forward,
-    // feet drawn back under the knees, so the weight can then move onto the feet
-    pr.base = BasePostureHinges(Posture::kSit);
-    pr.base[JointIndex("abdomen_y")] = 30 * kDeg;
-    for (const char* n : {"right_hip_y", "left_hip_y"}) pr.base[JointIndex(n)] = 110 * kDeg;
-    for (const char* n : {"right_knee", "left_knee"}) pr.base[JointIndex(n)] = 105 * kDeg;
-    for (const char* n : {"right_shoulder_y", "left_shoulder_y"}) {
-      pr.base[JointIndex(n)] = 45 * kDeg;
-    }
-    v.h = pr.base;
-    pr.feet_on_floor = true;
-    pr.anchor_feet = true;  // feet stay where they are (they cannot slide back under load)
-    pr.feet_anchor = {now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
-                      now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
-    pr.root_anchor = cur_pos;
-    pr.anchor_root_xy = true;
-    pr.base_quat = YawQuat(cur_yaw) *
-                   Eigen::Quaterniond(Eigen::AngleAxisd(20 * kDeg, Eigen::Vector3d::UnitY()));
-    v.quat = pr.base_quat;
-    v.pos = cur_pos;
-  }
-  switch (options.rise ? Posture::kLean : task.posture) {
-    case Posture::kLean:
-      if (options.rise) break;
-      [[fallthrough]];
-    case Posture::kStand: {
-      pr.balance = true;
-      if (task.get_close) {
-        // stand up / get close: stand on the way to the stand point, feet free
-        Eigen::Vector3d to = task.stand_point - cur_pos;
-        to.z() = 0;
-        double reach = std::min(to.norm(), 0.25 * s);
-        pr.root_anchor = cur_pos + (to.norm() > 1e-6 ? Eigen::Vector3d(to.normalized() * reach)
-                                                     : Eigen::Vector3d::Zero());
-        if (cur_pos.z() < 0.75 * world::kPelvisStandHeight * s) {
-          // getting up from a seat: stand over the feet
-          pr.root_anchor = 0.5 * (now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)] +
-                                  now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]);
-          pr.feet_anchor = {now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
-                            now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
-          pr.anchor_feet = true;
-        }
-        pr.anchor_root_xy = true;
-        v.pos = pr.root_anchor;
-        v.quat = YawQuat(cur_yaw);  // no turning in place without a walking skill
-      } else {
-        // reach etc.: feet stay where they are
-        pr.anchor_feet = true;
-        pr.feet_anchor = {now_pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
-                          now_pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
-        Eigen::Vector3d mid = 0.5 * (pr.feet_anchor[0] + pr.feet_anchor[1]);
-        v.pos = Eigen::Vector3d(mid.x(), mid.y(), 0);
-        v.pos -= YawQuat(cur_yaw) * Eigen::Vector3d(0.04 * s, 0, 0);
-      }
-      v.pos.z() = world::kPelvisStandHeight * s - 0.01;
-      pr.base_quat = v.quat;
-      break;
-    }
-    case Posture::kSit: {
-      auto top = part_top(core::BodyJoint::kPelvis);
-      Eigen::Vector3d seat = top ? *top : cur_pos;
-      v.quat = YawQuat(obj_yaw);
-      // pelvis a little behind the seat centre, but on a deep seat (sofa, armchair) no deeper
-      // than a person sits upright: kMaxSitDepthM behind the front edge, so the feet can be
-      // drawn back under the knees to stand up again; thighs horizontal
-      double back = 0.04 * s;
-      for (const ContactTerm& t : task.terms) {
-        if (t.joint != core::BodyJoint::kPelvis || !t.part || !top) continue;
-        auto [lo, hi] = core::ShapesBounds(t.part->shapes);
-        double centre_to_edge = 0.5 * (hi.x() - lo.x());
-        back = std::min(back, kMaxSitDepthM * s - centre_to_edge);
-        break;
-      }
-      v.pos = seat + YawQuat(obj_yaw) * Eigen::Vector3d(-back, 0, 0);
-      // on a bed, sit on the front edge where lying back later puts the head on the pillow
-      const core::CatalogPart* pillow = focus ? focus->FindPart("pillow") : nullptr;
-      const core::CatalogPart* mattress = focus ? focus->FindPart("mattress") : nullptr;
-      if (pillow && mattress) {
-        auto [mlo, mhi] = core::ShapesBounds(mattress->shapes);
-        auto [plo, phi] = core::ShapesBounds(pillow->shapes);
-        double pillow_y = 0.5 * (plo.y() + phi.y());
-        double dir = pillow_y > 0.5 * (mlo.y() + mhi.y()) ? 1.0 : -1.0;
-        double y = std::clamp(pillow_y - dir * 0.62 * s, mlo.y() + 0.2, mhi.y() - 0.2);
-        Eigen::Vector3d local(mhi.x() - 0.2 * s, y, mhi.z());
-        seat = focus->pose.Apply(local);
-        v.pos = seat;
-      }
-      v.pos.z() = seat.z() + 0.12 * s;
-      pr.base_quat = v.quat;
-      pr.feet_on_floor = true;
-      break;
-    }
-    case Posture::kLieBack:
-    case Posture::kLieSide: {
-      auto pelvis_top = part_top(core::BodyJoint::kPelvis);
-      auto head_top = part_top(core::BodyJoint::kHead);
-      Eigen::Vector3d mat = pelvis_top ? *pelvis_top : cur_pos;
-      Eigen::Vector3d head =
-          head_top ? *head_top : mat + YawQuat(obj_yaw) * Eigen::Vector3d(0, 1, 0);
-      Eigen::Vector3d h = head - mat;
-      h.z() = 0;
-      if (h.norm() < 1e-6) h = YawQuat(obj_yaw) * Eigen::Vector3d(0, 1, 0);
-      h.normalize();
-      Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
-      // lie along the bed on the line nearest to where the agent is, as long as the head still
-      // lands on the pillow: less to shuffle across the mattress
-      for (const ContactTerm& t : task.terms) {
-        if (t.joint != core::BodyJoint::kHead || !t.part) continue;
-        Eigen::Vector3d across(-h.y(), h.x(), 0);
-        auto [plo, phi] = core::ShapesBounds(t.part->shapes);
-        Eigen::Vector3d half_w = t.object->pose.quat * (0.5 * (phi - plo));
-        double room = std::max(0.0, std::abs(half_w.dot(across)) - 0.12 * s);
-        double off = std::clamp((cur_pos - head).dot(across), -room, room);
-        head += across * off;
-      }
-      if (task.posture == Posture::kLieBack) {
-        v.quat = FrameQuat(up, h);
-        v.pos = head - h * 0.62 * s;
-        v.pos.z() = mat.z() + 0.095 * s;
-      } else {
-        // on the side: front faces the side of the bed the agent came from
-        Eigen::Vector3d side = YawQuat(obj_yaw) * Eigen::Vector3d::UnitX();
-        side = (side - side.dot(h) * h).normalized();
-        v.quat = FrameQuat(side, h);
-        v.pos = head - h * 0.62 * s;
-        v.pos.z() = mat.z() + 0.16 * s;
-      }
-      pr.base_quat = v.quat;
-      pr.feet_on_floor = false;
-      break;
-    }
-  }
-
-  if (options.warm_start) {
-    const ReferencePose& w = *options.warm_start;
-    v.pos = Eigen::Vector3d(w.root[0], w.root[1], w.root[2]);
-    v.quat = Eigen::Quaterniond(w.root[3], w.root[4], w.root[5], w.root[6]).normalized();
-    v.h = w.hinges;
-  }
-
-  // Levenberg-Marquardt with forward-difference Jacobians
-  constexpr int kN = 6 + kHumanoidDofs;
-  double lambda = 1e-2;
-  std::vector<double> r0 = Residual(pr, v);
-  auto sq = [](const std::vector<double>& r) {
-    double s2 = 0;
-    for (double x : r) s2 += x * x;
-    return s2;
-  };
-  double c0 = sq(r0);
-  for (int it = 0; it < options.iterations; ++it) {
-    const int nr = static_cast<int>(r0.size());
-    Eigen::MatrixXd J(nr, kN);
-    constexpr double kEps = 1e-5;
-    for (int k = 0; k < kN; ++k) {
-      Eigen::VectorXd dx = Eigen::VectorXd::Zero(kN);
-      dx[k] = kEps;
-      Vars vk = Step(v, dx, m, a);
-      std::vector<double> rk = Residual(pr, vk);
-      double actual = (k >= 6) ? vk.h[k - 6] - v.h[k - 6] : kEps;
-      if (std::abs(actual) < 1e-12) {
-        dx[k] = -kEps;
-        vk = Step(v, dx, m, a);
-        rk = Residual(pr, vk);
-        actual = (k >= 6) ? vk.h[k - 6] - v.h[k - 6] : -kEps;
-      }
-      for (int i = 0; i < nr; ++i) {
-        J(i, k) = std::abs(actual) < 1e-12 ? 0.0 : (rk[i] - r0[i]) / actual;
-      }
-    }
-    Eigen::Map<Eigen::VectorXd> rv(r0.data(), nr);
-    Eigen::MatrixXd H = J.transpose() * J;
-    Eigen::VectorXd g = J.transpose() * rv;
-    bool improved = false;
-    for (int tries = 0; tries < 6 && !improved; ++tries) {
-      Eigen::MatrixXd A = H;
-      A.diagonal().array() += lambda * (1.0 + H.diagonal().array());
-      Eigen::VectorXd dx = -A.ldlt().solve(g);
-      // limit the step
-      double mx = dx.cwiseAbs().maxCoeff();
-      if (mx > 0.3) dx *= 0.3 / mx;
-      Vars vn = Step(v, dx, m, a);
-      std::vector<double> rn = Residual(pr, vn);
-      double cn = sq(rn);
-      if (cn < c0) {
-        v = vn;
-        r0 = rn;
-        c0 = cn;
-        lambda = std::max(1e-6, lambda * 0.3);
-        improved = true;
-      } else {
-        lambda *= 10;
-      }
-    }
-    if (!improved) break;
-  }
-
+  SetUpProblem(task, options, st, s, &pr, &v);
+  const double cost = MinimizeResidual(pr, options.iterations, m, a, &v);
   Apply(pr, v, scratch);
-  ReferencePose out;
-  for (int i = 0; i < 3; ++i) out.root[i] = v.pos[i];
-  out.root[3] = v.quat.w();
-  out.root[4] = v.quat.x();
-  out.root[5] = v.quat.y();
-  out.root[6] = v.quat.z();
-  out.hinges = v.h;
-  out.residual = std::sqrt(c0);
-  double err = 0;
-  int n = 0;
-  auto pts = world.BodyPoints(scratch, agent);
-  for (const ContactTerm& t : task.terms) {
-    if (t.type != plan::ContactType::kContact) continue;
-    Eigen::Vector3d p = pts[static_cast<int>(t.joint)];
-    err += std::abs((p - t.Nearest(p, pts)).norm() - t.clearance_m);
-    ++n;
-  }
-  out.contact_error_m = n ? err / n : 0.0;
   (void)Yaw;
-  return out;
+  return MakeReferencePose(world, agent, task, v, cost, scratch);
 }
 
 }  // namespace simhuman::control
