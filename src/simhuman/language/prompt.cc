@@ -7,6 +7,7 @@
 #include <set>
 
 #include "simhuman/core/body_joint.h"
+#include "simhuman/core/footprint.h"
 #include "simhuman/core/json_io.h"
 #include "simhuman/plan/contact_chain.h"
 
@@ -49,14 +50,6 @@ double Distance2d(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 }
 
 // floor distance from `p_world` to the object's footprint (its LocalBounds in x and y)
-double FootprintDistance(const core::CatalogObject& o, const Eigen::Vector3d& p_world) {
-  if (o.shapes.empty()) return Distance2d(o.pose.pos, p_world);
-  auto [lo, hi] = o.LocalBounds();
-  Eigen::Vector3d p = o.pose.ApplyInverse(p_world);
-  double dx = std::max({lo.x() - p.x(), 0.0, p.x() - hi.x()});
-  double dy = std::max({lo.y() - p.y(), 0.0, p.y() - hi.y()});
-  return std::hypot(dx, dy);
-}
 
 std::string Describe(const core::CatalogObject& o) {
   std::string kind = o.color.empty() ? o.type : o.color + " " + o.type;
@@ -200,7 +193,7 @@ std::map<std::string, std::string> DescribeScene(const core::SceneCatalog& scene
                                     : "standing") +
               " at x = " + Fixed(s.x_m, 2) + " m, y = " + Fixed(s.y_m, 2) + " m.";
     for (const core::CatalogObject& o : scene.objects) {
-      double d = FootprintDistance(o, p);
+      double d = core::FootprintDistance(o, p.head<2>());
       humans += " [OBJECT: " + o.id + "] is " + Fixed(d, 1) + " m away" +
                 (d < kCloseDistanceM ? " (close)" : " (not close)") + ".";
     }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "simhuman/core/check.h"
+#include "simhuman/core/footprint.h"
 
 namespace simhuman::plan {
 namespace {
@@ -150,11 +151,7 @@ absl::Status PairParams::Validate() const {
   return absl::OkStatus();
 }
 
-double ObjectYaw(const core::Pose& object_pose) {
-  const Eigen::Vector3d x = object_pose.quat * Eigen::Vector3d::UnitX();
-  if (x.head<2>().norm() < 1e-12) return 0.0;  // +x points straight up or down
-  return std::atan2(x.y(), x.x());
-}
+double ObjectYaw(const core::Pose& object_pose) { return core::PoseYaw(object_pose); }
 
 Eigen::Vector3d DirectionVector(Direction d, const core::Pose& object_pose) {
   const double yaw = ObjectYaw(object_pose);

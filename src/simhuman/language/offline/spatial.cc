@@ -3,21 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "simhuman/core/footprint.h"
 #include "simhuman/plan/metrics.h"
 
 namespace simhuman::language::offline {
 
 // horizontal distance from `p` to the object's footprint (its local bounds turned by its yaw)
 double FootprintDistance(const CatalogObject& o, Point2 p) {
-  if (o.shapes.empty()) return std::hypot(p.x - o.pose.pos.x(), p.y - o.pose.pos.y());
-  const auto [lo, hi] = o.LocalBounds();
-  const double yaw = plan::ObjectYaw(o.pose);
-  const double dx = p.x - o.pose.pos.x(), dy = p.y - o.pose.pos.y();
-  const double lx = std::cos(yaw) * dx + std::sin(yaw) * dy;
-  const double ly = -std::sin(yaw) * dx + std::cos(yaw) * dy;
-  const double ex = std::max({lo.x() - lx, 0.0, lx - hi.x()});
-  const double ey = std::max({lo.y() - ly, 0.0, ly - hi.y()});
-  return std::hypot(ex, ey);
+  return core::FootprintDistance(o, Eigen::Vector2d(p.x, p.y));
 }
 
 double CentreDistance(const CatalogObject& a, const CatalogObject& b) {
@@ -91,7 +84,8 @@ bool HoldsSide(Rel r, const CatalogObject& a, const CatalogObject& ref, const Vi
 // `a` rests on `ref`: its origin lies over ref's footprint and above the floor
 bool RestsOn(const CatalogObject& a, const CatalogObject& ref) {
   if (a.id == ref.id) return false;
-  return a.pose.pos.z() > 0.05 && FootprintDistance(ref, {a.pose.pos.x(), a.pose.pos.y()}) < 1e-6;
+  return a.pose.pos.z() > 0.05 &&
+         FootprintDistance(ref, Point2{a.pose.pos.x(), a.pose.pos.y()}) < 1e-6;
 }
 
 }  // namespace simhuman::language::offline
