@@ -10,9 +10,7 @@ constexpr std::array<std::string_view, kNumBodyJoints> kNames = {
     "left knee", "left foot",      "right hip",   "right knee",    "right foot"};
 
 // the one canonical form of names (scene_catalog.h), digits kept: "Right_Palm" -> "right palm"
-std::string Canonical(std::string_view name) {
-  return NormalizeName(name, TrailingDigits::kKeep);
-}
+std::string Canonical(std::string_view name) { return NormalizeName(name, TrailingDigits::kKeep); }
 }  // namespace
 
 std::string_view BodyJointName(BodyJoint joint) {

@@ -28,8 +28,9 @@ core::StatusOr<const Embodiment*> FindEmbodiment(std::string_view name) {
   for (const Embodiment& e : Embodiments()) {
     if (e.name == name) return &e;
   }
-  return absl::InvalidArgumentError("unknown agent kind '" + std::string(name) +
-                                    "'; valid agent kinds are: " + core::JoinNames(EmbodimentNames()));
+  return absl::InvalidArgumentError(
+      "unknown agent kind '" + std::string(name) +
+      "'; valid agent kinds are: " + core::JoinNames(EmbodimentNames()));
 }
 
 HumanoidSpec MakeHumanoidSpec(const Embodiment& kind, double scale, int index) {
