@@ -13,7 +13,7 @@
 #include "simhuman/learn/ppo_checkpoint.h"
 #include "simhuman/learn/ppo_rollout.h"
 #include "simhuman/learn/ppo_update.h"
-#include "simhuman/learn/reach_env.h"
+#include "simhuman/learn/tasks.h"
 #include "simhuman/learn/vec_env.h"
 #include "simhuman/learn/walk_env.h"
 
@@ -29,14 +29,8 @@ constexpr size_t kBestPolicyMinEpisodes = 50;
 
 core::StatusOr<std::unique_ptr<VecTask>> MakeTask(const std::string& name, int envs,
                                                   const std::string& solver) {
-  if (name == "walk") {
-    SH_ASSIGN_OR_RETURN(std::unique_ptr<WalkTask> t,
-                        WalkTask::Create(envs, solver != "newton" ? WalkPhysicsSolver::kPgs
-                                                                  : WalkPhysicsSolver::kNewton));
-    return std::unique_ptr<VecTask>(std::move(t));
-  }
-  if (name == "reach") return std::unique_ptr<VecTask>(new ReachTask(envs));
-  return absl::InvalidArgumentError("unknown task '" + name + "'; valid: walk, reach");
+  SH_ASSIGN_OR_RETURN(const TaskDef* def, FindTask(name));
+  return def->make(envs, solver);
 }
 
 std::string Widths(const std::vector<int>& h) {
@@ -95,23 +89,42 @@ struct PpoTrainer::Impl {
     if (!p.ok())
       return absl::InvalidArgumentError(where + ": " + std::string(p.status().message()));
     const int d = env->obs_dim(), a = env->act_dim();
-    if (p->meta.task != cfg.task || p->meta.obs_dim != d || p->meta.act_dim != a ||
-        p->meta.hidden != cfg.hidden) {
+    SH_ASSIGN_OR_RETURN(const TaskDef* def, FindTask(cfg.task));
+    const bool parent =
+        !def->init_parent.empty() && p->meta.task == def->init_parent && p->meta.obs_dim < d;
+    if ((p->meta.task != cfg.task && !parent) || (!parent && p->meta.obs_dim != d) ||
+        p->meta.act_dim != a || p->meta.hidden != cfg.hidden) {
       return absl::InvalidArgumentError(
           where + " holds a '" + p->meta.task + "' policy (obs " + std::to_string(p->meta.obs_dim) +
           ", act " + std::to_string(p->meta.act_dim) + ", hidden " + Widths(p->meta.hidden) +
           ") but this run is '" + cfg.task + "' (obs " + std::to_string(d) + ", act " +
-          std::to_string(a) + ", hidden " + Widths(cfg.hidden) + "); set \"hidden\" to match");
+          std::to_string(a) + ", hidden " + Widths(cfg.hidden) + ")" +
+          (def->init_parent.empty() ? ""
+                                    : " (it may start from a '" + def->init_parent + "' policy)") +
+          "; set \"hidden\" to match");
     }
     torch::NoGradGuard no_grad;
     auto src = p->actor->named_parameters();
     for (auto& dst : net.actor->named_parameters()) {
       const torch::Tensor* s = src.find(dst.key());
-      if (!s || s->sizes() != dst.value().sizes()) {
+      torch::Tensor t = dst.value();
+      // the input layer of a parent task's policy: its columns first, zeros for the new inputs
+      const bool widen = parent && s && s->dim() == 2 && t.dim() == 2 && s->size(0) == t.size(0) &&
+                         s->size(1) == p->meta.obs_dim && t.size(1) == d;
+      if (widen) {
+        t.zero_();
+        t.narrow(1, 0, p->meta.obs_dim).copy_(*s);
+        continue;
+      }
+      if (!s || s->sizes() != t.sizes()) {
         return absl::InvalidArgumentError(where + ": parameter '" + dst.key() +
                                           "' missing or of another shape");
       }
-      dst.value().copy_(*s);
+      t.copy_(*s);
+    }
+    if (parent) {
+      norm = p->norm.Widened(d, 1e4);
+      return absl::OkStatus();
     }
     norm = p->norm;
     return absl::OkStatus();

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "simhuman/core/field_table.h"
+#include "simhuman/learn/tasks.h"
 
 namespace simhuman::learn {
 namespace {
@@ -18,7 +19,7 @@ const core::FieldTable<PpoConfig>& Table() {
   const NumberRange kThreads = NumberRange::Closed(1, 64);
   static const core::FieldTable<PpoConfig> kTable(
       "training config",
-      {F("task", &PpoConfig::task, "training task").OneOf({"walk", "reach"}),
+      {F("task", &PpoConfig::task, "training task").OneOf(TaskNames()),
        F("total_steps", &PpoConfig::total_steps, "env steps of the run").In(kAtLeast1),
        F("num_envs", &PpoConfig::num_envs, "parallel envs").In(NumberRange::Closed(1, 4096)),
        F("threads", &PpoConfig::threads, "env worker threads").In(kThreads),
@@ -85,7 +86,8 @@ const core::FieldTable<PpoConfig>& Table() {
 
 absl::Status PpoConfig::Validate() const {
   SH_RETURN_IF_ERROR(Table().Validate(*this));
-  if (physics_solver == "pgs" && task != "walk") {
+  const core::StatusOr<const TaskDef*> def = FindTask(task);
+  if (physics_solver == "pgs" && def.ok() && !(*def)->solver_choice) {
     return absl::InvalidArgumentError("training config: physics_solver '" + physics_solver +
                                       "' applies to the walk task only; task is '" + task + "'");
   }

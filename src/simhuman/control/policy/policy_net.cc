@@ -1,5 +1,6 @@
 #include "simhuman/control/policy/policy_net.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -60,6 +61,16 @@ void ObsNormalizer::Update(const torch::Tensor& batch) {
   var_ = (var_ * count_ + bv * n + delta * delta * (count_ * n / total)) / total;
   count_ = total;
   Cache();
+}
+
+ObsNormalizer ObsNormalizer::Widened(int new_dim, double max_count) const {
+  ObsNormalizer w(std::max(new_dim, dim_), clip_);
+  torch::NoGradGuard ng;
+  w.mean_.narrow(0, 0, dim_).copy_(mean_);
+  w.var_.narrow(0, 0, dim_).copy_(var_);
+  w.count_ = std::min(count_, max_count);
+  w.Cache();
+  return w;
 }
 
 torch::Tensor ObsNormalizer::Normalize(const torch::Tensor& x) const {

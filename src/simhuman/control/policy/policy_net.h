@@ -52,6 +52,10 @@ class ObsNormalizer {
   absl::Status Load(torch::serialize::InputArchive& ar, int dim);
   int dim() const { return dim_; }
   double count() const { return count_; }
+  /// A normalizer over `new_dim` >= dim() inputs: the first dim() keep their statistics, the new
+  /// ones start at mean 0, variance 1; the count is capped at `max_count` so that the new
+  /// inputs' statistics adapt within a few batches (used to widen a policy's input).
+  ObsNormalizer Widened(int new_dim, double max_count) const;
 
  private:
   int dim_;

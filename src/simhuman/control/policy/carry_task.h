@@ -1,0 +1,167 @@
+#pragma once
+/// The single-carrier carrying skill's task definition, shared by training (learn/carry_env) and
+/// deployment, as walk_task.h is for walking: phases, reference poses, observations and PD
+/// targets. Torch-free.
+///
+/// A carry runs in phases. The walking part (legs, trunk, command, gait clock) is the walking
+/// skill's (walk_task.h): its observation is the first kWalkObsDim entries of the carry
+/// observation, so a walking policy initialises a carry policy with its input layer widened.
+///  - kApproach: walk to the stand point in front of the box's near face, facing the box.
+///  - kLift: squat with the arms open around the box, press the hands on its two side faces,
+///    rise to the holding pose (kLiftSeconds, driven by a clock).
+///  - kCarry: walk to the carry stand point (destination minus the holding offset), the arms
+///    keep pressing on the box.
+///  - kPutDown: squat holding the box, open the arms, rise (kPutDownSeconds).
+///  - kRetreat: step back from the box, arms hanging; the walking reference alone.
+///
+/// Frames: the stand frame has its origin on the floor at the stand point, +x toward the box.
+/// Box "held points" are the centres of its two side faces (left: +y of the stand frame).
+
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Core>
+#include <array>
+
+#include "simhuman/control/policy/walk_task.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::control {
+
+inline constexpr int kCarryExtraObsDim = 64;
+inline constexpr int kCarryObsDim = kWalkObsDim + kCarryExtraObsDim;
+inline constexpr int kCarryActDim = kWalkActDim;
+inline constexpr double kLiftSeconds = 3.2;
+inline constexpr double kPutDownSeconds = 3.2;
+
+enum class CarryPhase : int { kApproach, kLift, kCarry, kPutDown, kRetreat };
+inline constexpr int kNumCarryPhases = 5;
+const char* CarryPhaseName(CarryPhase p);
+
+/// Geometry of the skill (defaults are what the shipped policy trains with).
+struct CarryParams {
+  double stand_gap_m = 0.20;       ///< stand point to the box's near face (pelvis over the feet)
+  double hold_gap_m = 0.16;        ///< pelvis to the held box's near face while carrying
+  double hold_rise_m = 0.02;       ///< held box centre above the pelvis
+  double open_m = 0.06;            ///< hands outside the side faces before squeezing
+  double squeeze_m = 0.04;         ///< hand targets inside the side faces (the press)
+  double grasp_frac = 0.55;        ///< grasp height as a fraction of the box height
+  double arrive_radius_m = 0.2;    ///< at a stand point: within this ...
+  double arrive_yaw_rad = 0.2;     ///< ... and heading error below this ...
+  double arrive_speed_mps = 0.25;  ///< ... and slower than this
+  double retreat_m = 0.6;          ///< step back this far after putting down
+  /// the approach aims this far past the stand point: the walker stops short of its target
+  double approach_lead_m = 0.12;
+  /// held points lie at most this far behind the box's near face (deep boxes are held near
+  /// their near end, against the body, as people hold them)
+  double max_reach_depth_m = 0.30;
+};
+
+/// The box being carried, in the world (from the simulation or a perception estimate).
+struct CarryBox {
+  Eigen::Vector3d pos = Eigen::Vector3d::Zero();  ///< centre, m
+  Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d half = Eigen::Vector3d::Constant(0.25);  ///< half extents, m
+  Eigen::Vector3d linvel = Eigen::Vector3d::Zero(), angvel = Eigen::Vector3d::Zero();
+  double mass_kg = 5;
+  int geom = -1;  ///< the box's geom in the model (-1: not simulated, e.g. an estimate)
+};
+
+/// Joint-space keyframes of one carry (28 hinges, actuator order), solved for a box size.
+struct CarryPoses {
+  std::array<double, kWalkActDim> squat_open{};     ///< squatting, hands beside the faces
+  std::array<double, kWalkActDim> squat_squeeze{};  ///< squatting, hands pressing
+  std::array<double, kWalkActDim> hold{};           ///< standing, box held in front
+  double squat_pelvis_z = 0.9;                      ///< pelvis height of the squat, m
+  double squat_pitch_rad = 0;  ///< forward pitch of the pelvis that balances the squat
+  double ik_error_m = 0;       ///< worst hand distance to its keyframe point (diagnostic)
+};
+
+/// Task state of one carrying agent.
+struct CarryState {
+  CarryPhase phase = CarryPhase::kApproach;
+  double phase_time_s = 0;
+  WalkState walk;  ///< the walking part (its target is the current stand point)
+  Eigen::Vector2d dest_xy = Eigen::Vector2d::Zero();    ///< where the box goes (centre), m
+  Eigen::Vector2d face_dir = Eigen::Vector2d::UnitX();  ///< stand frame +x at pick-up (world)
+  Eigen::Vector2d stand_xy = Eigen::Vector2d::Zero();   ///< stand point of the current phase
+  Eigen::Vector3d half_stand = Eigen::Vector3d::Constant(0.25);  ///< box half extents, stand frame
+  /// the left held point in the box frame (the right one mirrors its side component)
+  Eigen::Vector3d held_left_local = Eigen::Vector3d::Zero();
+  int held_axis = 1;  ///< box axis (0 x, 1 y) normal to the held faces
+  CarryPoses poses;
+};
+
+/// Indices the task reads: the walking ones plus the hand sites.
+struct CarryIndex {
+  WalkIndex walk;
+  int left_hand_site = -1, right_hand_site = -1;
+  int left_hand_geom = -1, right_hand_geom = -1;
+};
+
+core::StatusOr<CarryIndex> MakeCarryIndex(const world::SimWorld& world, int a);
+
+/// Where the hands go, in the stand frame at lift time (origin on the floor between the feet,
+/// +x the pelvis heading): the held points and their faces' outward normals, and the box's
+/// extents in the carrier's frame (for the holding pose).
+struct LiftGeometry {
+  Eigen::Vector3d left = Eigen::Vector3d::Zero(), right = Eigen::Vector3d::Zero();
+  Eigen::Vector3d left_out = Eigen::Vector3d::UnitY(), right_out = -Eigen::Vector3d::UnitY();
+  double half_x = 0.25, half_y = 0.25;  ///< box half extents along and across the heading
+  double held_dx = 0, held_dz = 0;      ///< held points' offset from the box centre
+};
+
+/// Solves the keyframes with a balanced squat (centre of mass over the feet) and a small
+/// Gauss-Newton IK of the arms on `scratch` (any mjData of the model; overwritten).
+CarryPoses SolveCarryPoses(const CarryParams& p, const mjModel* m, mjData* scratch,
+                           const CarryIndex& ix, const LiftGeometry& g);
+
+/// The lift geometry of the current state: the human where it stands, the box where it lies.
+LiftGeometry MakeLiftGeometry(const CarryParams& p, const mjData* d, const CarryIndex& ix,
+                              const CarryState& s, const CarryBox& box);
+
+/// Chooses the face of `box` nearest to `from_xy`: the stand point before it and the stand
+/// direction (+x toward the box), and the box half extents in that stand frame.
+void ChooseStandFace(const CarryParams& p, const CarryBox& box, const Eigen::Vector2d& from_xy,
+                     Eigen::Vector2d* stand_xy, Eigen::Vector2d* face_dir,
+                     Eigen::Vector3d* half_in_stand);
+
+/// Starts a carry: phase kApproach toward the chosen face, the held points fixed on the box.
+void BeginCarry(const CarryParams& p, const CarryIndex& ix, const mjData* d, const CarryBox& box,
+                const Eigen::Vector2d& dest_xy, CarryState* s);
+
+/// Advances phases and the walking command by one policy step (call before CarryObservation).
+/// Entering the lift solves its keyframes (SolveCarryPoses) on `scratch`.
+void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
+                 const CarryIndex& ix, const CarryBox& box, CarryState* s);
+
+/// Writes kCarryObsDim floats: the walking observation, then the box, the destination, the
+/// phase and the hands (see docs/FORMATS.md, "Carrying policy").
+void CarryObservation(const mjData* d, const CarryIndex& ix, const CarryState& s,
+                      const CarryBox& box, float* obs);
+
+/// The phase's reference pose (28 hinges): walking gait, lift or put-down blend, holding arms.
+void CarryReference(const CarryState& s, double* q28);
+
+/// PD targets: reference + kWalkActionScale * clip(action), clipped to the actuator ranges.
+void CarryTargets(const CarryIndex& ix, const CarryState& s, const float* action, double* ctrl28);
+
+/// Whether the phase expects the hands on the box (the squeeze part of lift and put-down and
+/// the whole carry).
+bool CarryHandsOnBox(const CarryState& s);
+
+/// The held points (world): on the box's two held faces at the grasp height, fixed in the box
+/// frame at BeginCarry.
+void CarryHeldPoints(const CarryState& s, const CarryBox& box, Eigen::Vector3d* left,
+                     Eigen::Vector3d* right);
+
+/// Reads the box state from its (single box) geom on a free body.
+CarryBox ReadCarryBox(const mjModel* m, const mjData* d, int geom);
+
+/// Height of the box's lowest corner, m.
+double BoxLowestZ(const CarryBox& box);
+
+/// Whether each hand geom touches the box geom.
+void HandBoxContacts(const mjData* d, const CarryIndex& ix, const CarryBox& box, bool* left,
+                     bool* right);
+
+}  // namespace simhuman::control

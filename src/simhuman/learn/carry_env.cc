@@ -1,0 +1,308 @@
+#include "simhuman/learn/carry_env.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "simhuman/core/geometry.h"
+#include "simhuman/learn/walk_env.h"
+#include "simhuman/world/model_builder.h"
+#include "simhuman/world/objects.h"
+
+namespace simhuman::learn {
+namespace {
+
+using control::CarryPhase;
+using control::kWalkActDim;
+
+constexpr double kDeg = M_PI / 180.0;
+constexpr double kSuccessRadius = 0.2;
+constexpr int kSuccessHold = 30;  // policy steps at rest after the put-down (1 s)
+
+Eigen::Vector3d Vec(const mjtNum* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
+
+bool Squatting(CarryPhase p) { return p == CarryPhase::kLift || p == CarryPhase::kPutDown; }
+
+}  // namespace
+
+const char* CarryFailureName(CarryFailure f) {
+  switch (f) {
+    case CarryFailure::kNone:
+      return "none";
+    case CarryFailure::kFall:
+      return "fall";
+    case CarryFailure::kKick:
+      return "kicked the box";
+    case CarryFailure::kDrop:
+      return "dropped the box";
+    case CarryFailure::kLost:
+      return "lost the box";
+    case CarryFailure::kNonFinite:
+      return "non-finite state";
+  }
+  return "?";
+}
+
+core::StatusOr<std::unique_ptr<CarryTask>> CarryTask::Create(int num_envs) {
+  if (num_envs <= 0) return absl::InvalidArgumentError("carry task: --envs must be positive");
+  std::unique_ptr<CarryTask> t(new CarryTask());
+  world::ObjectSpec box;
+  box.id = "box000";
+  box.type = "box";
+  box.pos = Eigen::Vector3d(0, 0, 0);
+  box.size = {{"depth", 0.5}, {"width", 0.5}, {"height", 0.5}};
+  box.mass_kg = 5.0;
+  SH_ASSIGN_OR_RETURN(core::CatalogObject obj, world::BuildObject(box));
+  core::SceneCatalog scene;
+  scene.objects.push_back(obj);
+  world::ModelOptions opt;
+  opt.timestep_s = control::kWalkPhysicsDt;
+  SH_ASSIGN_OR_RETURN(t->world_, world::SimWorld::Create(scene, {world::AgentSpec()}, opt));
+  SH_ASSIGN_OR_RETURN(t->ix_, control::MakeCarryIndex(*t->world_, 0));
+  mjModel* m = t->world_->mutable_model();
+  m->nconmax = 96;
+  m->njmax = 600;
+  m->nstack = 200000;
+  t->box_body_ = mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName("box000").c_str());
+  t->box_geom_ = mj_name2id(m, mjOBJ_GEOM, "obj/box000/0");
+  if (t->box_body_ < 0 || t->box_geom_ < 0 || m->body_jntnum[t->box_body_] != 1 ||
+      m->geom_type[t->box_geom_] != mjGEOM_BOX) {
+    return absl::InternalError("carry task: the box is not a free body with one box geom");
+  }
+  t->box_qpos_ = m->jnt_qposadr[m->body_jntadr[t->box_body_]];
+  // a hand is a patch, not a point: torsional friction (condim 4) lets two pressing palms
+  // resist the box turning about the line between them
+  m->geom_condim[t->box_geom_] = 4;
+  m->geom_friction[3 * t->box_geom_ + 1] = 0.05;
+  const world::AgentIndex& a = t->ix_.walk.agent;
+  t->allowed_floor_.assign(m->nbody, 0);
+  for (int b : {a.left_foot_body, a.right_foot_body, m->geom_bodyid[t->ix_.left_hand_geom],
+                m->geom_bodyid[t->ix_.right_hand_geom], t->box_body_}) {
+    t->allowed_floor_[b] = 1;
+  }
+  t->envs_.resize(num_envs);
+  for (Env& e : t->envs_) {
+    e.m = mj_copyModel(nullptr, m);
+    e.d = mj_makeData(e.m);
+    e.scratch = mj_makeData(e.m);
+  }
+  return t;
+}
+
+CarryTask::~CarryTask() {
+  for (Env& e : envs_) {
+    if (e.scratch) mj_deleteData(e.scratch);
+    if (e.d) mj_deleteData(e.d);
+    if (e.m) mj_deleteModel(e.m);
+  }
+}
+
+void CarryTask::ShapeBox(Env& e, double side_m, double mass_kg) const {
+  mjModel* m = e.m;
+  const double h = 0.5 * side_m;
+  for (int k = 0; k < 3; ++k) m->geom_size[3 * box_geom_ + k] = h;
+  m->geom_pos[3 * box_geom_ + 2] = h;  // the body origin is on the floor under the centre
+  m->geom_rbound[box_geom_] = std::sqrt(3.0) * h;
+  m->body_ipos[3 * box_body_ + 2] = h;
+  m->body_mass[box_body_] = mass_kg;
+  const double inertia = mass_kg * side_m * side_m / 6.0;
+  for (int k = 0; k < 3; ++k) m->body_inertia[3 * box_body_ + k] = inertia;
+}
+
+void CarryTask::SetBox(int i, double side_m, double mass_kg, const Eigen::Vector3d& pos,
+                       double yaw_rad, const Eigen::Vector2d& dest_xy, float* obs) {
+  Env& e = envs_[i];
+  ShapeBox(e, side_m, mass_kg);
+  mjData* d = e.d;
+  d->qpos[box_qpos_ + 0] = pos.x();
+  d->qpos[box_qpos_ + 1] = pos.y();
+  d->qpos[box_qpos_ + 2] = pos.z();
+  d->qpos[box_qpos_ + 3] = std::cos(yaw_rad / 2);
+  d->qpos[box_qpos_ + 4] = d->qpos[box_qpos_ + 5] = 0;
+  d->qpos[box_qpos_ + 6] = std::sin(yaw_rad / 2);
+  const int dof = e.m->jnt_dofadr[e.m->body_jntadr[box_body_]];
+  for (int k = 0; k < 6; ++k) d->qvel[dof + k] = 0;
+  mj_forward(e.m, d);
+  control::CarryBox box = control::ReadCarryBox(e.m, d, box_geom_);
+  e.s = control::CarryState();
+  e.s.walk.phase = e.rng.Uniform();
+  control::BeginCarry(params_, ix_, d, box, dest_xy, &e.s);
+  control::UpdateWalkCommand(control::WalkParams(), d, ix_.walk, &e.s.walk);
+  e.steps = e.done_hold = 0;
+  e.success = false;
+  e.failure = CarryFailure::kNone;
+  control::CarryObservation(d, ix_, e.s, box, obs);
+}
+
+void CarryTask::Reset(int i, uint64_t seed, float* obs) {
+  Env& e = envs_[i];
+  e.rng = core::Rng(seed);
+  mjData* d = e.d;
+  mj_resetData(e.m, d);
+  const world::AgentIndex& a = ix_.walk.agent;
+  const double c = std::clamp(curriculum_, 0.0, 1.0);
+  // the human 1-2 m (up to 5 m) from the box, facing it within +-(30 + 150 c) degrees
+  const double dist = e.rng.Uniform(1.0, 2.0 + 3.0 * c);
+  const double bearing = e.rng.Uniform(-M_PI, M_PI);
+  const Eigen::Vector2d start = dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+  const double face = std::atan2(-start.y(), -start.x());
+  const double yaw = face + e.rng.Uniform(-1.0, 1.0) * (30.0 + 150.0 * c) * kDeg;
+  d->qpos[a.root_qpos + 0] = start.x();
+  d->qpos[a.root_qpos + 1] = start.y();
+  d->qpos[a.root_qpos + 3] = std::cos(yaw / 2);
+  d->qpos[a.root_qpos + 4] = d->qpos[a.root_qpos + 5] = 0;
+  d->qpos[a.root_qpos + 6] = std::sin(yaw / 2);
+  const auto& nominal = control::WalkNominalPose();
+  for (int j = 0; j < kWalkActDim; ++j) {
+    double q =
+        std::clamp(nominal[j] + e.rng.Normal(0.03), ix_.walk.ctrl_lo[j], ix_.walk.ctrl_hi[j]);
+    d->qpos[a.hinge_qpos[j]] = q;
+    d->ctrl[a.actuator[j]] = q;
+  }
+  mj_forward(e.m, d);
+  const double lowest =
+      LowestBoxCornerZ(e.m, d, {ix_.walk.left_foot_geom, ix_.walk.right_foot_geom});
+  d->qpos[a.root_qpos + 2] -= lowest - 0.001;
+  // the box: a cube, side and mass growing with the curriculum
+  const double side = e.rng.Uniform(0.4 - 0.15 * c, 0.6 + 0.15 * c);
+  const double mass = e.rng.Uniform(2.0, 5.0 + 8.0 * c);
+  const double dest_dist = e.rng.Uniform(1.0, 3.0 + 7.0 * c);
+  const double dest_dir = e.rng.Uniform(-M_PI, M_PI);
+  SetBox(i, side, mass, Eigen::Vector3d(0, 0, 0), e.rng.Uniform(-M_PI, M_PI),
+         dest_dist * Eigen::Vector2d(std::cos(dest_dir), std::sin(dest_dir)), obs);
+}
+
+CarryFailure CarryTask::Check(const Env& e, const control::CarryBox& box) const {
+  const mjData* d = e.d;
+  const world::AgentIndex& a = ix_.walk.agent;
+  const CarryPhase ph = e.s.phase;
+  const bool squat = Squatting(ph);
+  if (d->xpos[3 * a.pelvis_body + 2] < (squat ? 0.3 : 0.55) ||
+      d->xpos[3 * a.head_body + 2] < (squat ? 0.45 : 0.8)) {
+    return CarryFailure::kFall;
+  }
+  // a lifting squat bends the trunk to horizontal; walking keeps it within 70 degrees
+  if (!squat && d->xmat[9 * a.torso_body + 8] < std::cos(70 * kDeg)) return CarryFailure::kFall;
+  for (int c = 0; c < d->ncon; ++c) {
+    int g1 = d->contact[c].geom1, g2 = d->contact[c].geom2;
+    int floor = ix_.walk.floor_geom;
+    int other = g1 == floor ? g2 : (g2 == floor ? g1 : -1);
+    if (other >= 0 && !allowed_floor_[e.m->geom_bodyid[other]]) return CarryFailure::kFall;
+  }
+  const double low = control::BoxLowestZ(box);
+  const double speed = std::hypot(box.linvel.x(), box.linvel.y());
+  if (!control::CarryHandsOnBox(e.s) && low < 0.3 && speed > 1.0) return CarryFailure::kKick;
+  if (ph == CarryPhase::kCarry && e.s.phase_time_s > 1.0 && low < 0.03) return CarryFailure::kDrop;
+  Eigen::Vector3d pelvis = Vec(d->xpos + 3 * a.pelvis_body);
+  if (ph == CarryPhase::kCarry && (box.pos - pelvis).head<2>().norm() > 1.2) {
+    return CarryFailure::kLost;
+  }
+  return CarryFailure::kNone;
+}
+
+double CarryTask::Reward(Env& e, const control::CarryBox& box, const float* action, double power) {
+  const mjData* d = e.d;
+  const world::AgentIndex& a = ix_.walk.agent;
+  const control::CarryState& s = e.s;
+  CarryRewardTerms& t = e.terms;
+  Eigen::Vector3d pos;
+  double yaw;
+  control::PelvisPose(d, ix_.walk, &pos, &yaw);
+  const mjtNum* v = d->qvel + a.root_qvel;
+  const double c = std::cos(yaw), sn = std::sin(yaw);
+  const double vx = c * v[0] + sn * v[1], vy = -sn * v[0] + c * v[1];
+  const control::WalkCommand& cmd = s.walk.cmd;
+  // walking: velocity tracking, progress, facing
+  double vel = std::exp(-((vx - cmd.vx) * (vx - cmd.vx) + (vy - cmd.vy) * (vy - cmd.vy)) / 0.25);
+  double cmd_speed = std::hypot(cmd.vx, cmd.vy);
+  double prog =
+      cmd_speed > 0.05 ? std::clamp((vx * cmd.vx + vy * cmd.vy) / cmd_speed, -0.5, cmd_speed) : 0.0;
+  double facing = 0.5 * (1.0 + std::cos(s.walk.facing_rad - yaw));
+  t.walk = vel + 1.5 * prog + 0.5 * facing;
+  // the whole-body reference of the phase
+  double ref[kWalkActDim];
+  control::CarryReference(s, ref);
+  double err = 0;
+  for (int j = 0; j < kWalkActDim; ++j) {
+    double dq = d->qpos[a.hinge_qpos[j]] - ref[j];
+    err += dq * dq;
+  }
+  t.pose = std::exp(-err / 1.0);
+  t.posture = Squatting(s.phase) ? 1.0 : std::exp(-(1.0 - d->xmat[9 * a.torso_body + 8]) / 0.0603);
+  // hands at the held points while they should hold
+  t.hands = 0;
+  if (control::CarryHandsOnBox(s)) {
+    Eigen::Vector3d hl, hr;
+    control::CarryHeldPoints(s, box, &hl, &hr);
+    const double r = e.m->geom_size[3 * ix_.left_hand_geom];
+    double dl = std::max(0.0, (Vec(d->site_xpos + 3 * ix_.left_hand_site) - hl).norm() - r);
+    double dr = std::max(0.0, (Vec(d->site_xpos + 3 * ix_.right_hand_site) - hr).norm() - r);
+    bool lc, rc;
+    control::HandBoxContacts(d, ix_, box, &lc, &rc);
+    t.hands = std::exp(-20.0 * (dl * dl + dr * dr)) + 0.25 * (lc + rc);
+  }
+  const double low = control::BoxLowestZ(box);
+  const double to_dest = (s.dest_xy - box.pos.head<2>()).norm();
+  t.lifted = s.phase == CarryPhase::kCarry || (s.phase == CarryPhase::kLift && s.phase_time_s > 2.2)
+                 ? std::clamp(low / 0.15, 0.0, 1.0)
+                 : 0.0;
+  t.to_dest = s.phase == CarryPhase::kCarry || s.phase == CarryPhase::kPutDown
+                  ? std::exp(-0.5 * to_dest * to_dest) + std::exp(-10.0 * to_dest * to_dest)
+                  : 0.0;
+  t.placed = s.phase == CarryPhase::kRetreat || (s.phase == CarryPhase::kPutDown && low < 0.02)
+                 ? 2.0 * std::exp(-10.0 * to_dest * to_dest) * (low < 0.02 ? 1.0 : 0.0)
+                 : 0.0;
+  double rate = 0;
+  for (int j = 0; j < kWalkActDim; ++j) {
+    double ac = std::clamp(static_cast<double>(action[j]), -control::kWalkActionClip,
+                           control::kWalkActionClip);
+    double dd = ac - s.walk.prev_action[j];
+    rate += dd * dd;
+    e.s.walk.prev_action[j] = static_cast<float>(ac);
+  }
+  t.action_rate = rate / kWalkActDim;
+  t.power = power;
+  t.total = 0.1 * (t.walk + 1.5 * t.pose + 0.5 * t.posture + t.hands + t.lifted + t.to_dest +
+                   t.placed + 0.5 - 0.02 * t.action_rate - 2e-5 * t.power);
+  return t.total;
+}
+
+void CarryTask::Step(int i, const float* action, float* obs, StepInfo* info) {
+  Env& e = envs_[i];
+  mjData* d = e.d;
+  const world::AgentIndex& a = ix_.walk.agent;
+  double ctrl[kWalkActDim];
+  control::CarryTargets(ix_, e.s, action, ctrl);
+  double power = 0;
+  for (int k = 0; k < control::kWalkSubsteps; ++k) {
+    for (int j = 0; j < kWalkActDim; ++j) d->ctrl[a.actuator[j]] = ctrl[j];
+    mj_step(e.m, d);
+    for (int j = 0; j < kWalkActDim; ++j) {
+      power += std::abs(d->actuator_force[a.actuator[j]] * d->qvel[a.hinge_qvel[j]]);
+    }
+  }
+  power /= control::kWalkSubsteps;
+  ++e.steps;
+  if (!world::AllFinite(d->qpos, e.m->nq) || !world::AllFinite(d->qvel, e.m->nv)) {
+    std::fill(obs, obs + control::kCarryObsDim, 0.f);
+    e.failure = CarryFailure::kNonFinite;
+    *info = StepInfo{0.f, true, false, e.success};
+    return;
+  }
+  control::CarryBox box = control::ReadCarryBox(e.m, d, box_geom_);
+  double reward = Reward(e, box, action, power);
+  e.failure = Check(e, box);
+  // success: after the put-down, the box at rest on the floor at the destination
+  const double to_dest = (e.s.dest_xy - box.pos.head<2>()).norm();
+  const bool placed = e.s.phase == CarryPhase::kRetreat && to_dest < kSuccessRadius &&
+                      control::BoxLowestZ(box) < 0.02 && box.linvel.norm() < 0.1;
+  e.done_hold = placed ? e.done_hold + 1 : 0;
+  if (e.done_hold >= kSuccessHold) e.success = true;
+  control::UpdateCarry(params_, e.m, e.scratch, d, ix_, box, &e.s);
+  control::CarryObservation(d, ix_, e.s, box, obs);
+  info->reward = static_cast<float>(reward);
+  info->terminated = e.failure != CarryFailure::kNone;
+  info->truncated = e.steps >= kMaxSteps || e.done_hold >= 2 * kSuccessHold;
+  info->success = e.success;
+}
+
+}  // namespace simhuman::learn

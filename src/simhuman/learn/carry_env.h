@@ -1,0 +1,91 @@
+#pragma once
+/// The single-carrier carrying task for training (CooHOI's single-agent skill): a human walks
+/// to a box on the floor, lifts it with both hands pressed on two side faces, carries it to a
+/// destination on the floor, puts it down and steps back. Phases, references, observations and
+/// PD targets come from control/policy/carry_task.h, so the trained policy deploys unchanged.
+///
+/// Each env owns a copy of the model so the box's size and mass differ per episode. Boxes are
+/// cubes of side 0.4-0.6 m and 2-5 kg at curriculum 0, growing to CooHOI's 0.25-0.75 m and
+/// 2-13 kg at 1; the human starts 1-2 m (up to 5 m) from the box, the destination is 1-3 m (up
+/// to 10 m) from it in any direction.
+///
+/// Terminations: a fall (a body other than the feet and hands on the floor, the pelvis or the
+/// head too low for the phase), a kick (the box sliding faster than 1 m/s while no hand should
+/// hold it), a drop (the box back on the floor during the carry phase) and losing the box (its
+/// centre more than 1.2 m from the pelvis while held). Success: the box at rest on the floor
+/// within 0.2 m of the destination after the put-down, the human standing.
+
+#include <memory>
+#include <vector>
+
+#include "simhuman/control/policy/carry_task.h"
+#include "simhuman/core/rng.h"
+#include "simhuman/learn/vec_env.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::learn {
+
+/// Reward terms of the last step (for logs and tests).
+struct CarryRewardTerms {
+  double walk = 0, pose = 0, hands = 0, lifted = 0, to_dest = 0, placed = 0, posture = 0,
+         action_rate = 0, power = 0, total = 0;
+};
+
+/// Why a carry episode ended early (or kNone).
+enum class CarryFailure { kNone, kFall, kKick, kDrop, kLost, kNonFinite };
+const char* CarryFailureName(CarryFailure f);
+
+class CarryTask : public VecTask {
+ public:
+  static core::StatusOr<std::unique_ptr<CarryTask>> Create(int num_envs);
+  ~CarryTask() override;
+
+  std::string name() const override { return "carry"; }
+  int num_envs() const override { return static_cast<int>(envs_.size()); }
+  int obs_dim() const override { return control::kCarryObsDim; }
+  int act_dim() const override { return control::kCarryActDim; }
+  void Reset(int i, uint64_t seed, float* obs) override;
+  void Step(int i, const float* action, float* obs, StepInfo* info) override;
+  double curriculum() const override { return curriculum_; }
+  void set_curriculum(double c) override { curriculum_ = c; }
+
+  const mjModel* model(int i) const { return envs_[i].m; }
+  const mjData* data(int i) const { return envs_[i].d; }
+  const control::CarryState& state(int i) const { return envs_[i].s; }
+  const CarryRewardTerms& last_terms(int i) const { return envs_[i].terms; }
+  CarryFailure last_failure(int i) const { return envs_[i].failure; }
+  int box_geom() const { return box_geom_; }
+  const control::CarryIndex& index() const { return ix_; }
+  /// Sets env i's box (cube side, mass), placement and destination, and restarts the carry
+  /// (tests and evaluation). The human keeps its pose.
+  void SetBox(int i, double side_m, double mass_kg, const Eigen::Vector3d& pos, double yaw_rad,
+              const Eigen::Vector2d& dest_xy, float* obs);
+
+  static constexpr int kMaxSteps = 1200;  ///< 40 s at 30 Hz
+
+ private:
+  struct Env {
+    mjModel* m = nullptr;  // this env's copy (box size and mass)
+    mjData* d = nullptr;
+    mjData* scratch = nullptr;  // for the keyframe IK
+    control::CarryState s;
+    core::Rng rng{0};
+    int steps = 0, done_hold = 0;
+    bool success = false;
+    CarryFailure failure = CarryFailure::kNone;
+    CarryRewardTerms terms;
+  };
+  CarryTask() = default;
+  void ShapeBox(Env& e, double side_m, double mass_kg) const;
+  CarryFailure Check(const Env& e, const control::CarryBox& box) const;
+  double Reward(Env& e, const control::CarryBox& box, const float* action, double power);
+  std::unique_ptr<world::SimWorld> world_;
+  control::CarryIndex ix_;
+  control::CarryParams params_;
+  std::vector<Env> envs_;
+  std::vector<char> allowed_floor_;  // per body id: feet and hands may touch the floor
+  int box_geom_ = -1, box_body_ = -1, box_qpos_ = -1;
+  double curriculum_ = 0;
+};
+
+}  // namespace simhuman::learn

@@ -1,0 +1,118 @@
+#include "simhuman/learn/carry_env.h"
+
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <vector>
+
+#include "simhuman/control/policy/policy_net.h"
+
+namespace simhuman::learn {
+namespace {
+
+using control::CarryPhase;
+
+TEST(CarryTask, ObservationIsFiniteAndTheLayoutFull) {
+  auto t = CarryTask::Create(2);
+  ASSERT_TRUE(t.ok()) << t.status();
+  std::vector<float> obs((*t)->obs_dim(), NAN);
+  (*t)->Reset(0, 7, obs.data());
+  for (int k = 0; k < (*t)->obs_dim(); ++k) EXPECT_TRUE(std::isfinite(obs[k])) << k;
+  StepInfo info;
+  std::vector<float> act((*t)->act_dim(), 0.f);
+  (*t)->Step(0, act.data(), obs.data(), &info);
+  for (int k = 0; k < (*t)->obs_dim(); ++k) EXPECT_TRUE(std::isfinite(obs[k])) << k;
+  EXPECT_EQ((*t)->state(0).phase, CarryPhase::kApproach);
+}
+
+TEST(CarryTask, KeyframesReachTheHeldPointsForEverySize) {
+  auto t = CarryTask::Create(1);
+  ASSERT_TRUE(t.ok()) << t.status();
+  std::vector<float> obs((*t)->obs_dim());
+  double prev_z = 0;
+  for (double side : {0.75, 0.5, 0.25}) {
+    (*t)->SetBox(0, side, 5.0,
+                 Eigen::Vector3d(0.05 + control::CarryParams().stand_gap_m + side / 2, 0, 0), 0.0,
+                 Eigen::Vector2d(5, 0), obs.data());
+    control::CarryBox box = control::ReadCarryBox((*t)->model(0), (*t)->data(0), (*t)->box_geom());
+    control::LiftGeometry g = control::MakeLiftGeometry(control::CarryParams(), (*t)->data(0),
+                                                        (*t)->index(), (*t)->state(0), box);
+    EXPECT_NEAR(g.left.y(), side / 2, 0.05) << side;  // the human faces +x, the box ahead
+    std::vector<mjData*> scratch{mj_makeData((*t)->model(0))};
+    control::CarryPoses k = control::SolveCarryPoses(control::CarryParams(), (*t)->model(0),
+                                                     scratch[0], (*t)->index(), g);
+    mj_deleteData(scratch[0]);
+    EXPECT_LT(k.ik_error_m, 0.03) << "side " << side;
+    // a smaller box needs a squat at least as deep, balanced by a forward pitch
+    if (prev_z > 0) {
+      EXPECT_LE(k.squat_pelvis_z, prev_z) << side;
+    }
+    prev_z = k.squat_pelvis_z;
+    EXPECT_GT(k.squat_pitch_rad, 0.0) << side;
+  }
+}
+
+TEST(CarryTask, TheStandPointFacesTheNearFace) {
+  control::CarryParams p;
+  control::CarryBox box;
+  box.pos = Eigen::Vector3d(1, 2, 0.25);
+  box.half = Eigen::Vector3d(0.25, 0.3, 0.25);
+  Eigen::Vector2d stand, dir;
+  Eigen::Vector3d half;
+  control::ChooseStandFace(p, box, Eigen::Vector2d(1, -3), &stand, &dir, &half);
+  EXPECT_NEAR(stand.x(), 1.0, 1e-9);
+  EXPECT_NEAR(stand.y(), 2 - 0.3 - p.stand_gap_m, 1e-9);
+  EXPECT_NEAR(dir.y(), 1.0, 1e-9);
+  EXPECT_NEAR(half.x(), 0.3, 1e-9);  // the depth in the stand frame is the box's y extent
+  EXPECT_NEAR(half.y(), 0.25, 1e-9);
+}
+
+// Diagnostic: the shipped walking policy drives the carry task (arms on the reference);
+// prints how far episodes get. Run with SIMHUMAN_CARRY_DIAG=path/to/walk.pt.
+TEST(CarryTask, DiagnosticWalkPolicyRollout) {
+  const char* path = std::getenv("SIMHUMAN_CARRY_DIAG");
+  if (!path) GTEST_SKIP() << "set SIMHUMAN_CARRY_DIAG to a walk policy";
+  auto pol = control::LoadPolicyFile(path);
+  ASSERT_TRUE(pol.ok()) << pol.status();
+  const int n = 8;
+  auto t = CarryTask::Create(n);
+  ASSERT_TRUE(t.ok()) << t.status();
+  const int od = (*t)->obs_dim(), ad = (*t)->act_dim();
+  std::vector<float> obs(n * od), act(n * ad);
+  for (int i = 0; i < n; ++i) (*t)->Reset(i, 100 + i, obs.data() + i * od);
+  std::vector<int> done(n, 0);
+  std::map<std::string, int> ends;
+  for (int step = 0; step < CarryTask::kMaxSteps; ++step) {
+    torch::NoGradGuard ng;
+    torch::Tensor o = torch::from_blob(obs.data(), {n, od}).narrow(1, 0, pol->meta.obs_dim);
+    torch::Tensor a = pol->actor->forward(pol->norm.Normalize(o)).contiguous();
+    std::copy(a.data_ptr<float>(), a.data_ptr<float>() + n * ad, act.begin());
+    for (int i = 0; i < n; ++i) {
+      if (done[i]) continue;
+      StepInfo info;
+      CarryPhase before = (*t)->state(i).phase;
+      (*t)->Step(i, act.data() + i * ad, obs.data() + i * od, &info);
+      if ((*t)->state(i).phase != before) {
+        std::printf("env %d t=%.1f s: %s -> %s\n", i, step / 30.0, control::CarryPhaseName(before),
+                    control::CarryPhaseName((*t)->state(i).phase));
+      }
+      if (info.terminated || info.truncated) {
+        done[i] = 1;
+        std::string why =
+            info.success ? "success"
+                         : (info.terminated ? CarryFailureName((*t)->last_failure(i)) : "time out");
+        std::printf("env %d ends at %.1f s in %s: %s\n", i, step / 30.0,
+                    control::CarryPhaseName((*t)->state(i).phase), why.c_str());
+        ++ends[why];
+      }
+    }
+  }
+  for (auto& [k, v] : ends) std::printf("%s: %d\n", k.c_str(), v);
+}
+
+}  // namespace
+}  // namespace simhuman::learn

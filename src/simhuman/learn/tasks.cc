@@ -1,0 +1,50 @@
+#include "simhuman/learn/tasks.h"
+
+#include "simhuman/learn/carry_env.h"
+#include "simhuman/learn/reach_env.h"
+#include "simhuman/learn/walk_env.h"
+
+namespace simhuman::learn {
+
+const std::vector<TaskDef>& Tasks() {
+  static const std::vector<TaskDef> tasks = {
+      {"walk", "walk to a target stand point and stop there facing a heading",
+       [](int envs, const std::string& solver) -> core::StatusOr<std::unique_ptr<VecTask>> {
+         SH_ASSIGN_OR_RETURN(
+             std::unique_ptr<WalkTask> t,
+             WalkTask::Create(
+                 envs, solver != "newton" ? WalkPhysicsSolver::kPgs : WalkPhysicsSolver::kNewton));
+         return std::unique_ptr<VecTask>(std::move(t));
+       },
+       "", true},
+      {"reach", "a toy point-reaching task (tests of the learning stack)",
+       [](int envs, const std::string&) -> core::StatusOr<std::unique_ptr<VecTask>> {
+         return std::unique_ptr<VecTask>(new ReachTask(envs));
+       },
+       "", false},
+      {"carry", "walk to a box, lift it, carry it to a destination, put it down, step back",
+       [](int envs, const std::string&) -> core::StatusOr<std::unique_ptr<VecTask>> {
+         SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> t, CarryTask::Create(envs));
+         return std::unique_ptr<VecTask>(std::move(t));
+       },
+       "walk", false},
+  };
+  return tasks;
+}
+
+std::vector<std::string> TaskNames() {
+  std::vector<std::string> names;
+  for (const TaskDef& t : Tasks()) names.push_back(t.name);
+  return names;
+}
+
+core::StatusOr<const TaskDef*> FindTask(std::string_view name) {
+  std::string valid;
+  for (const TaskDef& t : Tasks()) {
+    if (t.name == name) return &t;
+    valid += (valid.empty() ? "" : ", ") + t.name;
+  }
+  return absl::InvalidArgumentError("unknown task '" + std::string(name) + "'; valid: " + valid);
+}
+
+}  // namespace simhuman::learn

@@ -1,0 +1,34 @@
+#pragma once
+/// The registry of single-agent training tasks (`simhuman train --task NAME`): a new task is an
+/// entry here, not a branch in the trainer.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "simhuman/core/status.h"
+#include "simhuman/learn/vec_env.h"
+
+namespace simhuman::learn {
+
+struct TaskDef {
+  std::string name;
+  std::string description;  ///< one line for --help and errors
+  /// Builds the task with `envs` environments and the physics solver ("newton" or "pgs").
+  std::function<core::StatusOr<std::unique_ptr<VecTask>>(int envs, const std::string& solver)> make;
+  /// A task whose policy may initialise this one (`--init-from`): same actions, and this task's
+  /// observation starts with that task's whole observation; the input layer is widened with
+  /// zero weights for the new entries. Empty: only a policy of the same task.
+  std::string init_parent;
+  /// Whether the task accepts the "pgs" solver.
+  bool solver_choice = false;
+};
+
+const std::vector<TaskDef>& Tasks();
+/// The task named `name`; an error lists the valid names.
+core::StatusOr<const TaskDef*> FindTask(std::string_view name);
+std::vector<std::string> TaskNames();
+
+}  // namespace simhuman::learn
