@@ -84,7 +84,9 @@ TEST(CarrySceneTest, ExistingScenesKeepFurnitureStatic) {
     core::StatusOr<core::SceneCatalog> c = BuildCatalog(*s);
     ASSERT_TRUE(c.ok()) << c.status();
     for (const core::CatalogObject& o : c->objects) {
-      if (o.type != "box") EXPECT_FALSE(o.movable) << name << " " << o.id;
+      if (o.type != "box") {
+        EXPECT_FALSE(o.movable) << name << " " << o.id;
+      }
     }
   }
 }

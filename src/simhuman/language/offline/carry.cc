@@ -2,6 +2,7 @@
 // long box to the bed", "pick up the box", "put it down here". Planned as carry steps
 // (plan/carry.h); the carriers are the first humans of the scene.
 
+#include <cmath>
 #include <set>
 
 #include "simhuman/core/json_reader.h"
@@ -167,16 +168,19 @@ absl::Status Session::Carry(const Tokens& t, size_t b, CarryDefault fallback,
     SH_ASSIGN_OR_RETURN(step.carriers, Team(*o, c));
   }
   focus_ = o;
-  std::string text;
+  const bool one = step.carriers.size() == 1;
+  std::string text = Humans(step.carriers);
   switch (step.to.kind) {
     case plan::CarryTarget::kHold:
-      text = Humans(step.carriers) + " pick up " + Describe(*o) + " and hold it";
+      text += (one ? " picks up " : " pick up ") + Describe(*o) +
+              (one ? " and holds it" : " and hold it");
       break;
     case plan::CarryTarget::kHere:
-      text = Humans(step.carriers) + " put " + Describe(*o) + " down where they stand";
+      text += (one ? " puts " : " put ") + Describe(*o) + " down where " +
+              (one ? "it stands" : "they stand");
       break;
     default:
-      text = Humans(step.carriers) + " carry " + Describe(*o) + " " + where + " and put it down";
+      text += (one ? " carries " : " carry ") + Describe(*o) + " " + where;
   }
   return AddCarry(*o, std::move(step), text, c);
 }
@@ -198,6 +202,12 @@ absl::Status Session::AddCarry(const CatalogObject& o, plan::CarryStep step,
     return Invalid("\"" + c + "\": " + msg);
   }
   const plan::CarryStep& grounded = *one.steps[0].carry;
+  std::string said = text;
+  if (grounded.goal) {
+    said += std::string(grounded.carriers.size() == 1 ? " and puts" : " and put") +
+            " it down at (" + core::FormatNumber(std::round(grounded.goal->pos.x() * 100) / 100) +
+            ", " + core::FormatNumber(std::round(grounded.goal->pos.y() * 100) / 100) + ")";
+  }
   held_ = grounded.to.kind == plan::CarryTarget::kHold ? &o : nullptr;
   held_by_ = grounded.carriers;
   // the first carrier ends at its stand point by the object
@@ -211,7 +221,7 @@ absl::Status Session::AddCarry(const CatalogObject& o, plan::CarryStep step,
   StepDraft d;
   d.step.carry = std::move(step);
   d.object = &o;
-  d.text = text;
+  d.text = said;
   Push(std::move(d));
   return absl::OkStatus();
 }
