@@ -124,6 +124,18 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
     if (absl::IsNotFound(st)) st = core::Annotate(st, "--plan");
     return ReportError(err, kCommand, st);
   }
+  // carry steps run only under the carry controller (issue 17, control/): refuse them here,
+  // before anything moves
+  for (size_t s = 0; s < chain->steps.size(); ++s) {
+    if (!chain->steps[s].carry) continue;
+    const std::string& label = chain->steps[s].label;
+    return ReportError(err, kCommand,
+                       absl::UnimplementedError(
+                           "plan step " + std::to_string(s + 1) +
+                           (label.empty() ? std::string() : " ('" + label + "')") +
+                           ": carry steps need the carry controller, which this build does not "
+                           "have yet (simhuman plan prints carry plans)"));
+  }
   absl::Status reach = eval::CheckWithinReach(*chain, *catalog, scene->humans);
   if (!reach.ok()) return ReportError(err, kCommand, reach);
   core::StatusOr<std::vector<world::AgentSpec>> placements = eval::AgentSpecs(*scene);

@@ -41,6 +41,24 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> CatalogObject::LocalBounds() const {
   return ShapesBounds(shapes);
 }
 
+int CarryInfo::min_carriers() const { return layouts.empty() ? 0 : layouts.front().carriers(); }
+
+int CarryInfo::max_carriers() const { return layouts.empty() ? 0 : layouts.back().carriers(); }
+
+const CarryLayout* CarryInfo::ForTeam(int carriers) const {
+  for (const CarryLayout& l : layouts) {
+    if (l.carriers() == carriers) return &l;
+  }
+  return nullptr;
+}
+
+double TeamCapacityKg(int carriers) {
+  constexpr double kAloneKg = 13.0;
+  constexpr double kPerTeamMemberKg = 20.0;
+  if (carriers < 1) return 0.0;
+  return carriers == 1 ? kAloneKg : kPerTeamMemberKg * carriers;
+}
+
 const CatalogObject* SceneCatalog::Find(std::string_view id) const {
   for (const CatalogObject& o : objects) {
     if (o.id == id) return &o;

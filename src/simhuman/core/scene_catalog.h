@@ -23,6 +23,50 @@ struct CatalogPart {
   std::vector<Shape> shapes;         // in the object frame; never empty
 };
 
+/// One carrier's hold on a carryable object, in the object frame (metres). The carrier stands
+/// at `stand_local` (on the floor) facing `facing_local_rad`, and puts its left and right hands
+/// on `left_part` / `right_part` at the hand points (on the parts' surfaces).
+struct CarryHold {
+  std::string left_part;   ///< canonical part name
+  std::string right_part;  ///< canonical part name
+  Eigen::Vector3d left_hand_local = Eigen::Vector3d::Zero();
+  Eigen::Vector3d right_hand_local = Eigen::Vector3d::Zero();
+  /// CooHOI's held point: the midpoint of the two hand points (the centre of the object for one
+  /// carrier, the centre of its end for a carrier at an end).
+  Eigen::Vector3d held_local = Eigen::Vector3d::Zero();
+  Eigen::Vector3d stand_local = Eigen::Vector3d::Zero();  ///< z = 0
+  double facing_local_rad = 0.0;                          ///< heading about +z, object frame
+};
+
+/// How a team of one size holds an object: one CarryHold per carrier, in carrier order.
+struct CarryLayout {
+  std::vector<CarryHold> holds;
+  int carriers() const { return static_cast<int>(holds.size()); }
+};
+
+/// Whether and how an object can be carried by simulated humans. Filled by world/ for every
+/// built object (world/carry.h); empty (not carryable) for objects built by hand.
+struct CarryInfo {
+  std::vector<CarryLayout> layouts;  ///< one per supported team size, ascending; empty: none
+  std::string not_carryable;         ///< why the object cannot be carried (layouts empty)
+
+  bool carryable() const { return !layouts.empty(); }
+  /// Fewest and most carriers the object has held points for; 0 when not carryable.
+  int min_carriers() const;
+  int max_carriers() const;
+  /// The layout for a team of `carriers`, or nullptr when there is none of that size.
+  const CarryLayout* ForTeam(int carriers) const;
+};
+
+/// The mass (kg) a team of `carriers` simulated humans may lift: 13 kg alone (what CooHOI's
+/// single agent manages), 20 kg per carrier in a team of 2-4 holding a long object at its ends
+/// and sides (CooHOI's two-agent range tops at 40 kg). 0 for fewer than one carrier.
+double TeamCapacityKg(int carriers);
+
+/// Half the side of the square floor every scene stands on (metres; the floor is centred on the
+/// world origin). Objects, destinations and stand points must lie on it.
+inline constexpr double kFloorHalfSizeM = 30.0;
+
 /// One object of a scene.
 struct CatalogObject {
   std::string id;     // unique, e.g. "chair000"
@@ -34,6 +78,7 @@ struct CatalogObject {
   double mass_kg = 0.0;            // movable objects only
   std::vector<CatalogPart> parts;  // named parts
   std::vector<Shape> shapes;       // every solid of the object (parts and unnamed, e.g. legs)
+  CarryInfo carry;                 ///< held points, stand points and team sizes (carrying)
 
   /// The part whose name or alias matches `name` (case-insensitive; trailing digits of
   /// ScenePlan names such as "mattress25" are ignored). nullptr when none matches.

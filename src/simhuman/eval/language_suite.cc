@@ -103,6 +103,8 @@ std::string CompactPair(const plan::ContactPair& p) {
 }
 
 std::vector<std::string> CompactStep(const plan::ContactStep& step) {
+  // a carry step is its carry (its hand pairs follow from the object's held points)
+  if (step.carry) return {plan::CarrySummary(*step.carry)};
   std::vector<std::string> out;
   for (const plan::ContactPair& p : step.pairs) out.push_back(CompactPair(p));
   std::sort(out.begin(), out.end());

@@ -34,7 +34,8 @@ core::StatusOr<std::vector<LanguageCase>> LoadLanguageCorpus(const std::string& 
 /// One pair as "object|part|joint|contact|direction" ("object|none|none|none|side" for get
 /// close, "object|part|@subject:subject_part|contact|direction" for object-object pairs).
 std::string CompactPair(const plan::ContactPair& pair);
-/// The pairs of a step in CompactPair() form, sorted (pair order within a step is free).
+/// The pairs of a step in CompactPair() form, sorted (pair order within a step is free); a carry
+/// step is the one string plan::CarrySummary() ("carry box000 by 0 to beside bed001").
 std::vector<std::string> CompactStep(const plan::ContactStep& step);
 
 /// The outcome of one case.

@@ -116,13 +116,25 @@ class Parser {
   }
 
   absl::Status ParseObjectStep(const nlohmann::json& j, const std::string& where) {
-    SH_RETURN_IF_ERROR(Wrap(core::CheckKeys(j, {"label", "pairs"}, where)));
+    SH_RETURN_IF_ERROR(Wrap(core::CheckKeys(j, {"label", "pairs", "carry"}, where)));
     ContactStep step;
     step.where = where;
     if (j.contains("label")) {
       SH_ASSIGN_OR_RETURN(step.label, Wrap(core::GetString(j, "label", where)));
     }
-    if (!j.contains("pairs")) return Error(where, "missing required array 'pairs'");
+    if (j.contains("carry")) {
+      if (j.contains("pairs")) {
+        return Error(Join(where, "pairs"),
+                     "a carry step takes no 'pairs': its hand contacts come from the carried "
+                     "object's held points; remove 'pairs' or 'carry'");
+      }
+      SH_ASSIGN_OR_RETURN(step.carry, Wrap(ParseCarryJson(j.at("carry"), Join(where, "carry"))));
+      chain_.steps.push_back(std::move(step));
+      return absl::OkStatus();
+    }
+    if (!j.contains("pairs")) {
+      return Error(where, "missing required array 'pairs' (or 'carry' for a carry step)");
+    }
     const nlohmann::json& pairs = j.at("pairs");
     const std::string pairs_where = Join(where, "pairs");
     if (!pairs.is_array()) {
@@ -453,6 +465,13 @@ absl::StatusOr<ContactChain> LoadContactChainFile(const std::string& path) {
 nlohmann::json ContactChainToJson(const ContactChain& chain) {
   nlohmann::json steps = nlohmann::json::array();
   for (const ContactStep& step : chain.steps) {
+    if (step.carry) {
+      nlohmann::json js = nlohmann::json::object();
+      if (!step.label.empty()) js["label"] = step.label;
+      js["carry"] = CarryToJson(*step.carry);
+      steps.push_back(std::move(js));
+      continue;
+    }
     nlohmann::json pairs = nlohmann::json::array();
     for (const ContactPair& p : step.pairs) {
       nlohmann::json jp = nlohmann::json::object();

@@ -15,6 +15,7 @@
 
 #include "simhuman/core/body_joint.h"
 #include "simhuman/core/status.h"
+#include "simhuman/plan/carry.h"
 
 namespace simhuman::plan {
 
@@ -86,10 +87,13 @@ struct ContactPair {
   bool IsObjectPair() const { return subject_object.has_value(); }
 };
 
-/// One step: all pairs must be satisfied at the same time for the step to complete.
+/// One step: all pairs must be satisfied at the same time for the step to complete. A carry
+/// step (`carry` set, carry.h) has no pairs of its own in a file: grounding fills `pairs` with
+/// its carriers' hand contacts on the object's held parts.
 struct ContactStep {
   std::vector<ContactPair> pairs;
-  std::string label;  // optional free text, e.g. "sit on the chair"
+  std::optional<CarryStep> carry;  ///< set: one or more humans carry an object (carry.h)
+  std::string label;               // optional free text, e.g. "sit on the chair"
   std::string where;  // JSON pointer of the step in its source; empty when built in code
 };
 
@@ -135,10 +139,11 @@ absl::StatusOr<ContactChain> ParseContactChain(std::string_view text, std::strin
 absl::StatusOr<ContactChain> LoadContactChainFile(const std::string& path);
 
 /// Writes the simhuman object form. "label" is written only when non-empty and "agent" only
-/// when non-zero; get-close pairs are written without "contact"; object-object pairs with
-/// "subject_object" and "subject_part" instead of "joint". Parsing the result gives back
-/// the same steps and pairs (the `where`, `source` and `part_joint` fields are not written:
-/// part_joint is recomputed by grounding from `part`).
+/// when non-zero; a carry step is written as its "carry" (without the grounded hand pairs);
+/// get-close pairs are written without "contact"; object-object pairs with "subject_object" and
+/// "subject_part" instead of "joint". Parsing the result gives back the same steps and pairs (the
+/// `where`, `source` and `part_joint` fields are not written: part_joint is recomputed by grounding
+/// from `part`).
 nlohmann::json ContactChainToJson(const ContactChain& chain);
 
 }  // namespace simhuman::plan

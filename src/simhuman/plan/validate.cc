@@ -1,5 +1,6 @@
 #include "simhuman/plan/validate.h"
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -182,8 +183,15 @@ absl::Status ValidateAndGround(ContactChain& chain, const core::SceneCatalog& sc
     return Error(grounded, grounded.form == ChainForm::kSimhuman ? "/steps" : "",
                  "plan has no steps");
   }
+  // carry steps move objects: later steps are grounded against where they were put
+  std::optional<core::SceneCatalog> planned;
   for (int s = 0; s < static_cast<int>(grounded.steps.size()); ++s) {
     ContactStep& step = grounded.steps[s];
+    if (step.carry) {
+      if (!planned) planned = scene;
+      SH_RETURN_IF_ERROR(GroundCarryStep(grounded, s, *planned));
+      continue;
+    }
     if (step.pairs.empty()) {
       std::string where = StepPointer(grounded, s);
       if (grounded.form == ChainForm::kSimhuman) where += "/pairs";

@@ -22,6 +22,8 @@ namespace simhuman::plan {
 ///   (ambiguous). If no part matches but the name is a body joint ("left knee", "pelvis"),
 ///   `part_joint` is set and `part` becomes the canonical joint name: the target is that body
 ///   point of the same agent. An object part wins over a body joint of the same name.
+/// - a carry step (`carry` set) is grounded by GroundCarryStep() (carry.h), against the scene as
+///   earlier carry steps left it (objects at their goals);
 /// Never substitutes a default. Errors are InvalidArgument, start with "<source>: <JSON pointer
 /// of the field>: " and list the valid names (objects of the scene, parts of the object, agent
 /// range). On error `chain` is left unchanged; on success it is grounded in place.

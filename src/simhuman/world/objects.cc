@@ -6,6 +6,8 @@
 #include <functional>
 #include <sstream>
 
+#include "simhuman/world/carry.h"
+
 namespace simhuman::world {
 namespace {
 
@@ -37,6 +39,9 @@ constexpr double kBoxFaceThickness = 0.02;
 constexpr double kBoxDensityKgM3 = 100.0;  // a cardboard box with some contents
 constexpr double kBoxMinMassKg = 0.1;
 constexpr double kBoxMaxMassKg = 10.0;
+constexpr double kLongBoxMassKg = 25.0;  // CooHOI's nominal two-agent box
+constexpr double kLongBoxRandomMassLoKg = 15.0;
+constexpr double kLongBoxRandomMassHiKg = 40.0;
 constexpr double kMaxMassKg = 1000.0;
 constexpr double kMinScale = 0.1;
 constexpr double kMaxScale = 10.0;
@@ -370,6 +375,18 @@ const std::vector<TypeInfo>& Types() {
                    {"height", 0.30, 0.25, 0.50, 0.03, 1.5, "size along z"}},
                   BuildBox,
                   {}});
+    t->push_back(
+        {"long_box",
+         "yellow",
+         {{"length", 2.00, 1.60, 2.40, 1.0, 4.0, "size along x (the long axis)"},
+          {"width", 0.50, 0.40, 0.60, 0.1, 1.5, "size along y"},
+          {"height", 0.50, 0.40, 0.60, 0.1, 1.5, "size along z"}},
+         [](const Sizes& s, Assembly& a) {
+           BuildBox(
+               {{"depth", s.at("length")}, {"width", s.at("width")}, {"height", s.at("height")}},
+               a);
+         },
+         {}});
     t->push_back({"cylinder",
                   "blue",
                   {{"radius", 0.04, 0.03, 0.06, 0.01, 1.0, "radius"},
@@ -497,6 +514,9 @@ ObjectSpec RandomObjectSpec(std::string_view type, core::Rng& rng) {
   std::vector<std::string> colors = ColorNames();
   spec.color = colors[static_cast<size_t>(rng.UniformInt(0, static_cast<int>(colors.size()) - 1))];
   if (spec.type == "box") spec.mass_kg = rng.Uniform(2.0, 10.0);
+  if (spec.type == "long_box") {
+    spec.mass_kg = rng.Uniform(kLongBoxRandomMassLoKg, kLongBoxRandomMassHiKg);
+  }
   if (spec.type == "cylinder" || spec.type == "sphere") spec.mass_kg = rng.Uniform(0.1, 1.0);
   return spec;
 }
@@ -592,7 +612,11 @@ core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
     volume *= std::pow(spec.scale, 3);
     obj.movable = true;
     obj.mass_kg = std::clamp(kBoxDensityKgM3 * volume, kBoxMinMassKg, kBoxMaxMassKg);
+  } else if (type->name == "long_box") {
+    obj.movable = true;
+    obj.mass_kg = kLongBoxMassKg;
   }
+  obj.carry = MakeCarryInfo(obj);
   return obj;
 }
 

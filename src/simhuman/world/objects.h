@@ -17,6 +17,8 @@
 ///    the -x edge and faces +x.
 ///  - box: origin under the centre of the box; "front side" is the +x face, "left side" the
 ///    +y face.
+///  - long_box: a box for a team (parts as the box), `length` along x, default 2.0 x 0.5 x 0.5
+///    m and 25 kg.
 ///  - cylinder (upright) and sphere: origin under the centre; parts "top" and "body" (the
 ///    cylinder), "body" (the sphere).
 /// Sizes are metres before `scale`; `scale` multiplies every length (and a derived box mass by
@@ -60,7 +62,7 @@ struct SizeParam {
 };
 
 /// Canonical type names: chair, armchair, sofa, stool, high_stool, bed, table, laptop, marker,
-/// box, cylinder, sphere.
+/// box, long_box, cylinder, sphere.
 std::vector<std::string> ObjectTypes();
 
 /// The canonical type for `name` (case-insensitive; ' ' and '-' read as '_', so "High stool"
@@ -78,14 +80,16 @@ std::map<std::string, double> DefaultSizes(std::string_view type);
 std::map<std::string, std::pair<double, double>> SizeRanges(std::string_view type);
 
 /// A spec of `type` with every size sampled uniformly from SizeRanges(), a random palette
-/// colour, id "<type>000", at the origin, yaw 0, scale 1. Boxes get a mass in [2, 10] kg.
+/// colour, id "<type>000", at the origin, yaw 0, scale 1. Boxes get a mass in [2, 10] kg, long
+/// boxes one in [15, 40] kg.
 /// Deterministic for a given `rng` state. An unknown type gives a spec without sizes, which
 /// BuildObject() then rejects.
 ObjectSpec RandomObjectSpec(std::string_view type, core::Rng& rng);
 
 /// Builds the object: parts (canonical names plus UniHSI/PartNet style aliases) and every solid
-/// (parts and unnamed legs and frames) in `shapes`, pose from pos and yaw_rad. Only boxes,
-/// cylinders and spheres, and objects given a mass_kg, are movable. Errors (InvalidArgument) name
+/// (parts and unnamed legs and frames) in `shapes`, pose from pos and yaw_rad, and the carrying
+/// data (`carry`, world/carry.h). Only boxes, long boxes (25 kg unless given), cylinders and
+/// spheres, and objects given a mass_kg, are movable. Errors (InvalidArgument) name
 /// the object id and the culprit: an unknown type (listing valid types), an unknown size key
 /// (listing the type's keys), a non-finite or out-of-range size, scale, position, yaw or mass, an
 /// unknown colour. Thread-safe.

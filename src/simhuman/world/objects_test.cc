@@ -54,6 +54,7 @@ TEST(ObjectsTest, EveryTypeBuildsWithItsParts) {
       {"table", {"board"}},
       {"laptop", {"keyboard", "screen"}},
       {"box", {"top", "left side", "right side", "front side", "back side", "body"}},
+      {"long_box", {"top", "left side", "right side", "front side", "back side", "body"}},
       {"cylinder", {"top", "body"}},
       {"sphere", {"body"}}};
   ASSERT_EQ(ObjectTypes().size(), expected.size() + 1);  // + marker, tested below
@@ -87,7 +88,8 @@ TEST(ObjectsTest, EveryTypeBuildsWithItsParts) {
     EXPECT_NEAR(lo.z(), 0.0, 1e-3);
     EXPECT_GT(hi.z(), 0.05);
     EXPECT_FALSE(o.color.empty());
-    EXPECT_EQ(o.movable, type == "box" || type == "cylinder" || type == "sphere");
+    EXPECT_EQ(o.movable,
+              type == "box" || type == "long_box" || type == "cylinder" || type == "sphere");
   }
 }
 

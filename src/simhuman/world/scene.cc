@@ -10,6 +10,7 @@
 #include "simhuman/core/geometry.h"
 #include "simhuman/core/json_io.h"
 #include "simhuman/core/json_reader.h"
+#include "simhuman/world/carry.h"
 #include "simhuman/world/embodiment.h"
 
 namespace simhuman::world {
@@ -26,8 +27,8 @@ constexpr double kDefaultHumanClearanceM = 0.35;
 constexpr double kScenePlanRotTolerance = 1e-6;
 
 const std::vector<std::string> kSceneKeys = {"name", "objects", "humans"};
-const std::vector<std::string> kObjectKeys = {"id",    "type", "pos",   "yaw_deg",
-                                              "scale", "size", "color", "mass_kg"};
+const std::vector<std::string> kObjectKeys = {"id",   "type",  "pos",     "yaw_deg", "scale",
+                                              "size", "color", "mass_kg", "movable"};
 const std::vector<std::string> kHumanKeys = {"pos", "yaw_deg", "scale", "posture", "kind"};
 const std::vector<std::string> kPlanKeys = {"obj", "chain of contacts", "contact_pairs"};
 const std::vector<std::string> kPlanObjectKeys = {"id",       "name",        "rotate", "scale",
@@ -48,6 +49,37 @@ std::string SourceStem(std::string_view source) {
   if (dot != std::string::npos && dot > 0) s = s.substr(0, dot);
   if (s.empty() || s.front() == '<') return "scene";
   return s;
+}
+
+// "movable": true gives furniture its default mass (world/carry.h) unless "mass_kg" sets one;
+// boxes, long boxes, cylinders and spheres are movable anyway
+core::Status ApplyMovable(const json& v, const std::string& where, ObjectSpec& o) {
+  SH_ASSIGN_OR_RETURN(bool movable, core::ReadBool(v, where));
+  const bool always =
+      o.type == "box" || o.type == "long_box" || o.type == "cylinder" || o.type == "sphere";
+  if (!movable) {
+    if (always) return core::JsonError(where, "a " + o.type + " is always movable");
+    if (o.mass_kg) {
+      return core::JsonError(where,
+                             "\"movable\": false contradicts \"mass_kg\" (which makes the "
+                             "object movable); remove one of them");
+    }
+    return absl::OkStatus();
+  }
+  if (o.mass_kg || always) return absl::OkStatus();
+  std::optional<double> kg = DefaultMovableMassKg(o.type);
+  if (!kg) {
+    std::vector<std::string> types;
+    for (const std::string& t : ObjectTypes()) {
+      if (DefaultMovableMassKg(t)) types.push_back(t);
+    }
+    return core::JsonError(where, "a " + o.type +
+                                      " has no default mass to make it movable; give \"mass_kg\" "
+                                      "or use a type with one: " +
+                                      core::JoinNames(types));
+  }
+  o.mass_kg = kg;
+  return absl::OkStatus();
 }
 
 core::StatusOr<ObjectSpec> ParseObject(const json& j, const std::string& where, size_t index) {
@@ -80,6 +112,9 @@ core::StatusOr<ObjectSpec> ParseObject(const json& j, const std::string& where, 
   SH_ASSIGN_OR_RETURN(std::optional<double> scale, core::ReadOptionalNumber(j, "scale", where));
   o.scale = scale.value_or(1.0);
   SH_ASSIGN_OR_RETURN(o.mass_kg, core::ReadOptionalNumber(j, "mass_kg", where));
+  if (j.contains("movable")) {
+    SH_RETURN_IF_ERROR(ApplyMovable(j.at("movable"), core::JsonPointer(where, "movable"), o));
+  }
   if (j.contains("color")) {
     SH_ASSIGN_OR_RETURN(o.color,
                         core::ReadString(j.at("color"), core::JsonPointer(where, "color")));
@@ -447,6 +482,39 @@ SceneSpec SitDemo() {
   return s;
 }
 
+// carrying, one human: a 0.5 m box on the floor (8 kg), a bed and a sofa to carry it to, and a
+// movable armchair (12 kg) for "move the armchair next to the sofa"
+SceneSpec CarryDemo() {
+  SceneSpec s;
+  s.name = "carry_demo";
+  ObjectSpec box = Obj("box000", "box", 2.0, 0.0, 0);
+  box.size = {{"depth", 0.5}, {"width", 0.5}, {"height", 0.5}};
+  box.mass_kg = 8.0;
+  s.objects.push_back(box);
+  s.objects.push_back(Obj("bed001", "bed", 5.5, 2.5, 180));
+  s.objects.push_back(Obj("sofa002", "sofa", -2.5, 2.5, -90));
+  ObjectSpec armchair = Obj("armchair003", "armchair", 1.0, -3.0, 90);
+  armchair.mass_kg = DefaultMovableMassKg("armchair");
+  s.objects.push_back(armchair);
+  s.humans.push_back(Human(0.0, 0.0, 0));
+  return s;
+}
+
+// carrying together, two humans: a 2 m long box (25 kg) and a movable sofa (35 kg), a bed as a
+// destination
+SceneSpec CarryTeamDemo() {
+  SceneSpec s;
+  s.name = "carry_team_demo";
+  s.objects.push_back(Obj("long_box000", "long_box", 2.5, 0.0, 0));
+  ObjectSpec sofa = Obj("sofa001", "sofa", 2.5, -3.0, 90);
+  sofa.mass_kg = DefaultMovableMassKg("sofa");
+  s.objects.push_back(sofa);
+  s.objects.push_back(Obj("bed002", "bed", -3.0, 3.0, 0));
+  s.humans.push_back(Human(0.0, 0.6, 0));
+  s.humans.push_back(Human(0.0, -0.6, 0));
+  return s;
+}
+
 SceneSpec Empty() {
   SceneSpec s;
   s.name = "empty";
@@ -456,8 +524,10 @@ SceneSpec Empty() {
 
 const std::vector<std::pair<std::string, SceneSpec (*)()>>& Builtins() {
   static const std::vector<std::pair<std::string, SceneSpec (*)()>> kBuiltins = {
-      {"living_room", LivingRoom},     {"bedroom", Bedroom},  {"office", Office},
-      {"tabletop_demo", TabletopDemo}, {"sit_demo", SitDemo}, {"empty", Empty}};
+      {"living_room", LivingRoom}, {"bedroom", Bedroom},
+      {"office", Office},          {"tabletop_demo", TabletopDemo},
+      {"sit_demo", SitDemo},       {"empty", Empty},
+      {"carry_demo", CarryDemo},   {"carry_team_demo", CarryTeamDemo}};
   return kBuiltins;
 }
 

@@ -38,7 +38,7 @@ const std::vector<std::string>& HumanPostures();
 
 /// Parses a scene, strictly. Two forms are accepted:
 ///  - ours: {"name", "objects": [{"id", "type", "pos", "yaw_deg", "scale", "size", "color",
-///    "mass_kg"}], "humans": [{"pos", "yaw_deg", "scale", "posture", "kind"}]};
+///    "mass_kg", "movable"}], "humans": [{"pos", "yaw_deg", "scale", "posture", "kind"}]};
 ///  - a UniHSI ScenePlan entry {"obj": {"000": {"id", "name", "rotate", "scale", "transfer",
 ///    "stand_point"}}, "chain of contacts" | "contact_pairs": [...]}, or a one-key wrapper of
 ///    it such as {"0000": {...}} (the contacts are ignored here; plan/ parses them).
@@ -51,7 +51,7 @@ core::StatusOr<SceneSpec> ParseSceneJson(const nlohmann::json& json, std::string
 /// readable file is NotFound, listing the built-in names.
 core::StatusOr<SceneSpec> LoadScene(const std::string& name_or_path);
 
-/// living_room, bedroom, office, tabletop_demo, sit_demo, empty.
+/// living_room, bedroom, office, tabletop_demo, sit_demo, empty, carry_demo, carry_team_demo.
 std::vector<std::string> BuiltinSceneNames();
 
 /// The built-in scene `name`, or NotFound listing the names.

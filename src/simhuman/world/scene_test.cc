@@ -266,7 +266,7 @@ TEST(SceneTest, ScenePlanUnwrappedAndMultiPlan) {
 }
 
 TEST(SceneTest, BuiltinScenesLoadAndDoNotOverlap) {
-  ASSERT_EQ(BuiltinSceneNames().size(), 6u);
+  ASSERT_EQ(BuiltinSceneNames().size(), 8u);
   for (const std::string& name : BuiltinSceneNames()) {
     SCOPED_TRACE(name);
     core::StatusOr<SceneSpec> s = LoadScene(name);

@@ -465,6 +465,56 @@ add(LP2, [[GC("table000")], REACH("table000", "board", "right", "up")], "touch t
 add(LP2, [[GC("bed003")], LIE("bed003"), [GC("bed003")], [GC("chair002")], [SIT("chair002")]],
     "lie on the bed, then sit on the blue chair")
 
+# carrying (issue 17): a carry step is one string, plan::CarrySummary()
+CD, CT, CB = "carry_demo", "carry_team_demo", "two_carry_boxes.json"
+
+
+def CARRY(obj, agents, to=None):
+    by = ",".join(str(a) for a in agents)
+    if to is None:
+        return [f"carry {obj} by {by} and hold"]
+    return [f"carry {obj} by {by} to {to}"]
+
+
+add(CD, [CARRY("box000", [0], "beside bed001")], "carry the box to the bed",
+    "bring the box over to the bed", "take the box to the bed", "Carry the orange box to the bed.",
+    "please bring the box to the bed")
+add(CD, [CARRY("box000", [0], "beside sofa002")], "carry the box next to the sofa",
+    "bring the box to the couch")
+# the human's left of the sofa is the sofa's back (it faces -y)
+add(CD, [CARRY("box000", [0], "beside sofa002 back")], "carry the box to the left of the sofa")
+add(CD, [CARRY("armchair003", [0], "beside sofa002")], "move the armchair next to the sofa",
+    "carry the armchair to the sofa", "move the armchair beside the couch")
+add(CD, [CARRY("box000", [0])], "pick up the box", "lift the box", "pick up the orange box")
+add(CD, [CARRY("box000", [0]), CARRY("box000", [0], "here")],
+    "pick up the box, then put it down here", "lift the box and put it down",
+    "pick up the box and drop it here")
+add(CD, [CARRY("box000", [0]), CARRY("box000", [0], "beside bed001")],
+    "pick up the box and carry it to the bed")
+add(CD, [CARRY("box000", [0], "beside bed001"), CARRY("armchair003", [0], "beside sofa002")],
+    "carry the box to the bed, then move the armchair next to the sofa")
+add(CD, [["sofa002|none|none|none|front"], [SIT("sofa002")], ["sofa002|none|none|none|front"],
+         CARRY("box000", [0], "beside bed001")],
+    "sit on the sofa, then carry the box to the bed")
+error(CD, "carry the sofa to the bed", "carry the bed to the sofa", "put it down here",
+      "carry the box onto the bed", "you two carry the box to the bed",
+      "carry the box to the bed, then put it down here", "carry the box to the box")
+add(CT, [CARRY("long_box000", [0, 1], "beside bed002")],
+    "you two carry the long box to the bed", "carry the long box to the bed",
+    "both of you carry the long box to the bed", "carry the long box to the bed together")
+add(CT, [CARRY("sofa001", [0, 1])], "both of you lift the sofa", "you two pick up the sofa")
+add(CT, [CARRY("sofa001", [0, 1]), CARRY("sofa001", [0, 1], "here")],
+    "both of you lift the sofa, then put it down here")
+add(CT, [CARRY("sofa001", [0, 1], "beside bed002")], "the two of you carry the sofa to the bed")
+error(CT, "you two carry the long box to the door", "you three carry the long box to the bed",
+      "carry the bed to the sofa")
+add(CB, [CARRY("high_stool003", [0], "beside bed002")], "take the stool to the bed",
+    "bring the high stool over to the bed")
+add(CB, [CARRY("table004", [0], "beside bed002")], "move the table next to the bed")
+add(CB, [CARRY("box001", [0], "beside table004")], "carry the blue box to the table")
+ambiguous(CB, "carry the box to the bed", "pick up the box")
+error(CB, "carry the red box to the bed")
+
 
 if __name__ == "__main__":
     for line in LINES:

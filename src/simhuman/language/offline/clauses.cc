@@ -68,15 +68,43 @@ core::StatusOr<std::vector<Tokens>> SplitClauses(const Tokens& tokens) {
   return clauses;
 }
 
-absl::Status Session::Clause(const Tokens& t) {
-  const std::string c = Join(t);
+absl::Status Session::Clause(const Tokens& words) {
+  const std::string c = Join(words);
+  // team words ("you two", "both of you", "together") say who carries
+  Tokens t;
+  team_ = 0;
+  for (const std::string& w : words) {
+    if (w == "team2" || w == "team3" || w == "team4") {
+      team_ = w.back() - '0';
+    } else if (w == "teamall") {
+      team_ = scene_.num_agents();
+    } else if (w == "teamany") {
+      if (team_ == 0) team_ = -1;
+    } else {
+      t.push_back(w);
+    }
+  }
+  if (team_ > scene_.num_agents()) {
+    return Invalid(
+        ""
+        " + c + "
+        " asks for " +
+        std::to_string(team_) +
+        " carriers but the scene "
+        "has " +
+        std::to_string(scene_.num_agents()) +
+        " human(s): valid agents are "
+        "0.." +
+        std::to_string(scene_.num_agents() - 1));
+  }
   for (const std::string& w : t) {
     if (!Known(w) && scene_.Find(w) == nullptr) {
       return Invalid("did not understand the word '" + w + "' in \"" + c +
                      "\"; I understand: sit, lie, rest, stand up, go to / walk to / approach, "
                      "touch / reach, put your hand(s) on, put the <colour> <shape> on <object>, "
+                     "carry / bring / pick up / put down <object> (to <object>), "
                      "with object types chair, armchair, sofa, stool, high stool, bed, table, "
-                     "laptop, box, cylinder, sphere. The scene has: " +
+                     "laptop, box, long box, cylinder, sphere. The scene has: " +
                      DescribeSceneObjects(scene_));
     }
   }
@@ -106,6 +134,17 @@ absl::Status Session::Clause(const Tokens& t) {
                      "' after 'stand up' in \"" + c + "\"");
     }
     return StandUp(c);
+  }
+  // carrying: carry/bring (anything carryable), pick up/take/hold/lift (when the object is
+  // carryable; otherwise a reach, as before)
+  if (v == "carry") return Carry(t, i + 1, CarryDefault::kHold, c);
+  if ((v == "grab" || v == "raise") && !IsBodyWord(next(i + 1)) &&
+      IsCarryClause(t, i + 1, true, c)) {
+    return Carry(t, i + 1, CarryDefault::kHold, c);
+  }
+  if ((v == "put" || v == "place" || v == "move" || v == "stack") && !IsBodyWord(next(i + 1)) &&
+      IsCarryClause(t, i + 1, false, c)) {
+    return Carry(t, i + 1, CarryDefault::kPutDown, c);
   }
   if (v == "stand" || v == "go" ||
       (v == "move" && (next(i + 1) == "to" || next(i + 1) == "near"))) {
@@ -143,7 +182,7 @@ absl::Status Session::Clause(const Tokens& t) {
   if (Has(t, i, t.size(), "touch") || Has(t, i, t.size(), "reach")) return Reach(t, c);
   return Invalid("did not understand \"" + c +
                  "\"; commands start with sit, lie, rest, stand up, go to, walk to, approach, "
-                 "touch, reach, put, place, stack, lean, cross, raise");
+                 "touch, reach, put, place, stack, carry, bring, pick up, lean, cross, raise");
 }
 
 }  // namespace simhuman::language::offline

@@ -60,6 +60,22 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
       {{"go", "over", "to"}, {"go"}},
       {{"walk", "over", "to"}, {"go"}},
       {{"pick", "up"}, {"grab"}},
+      {{"pick", "it", "up"}, {"grab", "it"}},
+      {{"pick", "them", "up"}, {"grab", "them"}},
+      // carrying teams ("you" alone is a filler)
+      {{"you", "two"}, {"team2"}},
+      {{"you", "three"}, {"team3"}},
+      {{"you", "four"}, {"team4"}},
+      {{"the", "two", "of", "you"}, {"team2"}},
+      {{"the", "three", "of", "you"}, {"team3"}},
+      {{"the", "four", "of", "you"}, {"team4"}},
+      {{"both", "of", "you"}, {"team2"}},
+      {{"you", "both"}, {"team2"}},
+      {{"all", "of", "you"}, {"teamall"}},
+      {{"you", "all"}, {"teamall"}},
+      {{"everyone"}, {"teamall"}},
+      {{"everybody"}, {"teamall"}},
+      {{"together"}, {"teamany"}},
       {{"get", "on"}, {"geton"}},
       {{"get", "onto"}, {"geton"}},
       {{"climb", "on"}, {"geton"}},
@@ -79,6 +95,8 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
       {{"facing", "up"}, {}},
       // objects and parts
       {{"high", "stool"}, {"high_stool"}},
+      {{"long", "box"}, {"long_box"}},
+      {{"long", "boxes"}, {"long_box"}},
       {{"bar", "stool"}, {"high_stool"}},
       {{"arm", "chair"}, {"armchair"}},
       {{"easy", "chair"}, {"armchair"}},
@@ -123,7 +141,8 @@ const std::map<std::string, std::string>& Synonyms() {
       {"roll", "turn"},       {"towards", "to"},       {"toward", "to"},
       {"into", "in"},         {"yourself", "your"},    {"dont", "dont"},
       {"lap", "knees"},       {"thats", "that"},       {"crossed", "cross"},
-      {"crossing", "cross"},
+      {"crossing", "cross"},  {"bring", "carry"},      {"haul", "carry"},
+      {"lug", "carry"},       {"drop", "put"},
   };
   return *words;
 }
@@ -163,6 +182,7 @@ const std::map<std::string, std::string>& TypeWords() {
                                                                     {"laptop", "laptop"},
                                                                     {"laptops", "laptop"},
                                                                     {"box", "box"},
+                                                                    {"long_box", "long_box"},
                                                                     {"boxes", "box"},
                                                                     {"cylinder", "cylinder"},
                                                                     {"cylinders", "cylinder"},
@@ -199,15 +219,18 @@ const std::set<std::string>& Relations() {
 
 const std::set<std::string>& OtherWords() {
   static const auto* words = new std::set<std::string>{
-      "then",   "and",        "sit",   "lie",   "rest",    "stand", "up",      "go",     "move",
-      "touch",  "reach",      "grab",  "put",   "stack",   "cross", "lean",    "raise",  "turn",
-      "keep",   "with",       "while", "your",  "hand",    "hands", "elbow",   "elbows", "knee",
-      "knees",  "other_knee", "foot",  "feet",  "leg",     "legs",  "stomach", "head",   "shoulder",
-      "side",   "left",       "right", "both",  "forward", "front", "in",      "at",     "to",
-      "of",     "it",         "them",  "that",  "which",   "is",    "are",     "its",    "away",
-      "from",   "off",        "big",   "small", "tall",    "short", "far",     "nearby", "middle",
-      "centre", "center",     "there", "yours", "own",     "one",   "edge",    "each",   "against",
-      "dont",   "lean",       "place", "using", "either",  "s",     "geton"};
+      "then",    "and",     "sit",     "lie",      "rest",       "stand",   "up",     "go",
+      "move",    "touch",   "reach",   "grab",     "put",        "stack",   "cross",  "lean",
+      "raise",   "turn",    "keep",    "with",     "while",      "your",    "hand",   "hands",
+      "elbow",   "elbows",  "knee",    "knees",    "other_knee", "foot",    "feet",   "leg",
+      "legs",    "stomach", "head",    "shoulder", "side",       "left",    "right",  "both",
+      "forward", "front",   "in",      "at",       "to",         "of",      "it",     "them",
+      "that",    "which",   "is",      "are",      "its",        "away",    "from",   "off",
+      "big",     "small",   "tall",    "short",    "far",        "nearby",  "middle", "centre",
+      "center",  "there",   "yours",   "own",      "one",        "edge",    "each",   "against",
+      "dont",    "lean",    "place",   "using",    "either",     "s",       "geton",  "carry",
+      "here",    "team2",   "team3",   "team4",    "teamall",    "teamany", "door",   "doors",
+      "doorway", "exit",    "entrance"};
   return *words;
 }
 

@@ -1,14 +1,19 @@
 #include "simhuman/language/offline/objects.h"
 
+#include <algorithm>
+
 namespace simhuman::language::offline {
 
 std::string Describe(const CatalogObject& o) {
   std::string colour = o.color.empty() ? "" : o.color + " ";
-  std::string type = o.type == "high_stool" ? "high stool" : o.type;
-  return o.id + " (" + colour + type + ")";
+  return o.id + " (" + colour + TypeText(o.type) + ")";
 }
 
-std::string TypeText(const std::string& type) { return type == "high_stool" ? "high stool" : type; }
+std::string TypeText(const std::string& type) {
+  std::string out = type;
+  std::replace(out.begin(), out.end(), '_', ' ');
+  return out;
+}
 
 bool HasPart(const CatalogObject& o, const std::string& name) {
   for (const core::CatalogPart& p : o.parts) {

@@ -12,7 +12,7 @@ namespace simhuman::language::offline {
 
 /// "chair000 (brown chair)": the id, then the colour and type in words.
 std::string Describe(const CatalogObject& o);
-/// An object type in words ("high_stool" -> "high stool").
+/// An object type in words ("high_stool" -> "high stool", "long_box" -> "long box").
 std::string TypeText(const std::string& type);
 /// Whether `o` has a part whose canonical name is exactly `name`.
 bool HasPart(const CatalogObject& o, const std::string& name);

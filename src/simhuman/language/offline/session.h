@@ -10,6 +10,7 @@
 /// - poses.cc: sitting and lying poses ("hands on the knees", "lean back", "knees up", ...);
 /// - body_verbs.cc: sit, lie, rest, go, stand up, touch/reach;
 /// - tabletop.cc: put/place/stack an object on or next to another;
+/// - carry.cc: carry, bring, lift, pick up and put down objects, alone or as a team;
 /// - clauses.cc: the clause dispatcher (which verb handler reads a clause).
 
 #include <optional>
@@ -126,12 +127,29 @@ class Session {
   absl::Status Reach(const Tokens& t, const std::string& c);
   absl::Status Tabletop(const Tokens& t, size_t b, const std::string& c);
 
+  // ---- carrying (carry.cc)
+  /// How a carry clause ends: kHold (carry/lift/pick up without a destination), kPutDown
+  /// (put/place/drop without one: down where the carriers stand).
+  enum class CarryDefault { kHold, kPutDown };
+  /// Whether a clause's object and destination t[b, ...) make it a carry: the object (no part
+  /// named) is held, or is carryable and goes to or beside (not onto) another object, or
+  /// "here", or (`hold_ok`, for pick up / lift) has no destination.
+  bool IsCarryClause(const Tokens& t, size_t b, bool hold_ok, const std::string& c);
+  absl::Status Carry(const Tokens& t, size_t b, CarryDefault fallback, const std::string& c);
+  absl::Status AddCarry(const CatalogObject& o, plan::CarryStep step, const std::string& text,
+                        const std::string& c);
+  core::StatusOr<std::vector<plan::Carrier>> Team(const CatalogObject& o, const std::string& c);
+
   const core::SceneCatalog& scene_;
   Viewer viewer_;
   Point2 pos_;
   Posture posture_ = Posture::kStand;
-  const CatalogObject* on_ = nullptr;     // what the human sits or lies on
-  const CatalogObject* focus_ = nullptr;  // the object last referred to ("it")
+  const CatalogObject* on_ = nullptr;          // what the human sits or lies on
+  const CatalogObject* focus_ = nullptr;       // the object last referred to ("it")
+  int team_ = 0;                               // carriers asked for in this clause; 0: as needed
+  const CatalogObject* held_ = nullptr;        // the object lifted and held ("pick up the box")
+  std::vector<plan::Carrier> held_by_;         // who holds it
+  std::optional<core::SceneCatalog> planned_;  // the scene as the carry steps so far leave it
   std::vector<StepDraft> steps_;
 };
 

@@ -24,6 +24,40 @@ double Volume(const CatalogObject& o) {
   return d.x() * d.y() * d.z();
 }
 
+plan::Direction ViewerSide(Rel r, const CatalogObject& ref, const Viewer& v) {
+  const double c = std::cos(v.yaw), s = std::sin(v.yaw);
+  double wx = 0, wy = 0;
+  switch (r) {
+    case Rel::kLeftOf:
+      wx = -s, wy = c;
+      break;
+    case Rel::kRightOf:
+      wx = s, wy = -c;
+      break;
+    case Rel::kFrontOf:
+      wx = -c, wy = -s;
+      break;
+    case Rel::kBehind:
+      wx = c, wy = s;
+      break;
+    default:
+      return plan::Direction::kNone;
+  }
+  // the reference's side closest to that world direction
+  plan::Direction best = plan::Direction::kFront;
+  double best_dot = -2;
+  for (plan::Direction d : {plan::Direction::kFront, plan::Direction::kBack, plan::Direction::kLeft,
+                            plan::Direction::kRight}) {
+    const Eigen::Vector3d u = plan::DirectionVector(d, ref.pose);
+    const double dot = u.x() * wx + u.y() * wy;
+    if (dot > best_dot) {
+      best_dot = dot;
+      best = d;
+    }
+  }
+  return best;
+}
+
 std::optional<Rel> RelFromWord(const std::string& w) {
   if (w == "near" || w == "at") return Rel::kNear;
   if (w == "nearest") return Rel::kNearest;

@@ -52,6 +52,10 @@ Rel SideRelation(const CatalogObject& a, const CatalogObject& ref, const Viewer&
 /// Whether side relation `r` (left of, right of, in front of, behind) holds for `a` relative to
 /// `ref` in the viewer's frame, with kTieM slack; false for other relations.
 bool HoldsSide(Rel r, const CatalogObject& a, const CatalogObject& ref, const Viewer& v);
+/// The side of `ref` (front, back, left, right: its own frame) that lies in the viewer's
+/// direction of side relation `r` (kLeftOf: the viewer's left, kFrontOf: towards the viewer,
+/// ...); kNone for other relations.
+plan::Direction ViewerSide(Rel r, const CatalogObject& ref, const Viewer& v);
 /// Whether `a` rests on `ref`: its origin lies over ref's footprint and above the floor.
 bool RestsOn(const CatalogObject& a, const CatalogObject& ref);
 

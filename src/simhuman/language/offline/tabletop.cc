@@ -2,8 +2,6 @@
 // or behind another, planned as a grasp step and an object-on-object goal step (DASH-style
 // commands).
 
-#include <cmath>
-
 #include "simhuman/language/offline/objects.h"
 #include "simhuman/language/offline/session.h"
 #include "simhuman/plan/metrics.h"
@@ -21,21 +19,6 @@ std::string TopPart(const CatalogObject& o) {
 std::string BodyPart(const CatalogObject& o) {
   if (HasPart(o, "body")) return "body";
   return TopPart(o);
-}
-
-// the reference object's side (its own frame) closest to a viewer-frame direction
-Direction ObjectSide(const CatalogObject& ref, double wx, double wy) {
-  Direction best = Direction::kFront;
-  double best_dot = -2;
-  for (Direction d : {Direction::kFront, Direction::kBack, Direction::kLeft, Direction::kRight}) {
-    Eigen::Vector3d v = plan::DirectionVector(d, ref.pose);
-    double dot = v.x() * wx + v.y() * wy;
-    if (dot > best_dot) {
-      best_dot = dot;
-      best = d;
-    }
-  }
-  return best;
 }
 
 }  // namespace
@@ -101,26 +84,12 @@ absl::Status Session::Tabletop(const Tokens& t, size_t b, const std::string& c) 
   const Rel rel = *RelFromWord(t[dest]);
   Direction dir = Direction::kNone;
   std::string part = BodyPart(*ref);
-  const double c_yaw = std::cos(viewer_.yaw), s_yaw = std::sin(viewer_.yaw);
-  switch (rel) {
-    case Rel::kOn:
-      dir = Direction::kUp;
-      part = TopPart(*ref);
-      break;
-    case Rel::kLeftOf:
-      dir = ObjectSide(*ref, -s_yaw, c_yaw);
-      break;
-    case Rel::kRightOf:
-      dir = ObjectSide(*ref, s_yaw, -c_yaw);
-      break;
-    case Rel::kFrontOf:
-      dir = ObjectSide(*ref, -c_yaw, -s_yaw);
-      break;
-    case Rel::kBehind:
-      dir = ObjectSide(*ref, c_yaw, s_yaw);
-      break;
-    default:
-      break;
+  if (rel == Rel::kOn) {
+    dir = Direction::kUp;
+    part = TopPart(*ref);
+  } else if (rel == Rel::kLeftOf || rel == Rel::kRightOf || rel == Rel::kFrontOf ||
+             rel == Rel::kBehind) {
+    dir = ViewerSide(rel, *ref, viewer_);
   }
   const std::string subject_part = BodyPart(*a);
   focus_ = a;
