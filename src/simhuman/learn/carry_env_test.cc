@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "simhuman/control/policy/policy_net.h"
+#include "simhuman/core/testing_temp.h"
+#include "simhuman/learn/ppo.h"
 
 namespace simhuman::learn {
 namespace {
@@ -69,6 +71,43 @@ TEST(CarryTask, TheStandPointFacesTheNearFace) {
   EXPECT_NEAR(dir.y(), 1.0, 1e-9);
   EXPECT_NEAR(half.x(), 0.3, 1e-9);  // the depth in the stand frame is the box's y extent
   EXPECT_NEAR(half.y(), 0.25, 1e-9);
+}
+
+// a carry run started from the shipped walking policy acts exactly as the walker does on the
+// walking part of its observation, whatever the new entries hold; a policy of an unrelated
+// task is refused by name
+TEST(CarryTask, InitFromTheWalkingPolicyWidensItsInput) {
+  const std::string walk = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/walk.pt";
+  auto w = control::LoadPolicyFile(walk);
+  ASSERT_TRUE(w.ok()) << w.status();
+  PpoConfig cfg;
+  cfg.task = "carry";
+  cfg.num_envs = 2;
+  cfg.rollout_steps = 4;
+  cfg.minibatches = 2;
+  cfg.threads = 1;
+  cfg.hidden = w->meta.hidden;
+  cfg.init_from = walk;
+  const std::string dir = core::testing::UniqueTempPath("carry_init");
+  auto tr = PpoTrainer::Create(cfg, dir);
+  ASSERT_TRUE(tr.ok()) << tr.status();
+  ASSERT_TRUE((*tr)->Checkpoint().ok());
+  auto c = control::LoadPolicyFile(dir + "/policy.pt");
+  ASSERT_TRUE(c.ok()) << c.status();
+  ASSERT_EQ(c->meta.obs_dim, control::kCarryObsDim);
+  torch::manual_seed(3);
+  torch::Tensor obs = torch::randn({5, control::kCarryObsDim});
+  torch::NoGradGuard ng;
+  torch::Tensor a_carry = c->actor->forward(c->norm.Normalize(obs));
+  torch::Tensor a_walk =
+      w->actor->forward(w->norm.Normalize(obs.narrow(1, 0, control::kWalkObsDim).contiguous()));
+  EXPECT_TRUE(torch::allclose(a_carry, a_walk, 1e-5, 1e-5));
+
+  PpoConfig wrong = cfg;
+  wrong.task = "reach";
+  auto bad = PpoTrainer::Create(wrong, core::testing::UniqueTempPath("carry_init_bad"));
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("'walk' policy"), std::string::npos) << bad.status();
 }
 
 // Diagnostic: the shipped walking policy drives the carry task (arms on the reference);

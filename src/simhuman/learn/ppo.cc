@@ -123,7 +123,7 @@ struct PpoTrainer::Impl {
       t.copy_(*s);
     }
     if (parent) {
-      norm = p->norm.Widened(d, 1e4);
+      norm = p->norm.Widened(d);
       return absl::OkStatus();
     }
     norm = p->norm;

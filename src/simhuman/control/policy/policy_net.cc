@@ -63,12 +63,12 @@ void ObsNormalizer::Update(const torch::Tensor& batch) {
   Cache();
 }
 
-ObsNormalizer ObsNormalizer::Widened(int new_dim, double max_count) const {
+ObsNormalizer ObsNormalizer::Widened(int new_dim) const {
   ObsNormalizer w(std::max(new_dim, dim_), clip_);
   torch::NoGradGuard ng;
   w.mean_.narrow(0, 0, dim_).copy_(mean_);
   w.var_.narrow(0, 0, dim_).copy_(var_);
-  w.count_ = std::min(count_, max_count);
+  w.count_ = count_;
   w.Cache();
   return w;
 }

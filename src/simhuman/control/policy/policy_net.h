@@ -52,10 +52,12 @@ class ObsNormalizer {
   absl::Status Load(torch::serialize::InputArchive& ar, int dim);
   int dim() const { return dim_; }
   double count() const { return count_; }
-  /// A normalizer over `new_dim` >= dim() inputs: the first dim() keep their statistics, the new
-  /// ones start at mean 0, variance 1; the count is capped at `max_count` so that the new
-  /// inputs' statistics adapt within a few batches (used to widen a policy's input).
-  ObsNormalizer Widened(int new_dim, double max_count) const;
+  /// A normalizer over `new_dim` >= dim() inputs (to widen a policy's input): the first dim()
+  /// keep their statistics and count, the new ones read as already normalized (mean 0,
+  /// variance 1, with the same weight). Keeping the count keeps the inputs the policy was
+  /// trained on normalized as before; a cap that let the new entries adapt also let the old
+  /// ones drift, and a walking policy widened that way fell within a second.
+  ObsNormalizer Widened(int new_dim) const;
 
  private:
   int dim_;
