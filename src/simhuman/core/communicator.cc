@@ -71,7 +71,7 @@ Status CheckSameOnAllRanks(Communicator& comm, const std::string& what, const st
   }
   SH_RETURN_IF_ERROR(comm.Broadcast(&verdict, 0));
   if (verdict.empty()) return absl::OkStatus();
-  return absl::FailedPreconditionError(verdict);
+  return absl::InvalidArgumentError(verdict);
 }
 
 std::string HashHex(const std::string& bytes) {

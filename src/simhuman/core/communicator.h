@@ -85,7 +85,7 @@ class SerialCommunicator final : public Communicator {
 /// more than one rank), so all ranks stop together instead of waiting for each other.
 Status AgreeOk(Communicator& comm, const Status& local);
 
-/// Collective: FailedPrecondition on every rank unless `value` is the same on all ranks. The
+/// Collective: InvalidArgument on every rank unless `value` is the same on all ranks. The
 /// message names `what` and the ranks that differ from rank 0, with their 64-bit hashes.
 Status CheckSameOnAllRanks(Communicator& comm, const std::string& what, const std::string& value);
 

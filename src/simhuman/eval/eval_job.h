@@ -41,7 +41,7 @@ struct EvalHooks {
 std::string JournalPath(const std::string& out_dir, int rank);
 
 /// Runs the job; collective (every rank calls it with the same options, checked by a hash).
-/// Errors (the same on every rank): options that differ across ranks (FailedPrecondition);
+/// Errors (the same on every rank): options that differ across ranks (InvalidArgument);
 /// fewer episodes than ranks (InvalidArgument); an output folder that cannot be created or
 /// written (PermissionDenied, naming it); with `resume`, finished files of another run
 /// (InvalidArgument naming the file, line or key); without `resume`, journals of an unfinished
