@@ -75,7 +75,7 @@ Status CheckSameOnAllRanks(Communicator& comm, const std::string& what, const st
 }
 
 std::string HashHex(const std::string& bytes) {
-  uint64_t h = 1469598103934665603ull;
+  uint64_t h = 14695981039346656037ull;
   for (unsigned char c : bytes) {
     h ^= c;
     h *= 1099511628211ull;

@@ -36,7 +36,8 @@ class Communicator {
   virtual int size() const = 0;
   /// "serial" or the MPI library's version line.
   virtual std::string name() const = 0;
-  /// Waits until every rank has called it.
+  /// Waits until every rank has called it, without keeping a core busy (a rank that has no
+  /// work left calls it before the next collective).
   virtual Status Barrier() = 0;
   /// In place: every rank's `data[0..n)` becomes the element-wise sum over ranks. The order of
   /// the sum depends only on size(), so the same inputs give the same bits.

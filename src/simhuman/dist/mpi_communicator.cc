@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <list>
+#include <thread>
 
 #ifdef SIMHUMAN_HAVE_MPI
 #include <mpi.h>
@@ -62,8 +63,15 @@ class MpiCommunicator final : public core::Communicator {
     std::string s(v, len);
     return s.substr(0, s.find_first_of(",\n"));
   }
+  // waits without spinning (MPI's blocking calls poll a core at 100 %), so a rank that is done
+  // leaves its core to the ranks still working
   absl::Status Barrier() override {
-    SH_MPI(MPI_Barrier(MPI_COMM_WORLD));
+    MPI_Request request;
+    SH_MPI(MPI_Ibarrier(MPI_COMM_WORLD, &request));
+    for (int done = 0; !done;) {
+      SH_MPI(MPI_Test(&request, &done, MPI_STATUS_IGNORE));
+      if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
     return absl::OkStatus();
   }
   absl::Status AllreduceSum(float* data, int64_t n) override {

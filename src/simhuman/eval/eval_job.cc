@@ -302,6 +302,8 @@ core::StatusOr<Summary> RunEval(const EvalOptions& options, const EvalHooks& hoo
     if (got.empty()) std::this_thread::sleep_for(kPollPeriod);
     local.Update(root.Take(got));
   }
+  // ranks done early wait here idle, not spinning in the collectives below
+  SH_RETURN_IF_ERROR(comm.Barrier());
   core::StatusOr<std::vector<std::pair<int, std::string>>> rest = comm.FinishPosts();
   if (rest.ok()) local.Update(root.Take(*rest));
   SH_RETURN_IF_ERROR(core::AgreeOk(comm, rest.ok() ? local : rest.status()));
