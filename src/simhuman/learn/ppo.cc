@@ -64,6 +64,7 @@ nlohmann::json IterationStats::ToJson() const {
     j["allreduce_calls"] = allreduce_calls;
     j["allreduce_bytes"] = allreduce_bytes;
     j["allreduce_s"] = allreduce_s;
+    j["sync_s"] = sync_s;
   }
   if (amp) {
     j["amp_disc_loss"] = amp_disc_loss;
@@ -399,6 +400,7 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
     m.curr_count = static_cast<int>(count0 + counts[1]);
     m.curr_success = static_cast<int>(success0 + counts[2]);
   }
+  const core::CommStats comm1 = m.comm->stats();
   m.progress.env_steps += n;
   auto t1 = Clock::now();
   // the env threads are idle during the update: it gets the cores
@@ -438,9 +440,10 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   st.update_s = update;
   st.steps_per_s = static_cast<double>(n) / std::max(1e-9, collect + update);
   st.ranks = m.comm->size();
-  st.allreduce_calls = m.comm->stats().allreduce_calls - comm0.allreduce_calls;
-  st.allreduce_bytes = m.comm->stats().allreduce_bytes - comm0.allreduce_bytes;
-  st.allreduce_s = m.comm->stats().allreduce_s - comm0.allreduce_s;
+  st.sync_s = comm1.allreduce_s - comm0.allreduce_s;
+  st.allreduce_calls = m.comm->stats().allreduce_calls - comm1.allreduce_calls;
+  st.allreduce_bytes = m.comm->stats().allreduce_bytes - comm1.allreduce_bytes;
+  st.allreduce_s = m.comm->stats().allreduce_s - comm1.allreduce_s;
   if (std::chrono::duration<double>(Clock::now() - m.last_ckpt).count() >=
           m.cfg.checkpoint_every_s ||
       done()) {

@@ -61,12 +61,13 @@ struct IterationStats {
   double amp_disc_loss = 0, amp_grad_penalty = 0, amp_expert_acc = 0, amp_agent_acc = 0;
   double amp_d_expert = 0, amp_d_agent = 0, amp_style_reward = 0, amp_task_reward = 0;
   int amp_skipped = 0;
-  // data-parallel runs: ranks, and this iteration's gradient and statistics allreduces on
-  // rank 0 (calls, payload bytes per rank, seconds inside them, waits for slower ranks
-  // included); logged when ranks > 1
+  // data-parallel runs (logged when ranks > 1), on rank 0: the update's gradient allreduces
+  // (calls, payload bytes per rank, seconds inside them), and `sync_s`, the seconds in the
+  // allreduces right after the rollout (normaliser, counts): mostly the wait for the slowest
+  // rank's rollout
   int ranks = 1;
   int64_t allreduce_calls = 0, allreduce_bytes = 0;
-  double allreduce_s = 0;
+  double allreduce_s = 0, sync_s = 0;
   nlohmann::json ToJson() const;
 };
 
