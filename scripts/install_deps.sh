@@ -10,6 +10,7 @@ pkgs=(
   libpng-dev ffmpeg
   libcpp-httplib-dev
   libtorch-dev libopenblas0-openmp
+  libopenmpi-dev openmpi-bin
   clang libfuzzer-14-dev libclang-rt-14-dev
 )
 missing=()

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include "simhuman/app/clip_command.h"
 #include "simhuman/app/common.h"
@@ -16,6 +17,7 @@
 #include "simhuman/app/run_command.h"
 #include "simhuman/app/train_command.h"
 #include "simhuman/core/version.h"
+#include "simhuman/dist/mpi_communicator.h"
 #include "simhuman/eval/suites.h"
 #include "simhuman/world/health.h"
 #include "simhuman/world/scene.h"
@@ -140,6 +142,8 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
                    "walk suites: MuJoCo solver, newton or pgs (e.g. to check a policy trained "
                    "with physics_solver pgs)")
       ->capture_default_str();
+  eval_cmd->add_flag("--resume", ev->resume,
+                     "Plan suites: continue the run in --out, running only its missing episodes");
   return eval_cmd;
 }
 
@@ -254,6 +258,12 @@ std::string VersionText() {
 }
 
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  core::SerialCommunicator serial;
+  return RunCli(args, out, err, serial);
+}
+
+int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+           core::Communicator& comm) {
   CLI::App app{"simhuman: simulated humans that carry out Chain-of-Contacts plans", "simhuman"};
   app.set_version_flag("--version", VersionText(), "Print the version and exit");
   app.require_subcommand(0, 1);
@@ -276,7 +286,21 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   ExportFlags ex;
   CLI::App* export_cmd = AddExportCommand(app, &ex);
 
-  if (std::optional<int> code = ParseArgs(app, args, out, err)) return *code;
+  std::ostringstream parse_err;
+  std::optional<int> code = ParseArgs(app, args, out, parse_err);
+  if (comm.size() > 1) {
+    // a rank whose command line does not parse stops every rank
+    std::string msg = parse_err.str();
+    if (!msg.empty() && msg.back() == '\n') msg.pop_back();
+    absl::Status st = code && *code != kExitOk ? absl::InvalidArgumentError(msg) : absl::OkStatus();
+    st = core::AgreeOk(comm, st);
+    if (!st.ok()) {
+      err << "simhuman: error: " << st.message() << std::endl;
+      return kExitBadInput;
+    }
+  }
+  err << parse_err.str();
+  if (code) return *code;
 
   if (run_cmd->parsed()) {
     run.preset_given = run_preset->count() > 0;
@@ -284,14 +308,14 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   }
   if (eval_cmd->parsed()) {
     ev.preset_given = eval_preset->count() > 0;
-    return EvalCommand(ev, out, err);
+    return EvalCommand(ev, out, err, comm);
   }
   if (plan_cmd->parsed()) return PlanCommand(pl, out, err);
   if (app.got_subcommand("scenes")) return ScenesCommand(out, err);
   if (train_cmd->parsed()) {
     tf.steps_given = steps_opt->count() > 0;
     tf.seed_given = seed_opt->count() > 0;
-    return TrainCommand(tf, out, err);
+    return TrainCommand(tf, out, err, comm);
   }
   if (clip.convert->parsed()) return ClipConvertCommand(cf, out, err);
   if (clip.gait->parsed()) return ClipGaitCommand(cf, out, err);
@@ -309,7 +333,21 @@ int Main(int argc, char** argv) {
   world::InstallMujocoHandlers();
   std::vector<std::string> args(argv, argv + argc);
   if (args.empty()) args.push_back("simhuman");
-  return RunCli(args, std::cout, std::cerr);
+  core::StatusOr<std::unique_ptr<core::Communicator>> comm = dist::StartCommunicator();
+  if (!comm.ok()) return ReportError(std::cerr, "mpi", comm.status());
+  core::Communicator& c = **comm;
+  // only rank 0 prints: every error reaches it (core::AgreeOk)
+  std::ostream null_stream(nullptr);
+  std::ostream& out = c.rank() == 0 ? std::cout : null_stream;
+  std::ostream& err = c.rank() == 0 ? std::cerr : null_stream;
+  if (c.size() > 1) {
+    // ranks started from different builds would not compute the same thing
+    core::StatusOr<std::string> exe = core::FileHashHex("/proc/self/exe");
+    absl::Status st = core::AgreeOk(c, exe.status());
+    if (st.ok()) st = core::CheckSameOnAllRanks(c, "simhuman binaries", VersionText() + *exe);
+    if (!st.ok()) return ReportError(err, "mpi", st);
+  }
+  return RunCli(args, out, err, c);
 }
 
 }  // namespace simhuman::app

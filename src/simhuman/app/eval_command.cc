@@ -10,6 +10,7 @@
 #include "simhuman/app/common.h"
 #include "simhuman/app/planner_factory.h"
 #include "simhuman/eval/episode.h"
+#include "simhuman/eval/eval_job.h"
 #include "simhuman/eval/eval_runner.h"
 #include "simhuman/eval/language_suite.h"
 #include "simhuman/eval/walk_eval.h"
@@ -173,15 +174,57 @@ int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err
   return kExitOk;
 }
 
+// "3, 5, 7" (at most the first 20)
+std::string IndexList(const std::vector<int>& v) {
+  std::string s;
+  for (size_t i = 0; i < v.size() && i < 20; ++i) s += (i ? ", " : "") + std::to_string(v[i]);
+  if (v.size() > 20) s += ", ... (" + std::to_string(v.size()) + " in all)";
+  return s;
+}
+
+// the plan suites' options from the flags
+core::StatusOr<eval::EvalOptions> PlanSuiteOptions(const EvalFlags& flags,
+                                                   const eval::SuiteDef& suite) {
+  if (flags.episodes < 1) {
+    return absl::InvalidArgumentError("--episodes " + std::to_string(flags.episodes) +
+                                      " is invalid; valid: an integer >= 1");
+  }
+  if (flags.video_every < 0) {
+    return absl::InvalidArgumentError(
+        "--video-every " + std::to_string(flags.video_every) +
+        " is invalid; valid: 0 (none) or K >= 1 (every K-th episode)");
+  }
+  SH_ASSIGN_OR_RETURN(control::MpcConfig config,
+                      ResolveConfig(flags.preset, flags.preset_given, flags.config));
+  eval::EvalOptions options;
+  options.suite = suite.name;
+  options.episodes = flags.episodes;
+  options.seed = flags.seed;
+  options.out_dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
+  options.config = config;
+  options.video_every = flags.video_every;
+  options.walk_policy = eval::DefaultWalkPolicy(flags.policy);
+  options.resume = flags.resume;
+  return options;
+}
+
 }  // namespace
 
-int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
+int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
+                core::Communicator& comm) {
   const eval::SuiteDef* suite = eval::FindSuite(flags.suite);
   if (!suite) {
     return ReportError(
         err, kCommand,
         absl::InvalidArgumentError("--suite: unknown suite '" + flags.suite +
                                    "'; valid suites are: " + core::JoinNames(eval::SuiteNames())));
+  }
+  if (suite->controller != eval::SuiteController::kMpc && (comm.size() > 1 || flags.resume)) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--suite " + flags.suite +
+                           " runs in one process without --resume; mpirun and --resume work "
+                           "with the plan suites (sit, lie, reach, sceneplan-simple, ...)"));
   }
   if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
   if (suite->controller == eval::SuiteController::kWalkPolicy) {
@@ -190,36 +233,29 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
     }
     return WalkEvalCommand(flags, out, err);
   }
-  if (flags.episodes < 1) {
-    return ReportError(err, kCommand,
-                       absl::InvalidArgumentError("--episodes " + std::to_string(flags.episodes) +
-                                                  " is invalid; valid: an integer >= 1"));
-  }
-  if (flags.video_every < 0) {
-    return ReportError(
-        err, kCommand,
-        absl::InvalidArgumentError("--video-every " + std::to_string(flags.video_every) +
-                                   " is invalid; valid: 0 (none) or K >= 1 (every K-th episode)"));
-  }
-  core::StatusOr<control::MpcConfig> config =
-      ResolveConfig(flags.preset, flags.preset_given, flags.config);
-  if (!config.ok()) return ReportError(err, kCommand, config.status());
-  eval::EvalOptions options;
-  options.suite = suite->name;
-  options.episodes = flags.episodes;
-  options.seed = flags.seed;
-  options.out_dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
-  options.config = *config;
-  options.video_every = flags.video_every;
-  options.walk_policy = eval::DefaultWalkPolicy(flags.policy);
-  absl::Status dir = MakeOutputDir(options.out_dir);
-  if (!dir.ok()) return ReportError(err, kCommand, dir);
+  // every rank checks its own flags and files; all stop if one fails
+  core::StatusOr<eval::EvalOptions> opts = PlanSuiteOptions(flags, *suite);
+  absl::Status agreed = core::AgreeOk(comm, opts.status());
+  if (!agreed.ok()) return ReportError(err, kCommand, agreed);
+  const eval::EvalOptions& options = *opts;
 
   out << "simhuman eval: suite " << flags.suite << ", " << flags.episodes << " episodes, seed "
-      << flags.seed << ", preset " << config->preset << " -> " << options.out_dir << std::endl;
-  PrintHeader(out);
-  core::StatusOr<eval::Summary> summary = eval::RunEval(
-      options, [&](const eval::EpisodeRecord& r, const eval::Summary&) { PrintEpisode(out, r); });
+      << flags.seed << ", preset " << options.config.preset << " -> " << options.out_dir;
+  if (comm.size() > 1) out << ", " << comm.size() << " ranks (" << comm.name() << ")";
+  out << std::endl;
+  eval::EvalHooks hooks;
+  hooks.on_start = [&](const eval::EvalStart& s) {
+    if (options.resume) {
+      out << "resuming: " << s.finished.size() << " of " << options.episodes
+          << " episodes finished; missing (to run now): "
+          << (s.to_run.empty() ? std::string("none") : IndexList(s.to_run)) << std::endl;
+    }
+    PrintHeader(out);
+  };
+  hooks.on_episode = [&](const eval::EpisodeRecord& r, const eval::Summary&) {
+    PrintEpisode(out, r);
+  };
+  core::StatusOr<eval::Summary> summary = eval::RunEval(options, hooks, comm);
   if (!summary.ok()) {
     int code = ReportError(err, kCommand, summary.status());
     return code == kExitOk ? kExitInternal : code;

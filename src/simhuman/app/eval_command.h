@@ -6,6 +6,7 @@
 #include <string>
 
 #include "simhuman/app/llm_flags.h"
+#include "simhuman/core/communicator.h"
 
 namespace simhuman::app {
 
@@ -27,14 +28,18 @@ struct EvalFlags {
   std::string policy;
   bool video = false;                     ///< walk suite: also write MP4s of rendered episodes
   std::string physics_solver = "newton";  ///< walk suites: world::ModelOptions::solver
+  /// Plan suites: continue the run in --out, running only its missing episodes.
+  bool resume = false;
 };
 
 /// Runs the suite: a table row per finished episode and a summary table on `out`, files as
-/// eval::RunEval() writes them. kExitOk when every episode ran, kExitBadInput for bad flags
-/// or files, kExitInternal when an episode could not be set up or a file not written (what
-/// finished stays written). The "language" suite instead runs the command corpus through
+/// eval::RunEval() (eval/eval_job.h) writes them. kExitOk when every episode ran, kExitBadInput for
+/// bad flags or files, kExitInternal when an episode could not be set up or a file not written
+/// (what finished stays written). The "language" suite instead runs the command corpus through
 /// --planner and writes DIR/summary.json (eval::LanguageSummaryJson); episode flags are
-/// ignored there.
-int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err);
+/// ignored there. Plan suites run as a job over the ranks of `comm` (eval/eval_job.h); only
+/// rank 0 should be given real `out` and `err` streams (every rank returns the same code).
+int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
+                core::Communicator& comm);
 
 }  // namespace simhuman::app

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 #include "simhuman/app/common.h"
 #include "simhuman/core/version.h"
@@ -77,7 +78,8 @@ absl::Status ParseStepCount(const std::string& text, int64_t* out) {
   return absl::OkStatus();
 }
 
-int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) {
+int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err,
+                 core::Communicator& comm) {
   int64_t steps = 0;
   if (flags.steps_given || flags.resume.empty()) {
     absl::Status s = ParseStepCount(flags.steps, &steps);
@@ -91,7 +93,7 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
                          absl::InvalidArgumentError("--resume continues a run with its own "
                                                     "settings; only --steps may be given"));
     }
-    trainer = learn::PpoTrainer::Resume(flags.resume, flags.steps_given ? steps : 0);
+    trainer = learn::PpoTrainer::Resume(flags.resume, flags.steps_given ? steps : 0, &comm);
   } else {
     if (flags.out.empty()) {
       return ReportError(err, "train",
@@ -137,14 +139,25 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
     };
     for (std::string& c : cfg.amp_clips) absolute(c);
     if (!cfg.init_from.empty()) absolute(cfg.init_from);
-    trainer = learn::PpoTrainer::Create(cfg, flags.out);
+    trainer = learn::PpoTrainer::Create(cfg, flags.out, &comm);
   }
-  if (!trainer.ok()) return ReportError(err, "train", trainer.status());
+  // every rank started, from the same config and checkpoint, or all stop
+  absl::Status agreed = core::AgreeOk(comm, trainer.status());
+  if (agreed.ok()) {
+    const learn::PpoTrainer& t = **trainer;
+    agreed = core::CheckSameOnAllRanks(
+        comm, "training config and run folder",
+        t.config().ToJson().dump() + t.out_dir() + std::to_string(t.env_steps()));
+  }
+  if (!agreed.ok()) return ReportError(err, "train", agreed);
   learn::PpoTrainer& tr = **trainer;
   const learn::PpoConfig& cfg = tr.config();
   out << "simhuman train: task " << cfg.task << ", " << cfg.num_envs << " envs, " << cfg.threads
-      << " threads, seed " << cfg.seed << ", target " << cfg.total_steps << " steps, run "
-      << tr.out_dir()
+      << " threads"
+      << (comm.size() > 1 ? " per rank x " + std::to_string(comm.size()) + " ranks (" +
+                                comm.name() + ", data-parallel)"
+                          : std::string())
+      << ", seed " << cfg.seed << ", target " << cfg.total_steps << " steps, run " << tr.out_dir()
       << (flags.resume.empty() ? "" : " (resumed at " + std::to_string(tr.env_steps()) + ")")
       << (cfg.amp_clips.empty() ? ""
                                 : ", AMP with " + std::to_string(cfg.amp_clips.size()) + " clip(s)")
@@ -153,7 +166,12 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
   int64_t start_steps = tr.env_steps();
   StopSignals signals;
   while (!tr.done()) {
-    if (int sig = g_stop_signal.load()) {
+    // a signal to any rank stops all of them at the same iteration
+    std::vector<double> stop{static_cast<double>(g_stop_signal.load())};
+    absl::Status stop_st = comm.size() > 1 ? comm.AllreduceSum(stop.data(), 1) : absl::OkStatus();
+    if (!stop_st.ok()) return ReportError(err, "train", stop_st);
+    if (stop[0] > 0) {
+      const int sig = g_stop_signal.load() ? g_stop_signal.load() : SIGTERM;
       absl::Status s = tr.Checkpoint();
       if (!s.ok()) return ReportError(err, "train", s);
       out << "\nsimhuman train: stopped by signal " << sig << " at " << tr.env_steps()
@@ -162,9 +180,10 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
       return 128 + sig;
     }
     auto st = tr.Iterate();
-    if (!st.ok()) {
+    absl::Status iter_st = core::AgreeOk(comm, st.status());
+    if (!iter_st.ok()) {
       (void)tr.Checkpoint();
-      return ReportError(err, "train", st.status());
+      return ReportError(err, "train", iter_st);
     }
     double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     double rate = (st->env_steps - start_steps) / std::max(1e-9, el);
@@ -176,6 +195,10 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) 
            << cfg.total_steps / 1e6 << "M  " << std::setprecision(0) << rate << " st/s  ret "
            << std::setprecision(2) << st->mean_return << "  succ " << st->success_rate << "  fall "
            << st->fall_rate << "  cur " << st->curriculum;
+      if (st->ranks > 1) {
+        line << "  allreduce " << std::setprecision(1)
+             << 100 * st->allreduce_s / std::max(1e-9, st->collect_s + st->update_s) << "%";
+      }
       if (st->amp) {
         line << "  style " << st->amp_style_reward << "  D " << st->amp_d_expert << "/"
              << st->amp_d_agent;

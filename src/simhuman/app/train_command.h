@@ -6,6 +6,7 @@
 #include <string>
 
 #include "absl/status/status.h"
+#include "simhuman/core/communicator.h"
 
 namespace simhuman::app {
 
@@ -29,7 +30,8 @@ struct TrainFlags {
 absl::Status ParseStepCount(const std::string& text, int64_t* out);
 
 /// Runs or resumes training until the step target, printing a progress bar to `out`.
-int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err);
+int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err,
+                 core::Communicator& comm);
 
 /// `simhuman export-policy --checkpoint C --out F [--eval-summary S]`: writes the small policy
 /// file F and its provenance F.json (without the extension): the run's config.json, the

@@ -78,6 +78,38 @@ nlohmann::ordered_json EpisodeRecordJson(const EpisodeRecord& r) {
   return j;
 }
 
+core::StatusOr<EpisodeRecord> EpisodeRecordFromJson(const nlohmann::json& j) {
+  EpisodeRecord r;
+  try {
+    r.index = j.at("episode").get<int>();
+    r.seed = j.at("seed").get<uint64_t>();
+    r.variant = j.at("variant").get<std::string>();
+    r.success = j.at("success").get<bool>();
+    r.held = j.at("held").get<bool>();
+    control::EpisodeResult& res = r.result;
+    res.success = j.at("plan_success").get<bool>();
+    res.steps_completed = j.at("steps_completed").get<int>();
+    res.steps_total = j.at("steps_total").get<int>();
+    const nlohmann::json& err = j.at("contact_error_m");
+    res.contact_error_m = err.is_null() ? -1.0 : err.get<double>();
+    res.fell = j.at("fell").get<bool>();
+    res.end_reason = j.at("end_reason").get<std::string>();
+    res.sim_time_s = j.at("sim_time_s").get<double>();
+    res.wall_time_s = j.at("wall_time_s").get<double>();
+    if (j.contains("extra_check")) {
+      r.extra.metric = j.at("extra_check").get<std::string>();
+      r.extra.pass = j.at("extra_pass").get<bool>();
+      const nlohmann::json& v = j.at(r.extra.metric);
+      r.extra.value = v.is_null() ? std::nan("") : v.get<double>();
+    }
+    r.sheet_path = j.value("contact_sheet", std::string());
+    r.render_error = j.value("render_error", std::string());
+  } catch (const nlohmann::json::exception& e) {
+    return absl::InvalidArgumentError(std::string("not an episode record: ") + e.what());
+  }
+  return r;
+}
+
 nlohmann::ordered_json SummaryJson(const Summary& s, const EvalOptions& options) {
   nlohmann::ordered_json j;
   j["suite"] = s.suite;
@@ -163,39 +195,6 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
     }
   }
   return rec;
-}
-
-core::StatusOr<Summary> RunEval(const EvalOptions& options, const EpisodeCallback& on_episode) {
-  std::error_code ec;
-  std::filesystem::create_directories(options.out_dir, ec);
-  if (ec) {
-    return absl::PermissionDeniedError("cannot create output directory '" + options.out_dir +
-                                       "': " + ec.message());
-  }
-  const std::string jsonl = (std::filesystem::path(options.out_dir) / "episodes.jsonl").string();
-  const std::string summary_path =
-      (std::filesystem::path(options.out_dir) / "summary.json").string();
-  std::ofstream lines(jsonl, std::ios::trunc);
-  if (!lines) {
-    return absl::PermissionDeniedError("cannot write '" + jsonl + "': " + std::strerror(errno));
-  }
-  const std::string& suite = options.suite;
-  std::vector<EpisodeRecord> records;
-  Summary summary = Summarize(suite, records, options.episodes);
-  SH_RETURN_IF_ERROR(WriteJsonFile(summary_path, SummaryJson(summary, options)));
-  for (int i = 0; i < options.episodes; ++i) {
-    SH_ASSIGN_OR_RETURN(EpisodeRecord rec, RunSuiteEpisode(options, i));
-    lines << EpisodeRecordJson(rec).dump(-1, ' ', false,
-                                         nlohmann::ordered_json::error_handler_t::replace)
-          << '\n';
-    lines.flush();
-    if (!lines) return absl::DataLossError("error writing '" + jsonl + "'");
-    records.push_back(std::move(rec));
-    summary = Summarize(suite, records, options.episodes);
-    SH_RETURN_IF_ERROR(WriteJsonFile(summary_path, SummaryJson(summary, options)));
-    if (on_episode) on_episode(records.back(), summary);
-  }
-  return summary;
 }
 
 }  // namespace simhuman::eval

@@ -1,8 +1,7 @@
 #pragma once
-/// `simhuman eval` without the printing: runs a suite's seeded, independent episodes, appends
-/// one JSON line per finished episode to DIR/episodes.jsonl (flushed at once) and rewrites
-/// DIR/summary.json after every episode, so an interrupted eval keeps what finished. Formats
-/// in docs/FORMATS.md, protocols in docs/EVAL_PROTOCOLS.md.
+/// The pieces of `simhuman eval` for plan suites: one seeded, independent episode
+/// (RunSuiteEpisode), its JSON line, and the summary. eval/eval_job.h runs them as a job over
+/// one or more ranks. Formats in docs/FORMATS.md, protocols in docs/EVAL_PROTOCOLS.md.
 
 #include <cstdint>
 #include <functional>
@@ -62,6 +61,11 @@ Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& reco
 /// EpisodeResultJson() fields, the extra metric (when the suite has one), scene and plan.
 nlohmann::ordered_json EpisodeRecordJson(const EpisodeRecord& record);
 
+/// The inverse of EpisodeRecordJson for everything but `scene`, `plan` and the per-step lists
+/// of `result` (left empty): what Summarize and a results table need. InvalidArgument naming
+/// the key when one is missing or of the wrong type.
+core::StatusOr<EpisodeRecord> EpisodeRecordFromJson(const nlohmann::json& j);
+
 /// What to run.
 struct EvalOptions {
   std::string suite = "sit";  ///< a plan suite's registry name (eval/suites.h)
@@ -75,6 +79,9 @@ struct EvalOptions {
   /// Walking policy file: when set, get-close steps that start standing are walked with it
   /// (control::WalkThenContactController) and the MPC does the rest.
   std::string walk_policy;
+  /// Continue the run in out_dir: keep its finished episodes and run only the missing ones
+  /// (eval/eval_job.h).
+  bool resume = false;
 };
 
 /// summary.json: suite, episodes, episodes_requested, success_rate, contact_error_m (null when
@@ -86,13 +93,5 @@ nlohmann::ordered_json SummaryJson(const Summary& summary, const EvalOptions& op
 /// Errors: Internal when the generated episode cannot be set up (a suite bug or a world/
 /// change), naming the suite, episode and seed.
 core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int index);
-
-/// Called after every finished episode with its record and the summary so far.
-using EpisodeCallback = std::function<void(const EpisodeRecord&, const Summary&)>;
-
-/// Runs options.episodes episodes in order. Creates out_dir, truncates DIR/episodes.jsonl, and
-/// writes both files as described above. Errors: files that cannot be written (named), and
-/// RunSuiteEpisode's errors; what finished before an error stays written.
-core::StatusOr<Summary> RunEval(const EvalOptions& options, const EpisodeCallback& on_episode);
 
 }  // namespace simhuman::eval

@@ -9,6 +9,7 @@
 
 #include "simhuman/control/policy/policy_net.h"
 #include "simhuman/core/rng.h"
+#include "simhuman/learn/data_parallel.h"
 #include "simhuman/learn/ppo_amp.h"
 #include "simhuman/learn/ppo_checkpoint.h"
 #include "simhuman/learn/ppo_rollout.h"
@@ -52,6 +53,13 @@ nlohmann::json IterationStats::ToJson() const {
                    {"action_std", action_std},   {"curriculum", curriculum},
                    {"steps_per_s", steps_per_s}, {"collect_s", collect_s},
                    {"update_s", update_s},       {"skipped", skipped_minibatches}};
+  if (ranks > 1) {
+    j["ranks"] = ranks;
+    j["allreduce_calls"] = allreduce_calls;
+    j["allreduce_bytes"] = allreduce_bytes;
+    j["allreduce_s"] = allreduce_s;
+    j["sync_s"] = sync_s;
+  }
   if (amp) {
     j["amp_disc_loss"] = amp_disc_loss;
     j["amp_grad_penalty"] = amp_grad_penalty;
@@ -80,6 +88,25 @@ struct PpoTrainer::Impl {
   int64_t curr_steps = 0;                // env steps at the current level
   Clock::time_point last_ckpt = Clock::now();
   std::unique_ptr<AmpStage> amp;  // null when AMP is off
+  core::SerialCommunicator serial;
+  core::Communicator* comm = &serial;  // the ranks of a data-parallel run (not owned)
+
+  int rank() const { return comm->rank(); }
+  // rank 0 keeps the single-process seeds; the others get their own streams
+  uint64_t EnvSeed() const {
+    return rank() == 0 ? cfg.seed : core::DeriveSeed(cfg.seed, 0xD15, rank());
+  }
+  uint64_t RngSeed(uint64_t iteration) const {
+    return rank() == 0 ? core::DeriveSeed(cfg.seed, 0x5050)
+                       : core::DeriveSeed(cfg.seed, 0x5050, rank(), iteration);
+  }
+  absl::Status CheckRanks() const {
+    if (comm->size() > 1 && !cfg.amp_clips.empty()) {
+      return absl::InvalidArgumentError(
+          "AMP (amp_clips) runs on one rank only; run it without mpirun, or drop --amp-clips");
+    }
+    return absl::OkStatus();
+  }
 
   // copies the policy of cfg.init_from (if any) into the fresh actor and normalizer
   absl::Status InitFrom() {
@@ -139,7 +166,7 @@ struct PpoTrainer::Impl {
     for (int j = 0; j < a; ++j) used[j] = env->task().action_used(j) ? 1.f : 0.f;
     net = MakeActorCritic(d, d, a, cfg.hidden, cfg.critic_hidden, cfg.init_std, cfg.lr, used);
     norm = control::ObsNormalizer(d);
-    rng = core::Rng(core::DeriveSeed(cfg.seed, 0x5050));
+    rng = core::Rng(RngSeed(0));
     guard = NonFiniteGuard(cfg.max_bad_updates);
   }
 
@@ -254,15 +281,17 @@ const PpoConfig& PpoTrainer::config() const { return impl_->cfg; }
 const std::string& PpoTrainer::out_dir() const { return impl_->out; }
 
 core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Create(const PpoConfig& config,
-                                                               const std::string& out_dir) {
+                                                               const std::string& out_dir,
+                                                               core::Communicator* comm) {
   SH_RETURN_IF_ERROR(config.Validate());
   SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task,
                       MakeTask(config.task, config.num_envs, config.physics_solver));
-  return CreateWithTask(config, out_dir, std::move(task));
+  return CreateWithTask(config, out_dir, std::move(task), comm);
 }
 
 core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::CreateWithTask(
-    const PpoConfig& config, const std::string& out_dir, std::unique_ptr<VecTask> task) {
+    const PpoConfig& config, const std::string& out_dir, std::unique_ptr<VecTask> task,
+    core::Communicator* comm) {
   SH_RETURN_IF_ERROR(config.Validate());
   std::error_code ec;
   if (fs::exists(fs::path(out_dir) / kCheckpointName, ec)) {
@@ -273,26 +302,34 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::CreateWithTask(
   auto impl = std::make_unique<Impl>();
   impl->cfg = config;
   impl->out = out_dir;
-  impl->env = std::make_unique<VecEnv>(std::move(task), config.threads, config.seed);
+  if (comm) impl->comm = comm;
+  SH_RETURN_IF_ERROR(impl->CheckRanks());
+  impl->env = std::make_unique<VecEnv>(std::move(task), config.threads, impl->EnvSeed());
   impl->Build();
   SH_RETURN_IF_ERROR(impl->InitFrom());
   SH_ASSIGN_OR_RETURN(impl->amp, AmpStage::Create(config, *impl->env));
+  impl->env->ResetAll(0);
+  if (impl->rank() != 0) return std::unique_ptr<PpoTrainer>(new PpoTrainer(std::move(impl)));
   // the run's folder appears only once its inputs (init_from, AMP clips) have loaded
   fs::create_directories(out_dir, ec);
   if (ec) return absl::PermissionDeniedError(out_dir + ": cannot create: " + ec.message());
-  impl->env->ResetAll(0);
-  std::ofstream(out_dir + "/config.json") << config.ToJson().dump(2) << "\n";
+  std::ofstream config_file(out_dir + "/config.json");
+  config_file << config.ToJson().dump(2) << "\n";
+  config_file.flush();
+  if (!config_file) return absl::PermissionDeniedError(out_dir + "/config.json: cannot write");
   return std::unique_ptr<PpoTrainer>(new PpoTrainer(std::move(impl)));
 }
 
 core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string& out_dir,
-                                                               int64_t total_steps) {
+                                                               int64_t total_steps,
+                                                               core::Communicator* comm) {
   std::string path = (fs::path(out_dir) / kCheckpointName).string();
   if (!std::ifstream(path).good()) {
     return absl::NotFoundError(path + ": no checkpoint to resume from");
   }
   auto impl = std::make_unique<Impl>();
   impl->out = out_dir;
+  if (comm) impl->comm = comm;
   try {
     torch::serialize::InputArchive ar;
     ar.load_from(path);
@@ -308,17 +345,22 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
     if (total_steps > 0) impl->cfg.total_steps = total_steps;
     SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task,
                         MakeTask(impl->cfg.task, impl->cfg.num_envs, impl->cfg.physics_solver));
-    impl->env = std::make_unique<VecEnv>(std::move(task), impl->cfg.threads, impl->cfg.seed);
+    SH_RETURN_IF_ERROR(impl->CheckRanks());
+    impl->env = std::make_unique<VecEnv>(std::move(task), impl->cfg.threads, impl->EnvSeed());
     impl->Build();
     SH_ASSIGN_OR_RETURN(impl->amp, AmpStage::Create(impl->cfg, *impl->env));
     SH_RETURN_IF_ERROR(impl->Restore(ar, path, curriculum.toDouble()));
+    // the checkpoint holds rank 0's stream; the other ranks start fresh ones
+    if (impl->rank() != 0) {
+      impl->rng = core::Rng(impl->RngSeed(static_cast<uint64_t>(impl->progress.iteration)));
+    }
   } catch (const c10::Error& e) {
     return absl::DataLossError(path + ": corrupt checkpoint: " + e.what_without_backtrace());
   } catch (const std::exception& e) {
     return absl::DataLossError(path + ": corrupt checkpoint: " + e.what());
   }
   // iterations logged after the checkpoint were lost with the process: drop their lines
-  TrimLogAfter(out_dir + "/log.jsonl", impl->progress.env_steps);
+  if (impl->rank() == 0) TrimLogAfter(out_dir + "/log.jsonl", impl->progress.env_steps);
   // new episodes after a resume get fresh seeds
   impl->env->ResetAll(static_cast<uint64_t>(impl->progress.iteration + 1) << 24);
   return std::unique_ptr<PpoTrainer>(new PpoTrainer(std::move(impl)));
@@ -326,6 +368,7 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
 
 absl::Status PpoTrainer::Checkpoint() {
   Impl& m = *impl_;
+  if (m.rank() != 0) return absl::OkStatus();
   SH_RETURN_IF_ERROR(m.WriteCheckpoint(m.out + "/" + kCheckpointName));
   SH_RETURN_IF_ERROR(m.WritePolicy(m.out + "/policy.pt"));
   if (m.window.size() >= kBestPolicyMinEpisodes) {
@@ -342,9 +385,15 @@ absl::Status PpoTrainer::Checkpoint() {
 core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   Impl& m = *impl_;
   auto t0 = Clock::now();
-  const int64_t n = static_cast<int64_t>(m.cfg.rollout_steps) * m.env->num_envs();
+  const core::CommStats comm0 = m.comm->stats();
+  // env steps of all ranks
+  const int64_t n = static_cast<int64_t>(m.cfg.rollout_steps) * m.env->num_envs() * m.comm->size();
   const float gamma = static_cast<float>(m.cfg.gamma);
   IterationStats st;
+  // what every rank holds alike before its own rollout
+  const control::ObsNormalizer norm_before = m.norm;
+  const double episodes0 = static_cast<double>(m.progress.episodes), count0 = m.curr_count,
+               success0 = m.curr_success;
 
   // rollout and advantages
   VecRolloutOptions ro;
@@ -354,6 +403,17 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   RolloutBuffer rollout = CollectVecRollout(*m.env, m.net, m.norm, m.rng, m.amp.get(), ro,
                                             [&m](const EpisodeStats& e) { m.OnEpisode(e); });
   PpoBatch batch = rollout.Finish(gamma, static_cast<float>(m.cfg.lambda));
+  if (m.comm->size() > 1) {
+    // the ranks' rollouts: one normaliser, global episode counts (and so one curriculum)
+    SH_RETURN_IF_ERROR(MergeNormalizer(norm_before, &m.norm, *m.comm));
+    std::vector<double> counts{m.progress.episodes - episodes0, m.curr_count - count0,
+                               m.curr_success - success0};
+    SH_RETURN_IF_ERROR(SumCounts(&counts, *m.comm));
+    m.progress.episodes = static_cast<int64_t>(episodes0 + counts[0]);
+    m.curr_count = static_cast<int>(count0 + counts[1]);
+    m.curr_success = static_cast<int>(success0 + counts[2]);
+  }
+  const core::CommStats comm1 = m.comm->stats();
   m.progress.env_steps += n;
   auto t1 = Clock::now();
   // the env threads are idle during the update: it gets the cores
@@ -364,7 +424,9 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   const double lr = m.Lr();
   SetLearningRate(*m.net.opt, lr);
   m.guard.Begin(m.net.Params());
-  PpoUpdateStats up = PpoUpdate(m.net, batch, m.UpdateOptions(), m.rng);
+  PpoUpdateOptions update_options = m.UpdateOptions();
+  update_options.comm = m.comm;
+  PpoUpdateStats up = PpoUpdate(m.net, batch, update_options, m.rng);
   absl::Status guard = m.guard.End(up, m.progress.iteration);
   if (!guard.ok()) {
     torch::set_num_threads(m.cfg.torch_threads);
@@ -390,13 +452,18 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   st.collect_s = collect;
   st.update_s = update;
   st.steps_per_s = static_cast<double>(n) / std::max(1e-9, collect + update);
+  st.ranks = m.comm->size();
+  st.sync_s = comm1.allreduce_s - comm0.allreduce_s;
+  st.allreduce_calls = m.comm->stats().allreduce_calls - comm1.allreduce_calls;
+  st.allreduce_bytes = m.comm->stats().allreduce_bytes - comm1.allreduce_bytes;
+  st.allreduce_s = m.comm->stats().allreduce_s - comm1.allreduce_s;
   if (std::chrono::duration<double>(Clock::now() - m.last_ckpt).count() >=
           m.cfg.checkpoint_every_s ||
       done()) {
     SH_RETURN_IF_ERROR(Checkpoint());
     st.checkpointed = true;
   }
-  AppendJsonLine(m.out + "/log.jsonl", st.ToJson());
+  if (m.rank() == 0) AppendJsonLine(m.out + "/log.jsonl", st.ToJson());
   return st;
 }
 

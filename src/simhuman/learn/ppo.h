@@ -20,6 +20,13 @@
 /// Reproducibility: networks are initialised from torch::manual_seed(seed); action noise and
 /// minibatch shuffles come from a seeded core::Rng stored in the checkpoint; env episodes are
 /// seeded per (seed, env, episode). With the same seed and thread count a run repeats.
+///
+/// Data-parallel (DD-PPO, learn/data_parallel.h): given a communicator of K ranks, every rank
+/// steps its own num_envs environments (seeded per rank), gradients are averaged and the
+/// normaliser merged over the ranks, episode counts and the curriculum are global, env_steps
+/// counts the steps of all ranks, and only rank 0 writes files (its episodes make the
+/// logged statistics). A checkpoint holds nothing rank-specific but rank 0's RNG, so a run
+/// resumes on any K; the same seed and K repeat a run. AMP runs on one rank only.
 
 #include <cstdint>
 #include <memory>
@@ -27,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "simhuman/core/communicator.h"
 #include "simhuman/core/status.h"
 #include "simhuman/learn/ppo_config.h"
 
@@ -53,27 +61,40 @@ struct IterationStats {
   double amp_disc_loss = 0, amp_grad_penalty = 0, amp_expert_acc = 0, amp_agent_acc = 0;
   double amp_d_expert = 0, amp_d_agent = 0, amp_style_reward = 0, amp_task_reward = 0;
   int amp_skipped = 0;
+  // data-parallel runs (logged when ranks > 1), on rank 0: the update's gradient allreduces
+  // (calls, payload bytes per rank, seconds inside them), and `sync_s`, the seconds in the
+  // allreduces right after the rollout (normaliser, counts): mostly the wait for the slowest
+  // rank's rollout
+  int ranks = 1;
+  int64_t allreduce_calls = 0, allreduce_bytes = 0;
+  double allreduce_s = 0, sync_s = 0;
   nlohmann::json ToJson() const;
 };
 
 class PpoTrainer {
  public:
   /// Starts a new run writing to `out_dir` (created). AlreadyExists if it holds a checkpoint.
+  /// `comm` (not owned, may be null: one process) makes the run data-parallel; Create and
+  /// Resume make no collective calls, so the caller agrees on their result (core::AgreeOk).
   static core::StatusOr<std::unique_ptr<PpoTrainer>> Create(const PpoConfig& config,
-                                                            const std::string& out_dir);
+                                                            const std::string& out_dir,
+                                                            core::Communicator* comm = nullptr);
   /// As Create, with a caller-made task (tests; config.task only names it in files).
-  static core::StatusOr<std::unique_ptr<PpoTrainer>> CreateWithTask(const PpoConfig& config,
-                                                                    const std::string& out_dir,
-                                                                    std::unique_ptr<VecTask> task);
+  static core::StatusOr<std::unique_ptr<PpoTrainer>> CreateWithTask(
+      const PpoConfig& config, const std::string& out_dir, std::unique_ptr<VecTask> task,
+      core::Communicator* comm = nullptr);
   /// Continues the run in `out_dir` from its checkpoint. A missing checkpoint is NotFound and a
   /// corrupt one DataLoss (never a silent restart). `total_steps` > 0 overrides the target.
   static core::StatusOr<std::unique_ptr<PpoTrainer>> Resume(const std::string& out_dir,
-                                                            int64_t total_steps = 0);
+                                                            int64_t total_steps = 0,
+                                                            core::Communicator* comm = nullptr);
   ~PpoTrainer();
 
-  /// Collects one rollout and updates. Errors: too many non-finite updates in a row, I/O.
+  /// Collects one rollout and updates; collective with a communicator. Errors: too many
+  /// non-finite updates in a row, I/O (rank 0), the communicator's.
   core::StatusOr<IterationStats> Iterate();
-  /// Writes checkpoint.pt and policy.pt atomically (and best_policy.pt when better).
+  /// Writes checkpoint.pt and policy.pt atomically (and best_policy.pt when better); on ranks
+  /// other than 0 it writes nothing.
   absl::Status Checkpoint();
   bool done() const;
   int64_t env_steps() const;

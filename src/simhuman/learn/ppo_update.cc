@@ -6,6 +6,9 @@
 #include <random>
 #include <string>
 
+#include "simhuman/core/check.h"
+#include "simhuman/learn/data_parallel.h"
+
 namespace simhuman::learn {
 namespace {
 
@@ -66,6 +69,13 @@ PpoUpdateStats PpoUpdate(ActorCritic& net, const PpoBatch& batch, const PpoUpdat
       torch::isfinite(obs).all().item<bool>() &&
       (!batch.critic_obs.defined() || torch::isfinite(critic_obs).all().item<bool>()) &&
       torch::isfinite(batch.ret).all().item<bool>() && torch::isfinite(adv).all().item<bool>();
+  if (options.comm && options.comm->size() > 1) {
+    // one rank's non-finite rollout stops the update on every rank (they step together)
+    std::vector<double> bad{st.rollout_finite ? 0.0 : 1.0};
+    absl::Status sum = SumCounts(&bad, *options.comm);
+    SH_CHECK(sum.ok(), std::string(sum.message()).c_str());
+    st.rollout_finite = bad[0] == 0;
+  }
   if (!st.rollout_finite) {
     st.skipped = options.epochs * options.minibatches;
     return st;
@@ -101,12 +111,17 @@ PpoUpdateStats PpoUpdate(ActorCritic& net, const PpoBatch& batch, const PpoUpdat
       torch::Tensor loss = options.critic_only
                                ? options.value_coef * vloss
                                : pg + options.value_coef * vloss - options.entropy_coef * entropy;
-      if (!torch::isfinite(loss).item<bool>()) {
+      const bool loss_finite = torch::isfinite(loss).item<bool>();
+      net.opt->zero_grad();
+      if (loss_finite) loss.backward();
+      // data-parallel: the mean gradient over the ranks (all skip if one rank's loss is bad)
+      const bool usable =
+          options.comm ? AverageGradients(params, *options.comm, !loss_finite) : loss_finite;
+      if (!usable) {
         ++st.skipped;
+        net.opt->zero_grad();
         continue;
       }
-      net.opt->zero_grad();
-      loss.backward();
       double gn = torch::nn::utils::clip_grad_norm_(params, options.max_grad_norm);
       if (!std::isfinite(gn)) {
         ++st.skipped;

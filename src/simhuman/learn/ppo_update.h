@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "simhuman/control/policy/policy_net.h"
+#include "simhuman/core/communicator.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/core/status.h"
 
@@ -74,6 +75,10 @@ struct PpoUpdateOptions {
   double entropy_coef = 0.001;
   double max_grad_norm = 1.0;
   bool critic_only = false;  ///< train only the value network (critic warm-up)
+  /// Data-parallel PPO (learn/data_parallel.h): the gradients of each minibatch are averaged
+  /// over the ranks of `comm`, and a non-finite rollout or loss on one rank skips the update
+  /// or minibatch on all. Null: this process alone. Not owned.
+  core::Communicator* comm = nullptr;
 };
 
 /// What one PPO update measured: means over the minibatches that stepped.

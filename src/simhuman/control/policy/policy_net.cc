@@ -53,8 +53,12 @@ void ObsNormalizer::Update(const torch::Tensor& batch) {
   torch::Tensor x = batch.to(torch::kFloat64).reshape({-1, dim_});
   double n = static_cast<double>(x.size(0));
   if (n <= 0) return;
-  torch::Tensor bm = x.mean(0);
-  torch::Tensor bv = x.var(0, /*unbiased=*/false);
+  Merge(n, x.mean(0), x.var(0, /*unbiased=*/false));
+}
+
+void ObsNormalizer::Merge(double n, const torch::Tensor& bm, const torch::Tensor& bv) {
+  torch::NoGradGuard ng;
+  if (n <= 0) return;
   double total = count_ + n;
   torch::Tensor delta = bm - mean_;
   mean_ = mean_ + delta * (n / total);

@@ -50,6 +50,9 @@ class ObsNormalizer {
   void Save(torch::serialize::OutputArchive& ar) const;
   /// Errors if keys are missing or the dimension differs from `dim`.
   absl::Status Load(torch::serialize::InputArchive& ar, int dim);
+  /// Adds statistics of `n` samples (float64 [dim] mean and population variance), as if
+  /// those samples had been passed to Update (Chan et al.'s parallel merge).
+  void Merge(double n, const torch::Tensor& mean, const torch::Tensor& var);
   int dim() const { return dim_; }
   double count() const { return count_; }
   /// A normalizer over `new_dim` >= dim() inputs (to widen a policy's input): the first dim()
@@ -58,6 +61,8 @@ class ObsNormalizer {
   /// trained on normalized as before; a cap that let the new entries adapt also let the old
   /// ones drift, and a walking policy widened that way fell within a second.
   ObsNormalizer Widened(int new_dim) const;
+  const torch::Tensor& mean() const { return mean_; }  ///< float64 [dim]
+  const torch::Tensor& var() const { return var_; }    ///< float64 [dim], population variance
 
  private:
   int dim_;
