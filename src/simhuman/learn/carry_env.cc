@@ -17,6 +17,8 @@ using control::kWalkActDim;
 constexpr double kDeg = M_PI / 180.0;
 constexpr double kSuccessRadius = 0.2;
 constexpr int kSuccessHold = 30;  // policy steps at rest after the put-down (1 s)
+constexpr double kStartAtBoxFraction = 0.5;
+constexpr double kMaxApproachSeconds = 20;
 
 Eigen::Vector3d Vec(const mjtNum* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
 
@@ -36,6 +38,8 @@ const char* CarryFailureName(CarryFailure f) {
       return "dropped the box";
     case CarryFailure::kLost:
       return "lost the box";
+    case CarryFailure::kStalled:
+      return "stalled before the box";
     case CarryFailure::kNonFinite:
       return "non-finite state";
   }
@@ -140,12 +144,29 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   mj_resetData(e.m, d);
   const world::AgentIndex& a = ix_.walk.agent;
   const double c = std::clamp(curriculum_, 0.0, 1.0);
-  // the human 1-2 m (up to 5 m) from the box, facing it within +-(30 + 150 c) degrees
-  const double dist = e.rng.Uniform(1.0, 2.0 + 3.0 * c);
-  const double bearing = e.rng.Uniform(-M_PI, M_PI);
-  const Eigen::Vector2d start = dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
-  const double face = std::atan2(-start.y(), -start.x());
-  const double yaw = face + e.rng.Uniform(-1.0, 1.0) * (30.0 + 150.0 * c) * kDeg;
+  // the box: a cube, side and mass growing with the curriculum
+  const double side = e.rng.Uniform(0.4 - 0.15 * c, 0.6 + 0.15 * c);
+  const double mass = e.rng.Uniform(2.0, 5.0 + 8.0 * c);
+  const double box_yaw = e.rng.Uniform(-M_PI, M_PI);
+  // half the episodes start at the box, ready to lift (the lift is practised from the first
+  // iteration, not only after a walk); the others 1-2 m (up to 5 m) away, facing the box
+  // within +-(30 + 150 c) degrees
+  const bool at_box = e.rng.Uniform() < kStartAtBoxFraction;
+  Eigen::Vector2d start;
+  double yaw;
+  if (at_box) {
+    const int face = static_cast<int>(e.rng.Uniform(0.0, 3.999));
+    const double dir = box_yaw + face * M_PI / 2;
+    start =
+        (0.5 * side + params_.stand_gap_m + 0.05) * Eigen::Vector2d(std::cos(dir), std::sin(dir));
+    yaw = dir + M_PI + e.rng.Uniform(-0.1, 0.1);
+  } else {
+    const double dist = e.rng.Uniform(1.0, 2.0 + 3.0 * c);
+    const double bearing = e.rng.Uniform(-M_PI, M_PI);
+    start = dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+    const double face = std::atan2(-start.y(), -start.x());
+    yaw = face + e.rng.Uniform(-1.0, 1.0) * (30.0 + 150.0 * c) * kDeg;
+  }
   d->qpos[a.root_qpos + 0] = start.x();
   d->qpos[a.root_qpos + 1] = start.y();
   d->qpos[a.root_qpos + 3] = std::cos(yaw / 2);
@@ -162,13 +183,16 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   const double lowest =
       LowestBoxCornerZ(e.m, d, {ix_.walk.left_foot_geom, ix_.walk.right_foot_geom});
   d->qpos[a.root_qpos + 2] -= lowest - 0.001;
-  // the box: a cube, side and mass growing with the curriculum
-  const double side = e.rng.Uniform(0.4 - 0.15 * c, 0.6 + 0.15 * c);
-  const double mass = e.rng.Uniform(2.0, 5.0 + 8.0 * c);
   const double dest_dist = e.rng.Uniform(1.0, 3.0 + 7.0 * c);
   const double dest_dir = e.rng.Uniform(-M_PI, M_PI);
-  SetBox(i, side, mass, Eigen::Vector3d(0, 0, 0), e.rng.Uniform(-M_PI, M_PI),
+  SetBox(i, side, mass, Eigen::Vector3d(0, 0, 0), box_yaw,
          dest_dist * Eigen::Vector2d(std::cos(dest_dir), std::sin(dest_dir)), obs);
+  if (at_box) {
+    control::CarryBox box = control::ReadCarryBox(e.m, d, box_geom_);
+    control::StartLift(params_, e.m, e.scratch, d, ix_, box, &e.s);
+    control::UpdateWalkCommand(control::WalkParams(), d, ix_.walk, &e.s.walk);
+    control::CarryObservation(d, ix_, e.s, box, obs);
+  }
 }
 
 CarryFailure CarryTask::Check(const Env& e, const control::CarryBox& box) const {
@@ -192,6 +216,9 @@ CarryFailure CarryTask::Check(const Env& e, const control::CarryBox& box) const 
   const double speed = std::hypot(box.linvel.x(), box.linvel.y());
   if (!control::CarryHandsOnBox(e.s) && low < 0.3 && speed > 1.0) return CarryFailure::kKick;
   if (ph == CarryPhase::kCarry && e.s.phase_time_s > 1.0 && low < 0.03) return CarryFailure::kDrop;
+  if (ph == CarryPhase::kApproach && e.s.phase_time_s > kMaxApproachSeconds) {
+    return CarryFailure::kStalled;
+  }
   Eigen::Vector3d pelvis = Vec(d->xpos + 3 * a.pelvis_body);
   if (ph == CarryPhase::kCarry && (box.pos - pelvis).head<2>().norm() > 1.2) {
     return CarryFailure::kLost;

@@ -7,13 +7,15 @@
 /// Each env owns a copy of the model so the box's size and mass differ per episode. Boxes are
 /// cubes of side 0.4-0.6 m and 2-5 kg at curriculum 0, growing to CooHOI's 0.25-0.75 m and
 /// 2-13 kg at 1; the human starts 1-2 m (up to 5 m) from the box, the destination is 1-3 m (up
-/// to 10 m) from it in any direction.
+/// to 10 m) from it in any direction. Half the episodes start at the box, lifting (as DeepMimic's
+/// reference state initialisation starts episodes inside the hard part of a motion).
 ///
 /// Terminations: a fall (a body other than the feet and hands on the floor, the pelvis or the
 /// head too low for the phase), a kick (the box sliding faster than 1 m/s while no hand should
 /// hold it), a drop (the box back on the floor during the carry phase) and losing the box (its
-/// centre more than 1.2 m from the pelvis while held). Success: the box at rest on the floor
-/// within 0.2 m of the destination after the put-down, the human standing.
+/// centre more than 1.2 m from the pelvis while held) and stalling (still approaching after 20 s:
+/// without it a policy learns to stop short of the box and never lift). Success: the box at rest on
+/// the floor within 0.2 m of the destination after the put-down, the human standing.
 
 #include <memory>
 #include <vector>
@@ -32,7 +34,7 @@ struct CarryRewardTerms {
 };
 
 /// Why a carry episode ended early (or kNone).
-enum class CarryFailure { kNone, kFall, kKick, kDrop, kLost, kNonFinite };
+enum class CarryFailure { kNone, kFall, kKick, kDrop, kLost, kStalled, kNonFinite };
 const char* CarryFailureName(CarryFailure f);
 
 class CarryTask : public VecTask {

@@ -58,6 +58,27 @@ TEST(CarryTask, KeyframesReachTheHeldPointsForEverySize) {
   }
 }
 
+// half the episodes start at the box in the lift, with keyframes that reach the held points;
+// the others start walking toward it
+TEST(CarryTask, SomeEpisodesStartLiftingAtTheBox) {
+  auto t = CarryTask::Create(1);
+  ASSERT_TRUE(t.ok()) << t.status();
+  std::vector<float> obs((*t)->obs_dim());
+  int lifting = 0, approaching = 0;
+  for (uint64_t seed = 0; seed < 40; ++seed) {
+    (*t)->Reset(0, seed, obs.data());
+    if ((*t)->state(0).phase == CarryPhase::kLift) {
+      ++lifting;
+      EXPECT_LT((*t)->state(0).poses.ik_error_m, 0.03) << seed;
+    } else {
+      EXPECT_EQ((*t)->state(0).phase, CarryPhase::kApproach);
+      ++approaching;
+    }
+  }
+  EXPECT_GT(lifting, 10);
+  EXPECT_GT(approaching, 10);
+}
+
 TEST(CarryTask, TheStandPointFacesTheNearFace) {
   control::CarryParams p;
   control::CarryBox box;

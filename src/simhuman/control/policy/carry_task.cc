@@ -373,6 +373,16 @@ void BeginCarry(const CarryParams& p, const CarryIndex& ix, const mjData* d, con
   SetWalkTarget(s, stand + p.approach_lead_m * dir, FaceYaw(*s));
 }
 
+void StartLift(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
+               const CarryIndex& ix, const CarryBox& box, CarryState* s) {
+  Eigen::Vector3d pos;
+  double yaw;
+  PelvisPose(d, ix.walk, &pos, &yaw);
+  Enter(s, CarryPhase::kLift);
+  SetWalkTarget(s, pos.head<2>(), yaw);
+  s->poses = SolveCarryPoses(p, m, scratch, ix, MakeLiftGeometry(p, d, ix, *s, box));
+}
+
 void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
                  const CarryIndex& ix, const CarryBox& box, CarryState* s) {
   s->phase_time_s += kWalkPolicyDt;
@@ -381,11 +391,7 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
   PelvisPose(d, ix.walk, &pos, &yaw);
   switch (s->phase) {
     case CarryPhase::kApproach:
-      if (Arrived(p, d, ix, *s)) {
-        Enter(s, CarryPhase::kLift);
-        SetWalkTarget(s, pos.head<2>(), yaw);
-        s->poses = SolveCarryPoses(p, m, scratch, ix, MakeLiftGeometry(p, d, ix, *s, box));
-      }
+      if (Arrived(p, d, ix, *s)) StartLift(p, m, scratch, d, ix, box, s);
       break;
     case CarryPhase::kLift:
       if (s->phase_time_s >= kLiftSeconds) {

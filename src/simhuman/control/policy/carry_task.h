@@ -129,6 +129,11 @@ void ChooseStandFace(const CarryParams& p, const CarryBox& box, const Eigen::Vec
 void BeginCarry(const CarryParams& p, const CarryIndex& ix, const mjData* d, const CarryBox& box,
                 const Eigen::Vector2d& dest_xy, CarryState* s);
 
+/// Enters the lift from where the human stands (what arriving at the stand point does): solves
+/// the keyframes on `scratch`. Also starts episodes at the box in training.
+void StartLift(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
+               const CarryIndex& ix, const CarryBox& box, CarryState* s);
+
 /// Advances phases and the walking command by one policy step (call before CarryObservation).
 /// Entering the lift solves its keyframes (SolveCarryPoses) on `scratch`.
 void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
