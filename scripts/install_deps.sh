@@ -11,6 +11,7 @@ pkgs=(
   libcpp-httplib-dev
   libtorch-dev libopenblas0-openmp
   clang libfuzzer-14-dev libclang-rt-14-dev
+  pybind11-dev python3-dev python3-numpy python3-torch python3-matplotlib
 )
 missing=()
 for p in "${pkgs[@]}"; do

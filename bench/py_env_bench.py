@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""Env steps/s of the walk task from Python vs the same loop in C++, in one run.
+
+    PYTHONPATH=build/python /usr/bin/python3 bench/py_env_bench.py [--envs 128] [--threads 2]
+        [--seconds 10] [--rounds 3]
+
+The C++ loop is build/simhuman_vec_env_bench (VecEnv::Step with uniform random actions in the
+action bounds); the Python loop is `envs.step(envs.action_space.sample())` on
+simhuman.vector.make("walk"). The two alternate for --rounds rounds so both see the same machine
+load; the medians and their ratio are printed as JSON (docs/BENCHMARKS.md).
+"""
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import time
+
+import simhuman
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+
+
+def python_loop(envs, threads, seconds, solver):
+    e = simhuman.vector.make("walk", num_envs=envs, threads=threads, seed=1,
+                             physics_solver=solver)
+    e.reset(seed=1)
+    e.action_space.seed(7)
+    for _ in range(5):  # warm-up, as the C++ loop
+        e.step(e.action_space.sample())
+    steps, t0 = 0, time.perf_counter()
+    elapsed = 0.0
+    while elapsed < seconds:
+        e.step(e.action_space.sample())
+        steps += 1
+        elapsed = time.perf_counter() - t0
+    e.close()
+    return steps * envs / elapsed
+
+
+def cpp_loop(binary, envs, threads, seconds, solver):
+    out = subprocess.run([binary, str(envs), str(threads), str(seconds), solver], check=True,
+                         capture_output=True, text=True).stdout
+    return json.loads(out)["env_steps_per_s"]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--envs", type=int, default=128)
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--seconds", type=float, default=10.0)
+    ap.add_argument("--rounds", type=int, default=3)
+    ap.add_argument("--physics-solver", default="newton")
+    ap.add_argument("--binary", default=os.path.join(ROOT, "build", "simhuman_vec_env_bench"))
+    args = ap.parse_args()
+    cpp, py = [], []
+    for _ in range(args.rounds):
+        cpp.append(cpp_loop(args.binary, args.envs, args.threads, args.seconds,
+                            args.physics_solver))
+        py.append(python_loop(args.envs, args.threads, args.seconds, args.physics_solver))
+    c, p = statistics.median(cpp), statistics.median(py)
+    print(json.dumps({"envs": args.envs, "threads": args.threads, "seconds": args.seconds,
+                      "physics_solver": args.physics_solver, "cpp_env_steps_per_s": cpp,
+                      "python_env_steps_per_s": py, "cpp_median": round(c, 1),
+                      "python_median": round(p, 1), "python_over_cpp": round(p / c, 4)}))
+
+
+if __name__ == "__main__":
+    main()
