@@ -83,10 +83,17 @@ std::shared_ptr<Episode> Run(const std::shared_ptr<Plan>& plan, uint64_t seed,
   control::RunOptions options;
   options.settle_s = settle_s;
   options.record = true;
+  // an exception of the callback is kept and raised after the episode (not through the runner)
+  std::unique_ptr<py::error_already_set> callback_error;
   if (!progress.is_none()) {
-    options.progress = [&progress](const control::ProgressEvent& e) {
+    options.progress = [&progress, &callback_error](const control::ProgressEvent& e) {
       py::gil_scoped_acquire gil;
-      progress(ProgressDict(e));
+      if (callback_error) return;
+      try {
+        progress(ProgressDict(e));
+      } catch (py::error_already_set& err) {
+        callback_error = std::make_unique<py::error_already_set>(std::move(err));
+      }
     };
   }
   core::StatusOr<control::EpisodeResult> result = absl::UnknownError("not run");
@@ -95,6 +102,7 @@ std::shared_ptr<Episode> Run(const std::shared_ptr<Plan>& plan, uint64_t seed,
     result = eval::RunWithWalkPolicy(*ep->world, plan->chain, controllers, policy, options,
                                      &ep->trajectory);
   }
+  if (callback_error) throw std::move(*callback_error);
   ep->result = Unwrap(std::move(result));
   // the keys of `simhuman run`'s result.json
   nlohmann::ordered_json& j = ep->record;

@@ -43,11 +43,12 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--horizon", type=int, default=32, help="steps per env per iteration")
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--torch-threads", type=int, default=2)
     ap.add_argument("--save", default="", help="write the policy's state_dict here")
     args = ap.parse_args()
 
     torch.manual_seed(args.seed)
-    torch.set_num_threads(args.threads)
+    torch.set_num_threads(args.torch_threads)
     envs = simhuman.vector.make(args.task, num_envs=args.envs, threads=args.threads,
                                 seed=args.seed, physics_solver="pgs" if args.task == "walk"
                                 else "newton")

@@ -16,7 +16,7 @@ from simhuman.policy import load_policy
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..", ".."))
 
 
-def drive(act, envs=32, seconds=20.0, seed=1):
+def drive(act, envs=32, seconds=25.0, seed=1):
     """Returns (episodes finished, successes, falls, mean return of finished episodes)."""
     e = simhuman.vector.make("walk", num_envs=envs, threads=2, seed=seed)
     obs, _ = e.reset(seed=seed)
@@ -36,7 +36,7 @@ def drive(act, envs=32, seconds=20.0, seed=1):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--policy", default=os.path.join(ROOT, "assets", "policies", "walk.pt"))
-    ap.add_argument("--seconds", type=float, default=20.0)
+    ap.add_argument("--seconds", type=float, default=25.0)
     args = ap.parse_args()
     policy = load_policy(args.policy)
     rng = np.random.default_rng(0)

@@ -15,7 +15,9 @@ Episodes reset automatically in the step that ends them (Gymnasium's "same-step"
 Gymnasium 0.29's name ``"final_observation"``) the last observation of the episode that ended,
 valid where ``info["_final_obs"]`` is True. ``info["episode"]`` holds the finished episodes'
 return ``r``, length ``l`` and ``success``, valid where ``info["_episode"]`` is True (the format
-of Gymnasium's RecordEpisodeStatistics). Steps where no episode ends return ``info == {}``.
+of Gymnasium's RecordEpisodeStatistics), and ``info["final_info"]`` the same per env as dicts
+(None where no episode ended; Gymnasium 0.29's form, as CleanRL reads it). Steps where no
+episode ends return ``info == {}``.
 """
 
 import numpy as np
@@ -122,8 +124,14 @@ class VectorEnv:
             length = np.zeros(self.num_envs, dtype=np.int64)
             success = np.zeros(self.num_envs, dtype=bool)
             r[ended], length[ended], success[ended] = stats["r"], stats["l"], stats["success"]
+            # Gymnasium 0.29's per-env form, as CleanRL reads it: None where no episode ended
+            final_info = np.full(self.num_envs, None, dtype=object)
+            for i in np.flatnonzero(ended):
+                final_info[i] = {"episode": {"r": np.array([r[i]]), "l": np.array([length[i]])},
+                                 "success": bool(success[i])}
             info = {
                 "final_obs": final_obs, "_final_obs": ended,
+                "final_info": final_info, "_final_info": ended,
                 "final_observation": final_obs, "_final_observation": ended,
                 "episode": {"r": r, "l": length, "success": success,
                             "_r": ended, "_l": ended, "_success": ended},

@@ -15,7 +15,7 @@ def rollout(envs, num_steps=64, seed=42):
     act_buf = np.zeros((num_steps, envs.num_envs) + act_shape, dtype=np.float32)
     rew_buf = np.zeros((num_steps, envs.num_envs), dtype=np.float32)
     done_buf = np.zeros((num_steps, envs.num_envs), dtype=np.float32)
-    episode_returns = []
+    episode_returns, final_info_returns = [], []
 
     envs.action_space.seed(seed)
     next_obs, infos = envs.reset(seed=seed)
@@ -33,5 +33,11 @@ def rollout(envs, num_steps=64, seed=42):
         if "episode" in infos:
             for idx in np.flatnonzero(infos["_episode"]):
                 episode_returns.append(float(infos["episode"]["r"][idx]))
+        if "final_info" in infos:  # Gymnasium 0.29 / CleanRL style
+            for info in infos["final_info"]:
+                if info and "episode" in info:
+                    assert info["episode"]["r"].shape == (1,)
+                    final_info_returns.append(float(info["episode"]["r"][0]))
     envs.close()
+    assert final_info_returns == episode_returns
     return episode_returns, obs_buf, act_buf, rew_buf, done_buf

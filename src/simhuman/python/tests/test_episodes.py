@@ -65,6 +65,13 @@ class SitEpisodeTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "frame index out of range"):
             self.episode.render_frames([10**6], width=64, height=48)
 
+    def test_progress_callback_errors_reach_the_caller(self):
+        def fail(event):
+            raise KeyError("from the callback")
+
+        with self.assertRaisesRegex(KeyError, "from the callback"):
+            simhuman.run(self.plan, settle_s=0.0, walk_policy=None, progress=fail)
+
     def test_bad_run_arguments(self):
         with self.assertRaisesRegex(simhuman.BadInputError, "preset"):
             simhuman.run(self.plan, preset="turbo")

@@ -1,9 +1,12 @@
 """Scenes and plans from Python: the CLI's errors cross as exceptions with the same messages."""
 
 import json
+import os
 import unittest
 
 import simhuman
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..", ".."))
 
 
 class SceneTest(unittest.TestCase):
@@ -15,6 +18,11 @@ class SceneTest(unittest.TestCase):
         self.assertEqual(len(scene.humans), 1)
         chair = scene.object_ids[0]
         self.assertIn("seat surface", scene.parts(chair))
+
+    def test_unihsi_sceneplan_file(self):
+        path = os.path.join(ROOT, "assets", "scenes", "unihsi_table7_plan.json")
+        scene = simhuman.load_scene(path)
+        self.assertEqual(scene.object_ids, ["chair000", "table001", "laptop002", "bed003"])
 
     def test_unknown_scene_lists_the_names(self):
         with self.assertRaises(simhuman.NotFoundError) as cm:
