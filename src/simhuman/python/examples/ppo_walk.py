@@ -43,7 +43,9 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--horizon", type=int, default=32, help="steps per env per iteration")
     ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--torch-threads", type=int, default=2)
+    ap.add_argument("--torch-threads", type=int, default=1,
+                    help="1: OpenMP threads that spin between ops would take the cores from the "
+                    "env's C++ workers (7x slower with 2 on a loaded 2-core machine)")
     ap.add_argument("--save", default="", help="write the policy's state_dict here")
     args = ap.parse_args()
 
