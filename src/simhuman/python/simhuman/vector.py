@@ -20,6 +20,8 @@ of Gymnasium's RecordEpisodeStatistics), and ``info["final_info"]`` the same per
 episode ends return ``info == {}``.
 """
 
+import operator
+
 import numpy as np
 
 from simhuman import _native
@@ -100,10 +102,10 @@ class VectorEnv:
         if options:
             raise ValueError(f"reset: options are not supported, got {sorted(options)}")
         if seed is not None:
-            self._np_random = np.random.default_rng(seed)
-            self.action_space.seed(seed)
-            self.observation_space.seed(seed)
+            seed = operator.index(seed)  # Python or numpy integers
         self._env.reset(seed)
+        if seed is not None:
+            self._np_random = np.random.default_rng(seed)
         return self._out("obs"), {}
 
     def step(self, actions):

@@ -100,6 +100,18 @@ class WalkVectorEnvTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "physics_solver 'cg' is unknown; valid: newton"):
             vector.make("walk", num_envs=1, physics_solver="cg")
 
+    def test_seeds(self):
+        a, _ = self.envs.reset(seed=np.int64(5))
+        a = a.copy()
+        b, _ = self.envs.reset(seed=5)
+        np.testing.assert_array_equal(a, b)
+        c, _ = self.envs.reset()  # continues: new episodes
+        self.assertFalse(np.array_equal(a, c))
+        with self.assertRaisesRegex(ValueError, r"seed -1 is invalid; valid: an integer in"):
+            self.envs.reset(seed=-1)
+        with self.assertRaises(TypeError):
+            self.envs.reset(seed=1.5)
+
     def test_closed_env_raises(self):
         self.envs.close()
         with self.assertRaisesRegex(RuntimeError, "closed"):
