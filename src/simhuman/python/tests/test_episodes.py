@@ -1,5 +1,8 @@
 """An episode from Python: "sit on the chair" in sit_demo, its arrays, files and frames."""
 
+import contextlib
+import io
+import json
 import os
 import tempfile
 import unittest
@@ -40,8 +43,8 @@ class SitEpisodeTest(unittest.TestCase):
         pelvis_z = ep.body_point("pelvis")[:, 2]
         np.testing.assert_array_equal(pelvis_z, pts[:, 0, simhuman.body_point_names().index(
             "pelvis"), 2])
-        if ep.success:
-            self.assertLess(pelvis_z[-1], pelvis_z[0] - 0.2)
+        self.assertTrue(ep.success)
+        self.assertLess(pelvis_z[-1], pelvis_z[0] - 0.2)
         with self.assertRaisesRegex(simhuman.BadInputError, "body point 'tail' is unknown; valid"):
             ep.body_point("tail")
 
@@ -53,6 +56,21 @@ class SitEpisodeTest(unittest.TestCase):
             with open(os.path.join(d, "trajectory.csv")) as f:
                 header = f.readline().strip().split(",")
             self.assertEqual(header[2:], self.episode.qpos_names)
+
+    def test_same_episode_as_the_command_line(self):
+        with tempfile.TemporaryDirectory() as d:
+            with contextlib.redirect_stdout(io.StringIO()):
+                code = simhuman.cli(["run", "--scene", "sit_demo", "--command", "sit on the chair",
+                                     "--seed", "1", "--settle", "0", "--no-walk", "--out", d])
+            self.assertEqual(code, 0)
+            with open(os.path.join(d, "result.json")) as f:
+                cli = json.load(f)
+            qpos = np.loadtxt(os.path.join(d, "trajectory.csv"), delimiter=",", skiprows=1)
+        mine = self.episode.result
+        for key in ["success", "steps_completed", "contact_error_m", "end_reason", "sim_time_s",
+                    "step_completion_s", "config"]:
+            self.assertEqual(mine[key], cli[key], key)
+        np.testing.assert_allclose(self.episode.qpos, qpos[:, 2:], atol=1e-6)
 
     def test_render_frames(self):
         try:
