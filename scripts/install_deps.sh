@@ -12,6 +12,7 @@ pkgs=(
   libtorch-dev libopenblas0-openmp
   libopenmpi-dev openmpi-bin
   clang libfuzzer-14-dev libclang-rt-14-dev
+  pybind11-dev python3-dev python3-numpy python3-torch python3-matplotlib
 )
 missing=()
 for p in "${pkgs[@]}"; do

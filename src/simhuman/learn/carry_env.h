@@ -48,6 +48,7 @@ class CarryTask : public VecTask {
   int act_dim() const override { return control::kCarryActDim; }
   void Reset(int i, uint64_t seed, float* obs) override;
   void Step(int i, const float* action, float* obs, StepInfo* info) override;
+  double action_limit() const override { return control::kWalkActionClip; }
   double curriculum() const override { return curriculum_; }
   void set_curriculum(double c) override { curriculum_ = c; }
 

@@ -496,4 +496,9 @@ core::StatusOr<std::pair<int64_t, double>> ReadCheckpointProgress(const std::str
   }
 }
 
+core::StatusOr<std::unique_ptr<VecTask>> MakeVecTask(const std::string& name, int num_envs,
+                                                     const std::string& physics_solver) {
+  return MakeTask(name, num_envs, physics_solver);
+}
+
 }  // namespace simhuman::learn

@@ -18,6 +18,7 @@ class ReachTask : public VecTask {
   int num_envs() const override { return static_cast<int>(envs_.size()); }
   int obs_dim() const override { return 6; }
   int act_dim() const override { return 2; }
+  double action_limit() const override { return 1.0; }  ///< forces are clipped to +-1
   void Reset(int i, uint64_t seed, float* obs) override;
   void Step(int i, const float* action, float* obs, StepInfo* info) override;
   static constexpr int kMaxSteps = 100;

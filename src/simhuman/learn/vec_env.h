@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -50,6 +51,9 @@ class VecTask {
   /// the log-probabilities and the entropy, so their noise neither moves the ratio nor gets a
   /// gradient. Default: all used.
   virtual bool action_used(int j) const { return j >= 0 && j < act_dim(); }
+  /// Actions are clipped by the task to [-action_limit(), action_limit()] (infinity: never
+  /// clipped); the bounds of the action space the Python bindings describe.
+  virtual double action_limit() const { return std::numeric_limits<double>::infinity(); }
 
   // AMP (learn/amp.h). Tasks without AMP features keep these defaults: amp_feature_dim() 0
   // and AmpClipFeatures Unimplemented, which PpoTrainer reports when amp_clips is set.
@@ -106,6 +110,9 @@ class VecEnv {
 
   /// Resets every env (episode counters continue from `episode_base`, e.g. after a resume).
   void ResetAll(uint64_t episode_base = 0);
+  /// Replaces the run seed episodes are derived from (takes effect at the next reset).
+  void set_seed(uint64_t seed) { seed_ = seed; }
+  uint64_t seed() const { return seed_; }
   /// Steps every env with actions [E * act_dim]. Afterwards obs() holds the next observations
   /// (of the new episode where one ended), terminal_obs() the last observation of episodes
   /// that ended (valid where terminated or truncated), and finished() the episodes that ended

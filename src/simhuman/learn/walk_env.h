@@ -55,6 +55,7 @@ class WalkTask : public VecTask {
   int act_dim() const override { return control::kWalkActDim; }
   /// The arm entries are unused: the arms follow the reference (control::WalkTargets).
   bool action_used(int j) const override { return control::WalkActionUsed(j); }
+  double action_limit() const override { return control::kWalkActionClip; }
   void Reset(int i, uint64_t seed, float* obs) override;
   void Step(int i, const float* action, float* obs, StepInfo* info) override;
   double curriculum() const override { return curriculum_; }
