@@ -17,6 +17,7 @@
 #include "simhuman/app/common.h"
 #include "simhuman/app/eval_command.h"
 #include "simhuman/app/train_command.h"
+#include "simhuman/core/communicator.h"
 #include "simhuman/core/json_io.h"
 #include "simhuman/python/bindings.h"
 
@@ -92,7 +93,10 @@ py::object ReadJson(const std::filesystem::path& path, bool lines) {
 
 py::dict Eval(const app::EvalFlags& flags, bool verbose) {
   RunCommand(
-      [&](std::ostream& out, std::ostream& err) { return app::EvalCommand(flags, out, err); },
+      [&](std::ostream& out, std::ostream& err) {
+        core::SerialCommunicator one;  // Python runs one process
+        return app::EvalCommand(flags, out, err, one);
+      },
       verbose);
   const std::filesystem::path dir(flags.out.empty() ? "out/eval_" + flags.suite : flags.out);
   py::dict r;
@@ -154,8 +158,12 @@ void BindTrain(py::module_& m) {
         f.init_from = init_from;
         f.amp_clips = amp_clips;
         f.quiet = quiet;
-        RunCommand([&](std::ostream& o, std::ostream& e) { return app::TrainCommand(f, o, e); },
-                   true);
+        RunCommand(
+            [&](std::ostream& o, std::ostream& e) {
+              core::SerialCommunicator one;
+              return app::TrainCommand(f, o, e, one);
+            },
+            true);
         const std::filesystem::path dir(resume.empty() ? out : resume);
         py::dict r;
         r["run_dir"] = dir.string();
