@@ -148,7 +148,9 @@ core::CarryInfo TableCarry(const core::CatalogObject& o) {
 
 // two carriers at the sofa's ends (its long axis is y), hands on the arms' outer faces
 core::CarryInfo SofaCarry(const core::CatalogObject& o) {
-  const auto [lo, hi] = o.LocalBounds();
+  // named copies, not a structured binding: C++17 lambdas cannot capture those (clang refuses)
+  const auto bounds = o.LocalBounds();
+  const Vector3d lo = bounds.first, hi = bounds.second;
   auto end_hold = [&](const std::string& arm, double sign) {
     const auto [alo, ahi] = PartBounds(o, arm);
     const double cx = 0.5 * (alo.x() + ahi.x());
