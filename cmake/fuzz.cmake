@@ -8,7 +8,7 @@ message(STATUS "simhuman fuzz deps: mujoco ${mujoco_VERSION}")
 simhuman_module(world DEPS simhuman_core mujoco::mujoco)
 set(parsers ${CMAKE_SOURCE_DIR}/src/simhuman)
 add_library(simhuman_fuzz_parsers STATIC
-            ${parsers}/learn/motion_clip.cc ${parsers}/learn/bvh.cc ${parsers}/learn/ppo_config.cc
+            ${parsers}/learn/motion_clip.cc ${parsers}/learn/bvh.cc ${parsers}/learn/ppo_config.cc ${parsers}/learn/task_names.cc
             ${parsers}/control/mpc/mpc_config.cc)
 target_link_libraries(simhuman_fuzz_parsers PUBLIC simhuman_world)
 file(GLOB fuzz_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tests/fuzz/*_fuzz.cc)

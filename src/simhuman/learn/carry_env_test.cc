@@ -12,11 +12,23 @@
 #include "simhuman/control/policy/policy_net.h"
 #include "simhuman/core/testing_temp.h"
 #include "simhuman/learn/ppo.h"
+#include "simhuman/learn/tasks.h"
 
 namespace simhuman::learn {
 namespace {
 
 using control::CarryPhase;
+
+// the env-free names used by config parsing agree with the registry
+TEST(Tasks, NamesAndSolverChoiceAgreeWithTheRegistry) {
+  std::vector<std::string> names;
+  for (const TaskDef& t : Tasks()) {
+    names.push_back(t.name);
+    EXPECT_EQ(TaskHasSolverChoice(t.name), t.solver_choice) << t.name;
+  }
+  EXPECT_EQ(TaskNames(), names);
+  EXPECT_FALSE(FindTask("fly").ok());
+}
 
 TEST(CarryTask, ObservationIsFiniteAndTheLayoutFull) {
   auto t = CarryTask::Create(2);

@@ -86,8 +86,7 @@ const core::FieldTable<PpoConfig>& Table() {
 
 absl::Status PpoConfig::Validate() const {
   SH_RETURN_IF_ERROR(Table().Validate(*this));
-  const core::StatusOr<const TaskDef*> def = FindTask(task);
-  if (physics_solver == "pgs" && def.ok() && !(*def)->solver_choice) {
+  if (physics_solver == "pgs" && !TaskHasSolverChoice(task)) {
     return absl::InvalidArgumentError("training config: physics_solver '" + physics_solver +
                                       "' applies to the walk task only; task is '" + task + "'");
   }

@@ -32,12 +32,6 @@ const std::vector<TaskDef>& Tasks() {
   return tasks;
 }
 
-std::vector<std::string> TaskNames() {
-  std::vector<std::string> names;
-  for (const TaskDef& t : Tasks()) names.push_back(t.name);
-  return names;
-}
-
 core::StatusOr<const TaskDef*> FindTask(std::string_view name) {
   std::string valid;
   for (const TaskDef& t : Tasks()) {

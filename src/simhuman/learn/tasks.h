@@ -29,6 +29,14 @@ struct TaskDef {
 const std::vector<TaskDef>& Tasks();
 /// The task named `name`; an error lists the valid names.
 core::StatusOr<const TaskDef*> FindTask(std::string_view name);
+
+// Names and solver choice without the environments (learn/task_names.cc), for config parsing
+// in builds that do not link the environments (the fuzz targets); a test checks they agree
+// with Tasks().
+
+/// The registry's task names, in its order.
 std::vector<std::string> TaskNames();
+/// Whether `name` accepts the "pgs" solver (TaskDef::solver_choice).
+bool TaskHasSolverChoice(std::string_view name);
 
 }  // namespace simhuman::learn

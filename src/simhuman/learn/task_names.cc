@@ -1,0 +1,9 @@
+#include "simhuman/learn/tasks.h"
+
+namespace simhuman::learn {
+
+std::vector<std::string> TaskNames() { return {"walk", "reach", "carry"}; }
+
+bool TaskHasSolverChoice(std::string_view name) { return name == "walk"; }
+
+}  // namespace simhuman::learn
