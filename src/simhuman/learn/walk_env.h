@@ -97,8 +97,6 @@ class WalkTask : public VecTask {
   double curriculum_ = 0;
 };
 
-/// Height (m, world z) of the lowest corner of the box geoms `geoms` (the feet) in `d`'s
-/// current kinematics: subtract it from the root height to stand them on the floor.
-double LowestBoxCornerZ(const mjModel* m, const mjData* d, const std::vector<int>& geoms);
+using control::LowestBoxCornerZ;  // (control/policy/walk_task.h)
 
 }  // namespace simhuman::learn

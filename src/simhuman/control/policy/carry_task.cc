@@ -65,18 +65,9 @@ void PoseKinematics(const mjModel* m, mjData* d, const CarryIndex& ix, const Pla
 // lowest foot box corner and the feet's mean x (after PoseKinematics)
 void FeetOnFloor(const mjModel* m, const mjData* d, const CarryIndex& ix, double* lowest,
                  double* mean_x) {
-  *lowest = 1e9;
-  *mean_x = 0;
-  for (int g : {ix.walk.left_foot_geom, ix.walk.right_foot_geom}) {
-    const mjtNum* R = d->geom_xmat + 9 * g;
-    const mjtNum* sz = m->geom_size + 3 * g;
-    for (int c = 0; c < 8; ++c) {
-      double z = d->geom_xpos[3 * g + 2];
-      for (int k = 0; k < 3; ++k) z += ((c >> k) & 1 ? 1 : -1) * sz[k] * R[6 + k];
-      *lowest = std::min(*lowest, z);
-    }
-    *mean_x += 0.5 * d->geom_xpos[3 * g];
-  }
+  const int l = ix.walk.left_foot_geom, r = ix.walk.right_foot_geom;
+  *lowest = LowestBoxCornerZ(m, d, {l, r});
+  *mean_x = 0.5 * (d->geom_xpos[3 * l] + d->geom_xpos[3 * r]);
 }
 
 // legs and trunk of a squat of depth alpha in [0, 1] (arms from `base`; ankles set later)

@@ -272,4 +272,18 @@ void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s, c
   }
 }
 
+double LowestBoxCornerZ(const mjModel* m, const mjData* d, const std::vector<int>& geoms) {
+  double lowest = 1e9;
+  for (int g : geoms) {
+    const mjtNum* R = d->geom_xmat + 9 * g;
+    const mjtNum* sz = m->geom_size + 3 * g;
+    for (int c = 0; c < 8; ++c) {
+      double z = d->geom_xpos[3 * g + 2];
+      for (int k = 0; k < 3; ++k) z += ((c >> k) & 1 ? 1 : -1) * sz[k] * R[6 + k];
+      lowest = std::min(lowest, z);
+    }
+  }
+  return lowest;
+}
+
 }  // namespace simhuman::control

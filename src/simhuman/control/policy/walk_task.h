@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <vector>
 
 #include "simhuman/world/humanoid.h"
 #include "simhuman/world/sim_world.h"
@@ -116,6 +117,10 @@ void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, 
 /// steered them held an arm out for balance, docs/BENCHMARKS.md, session 6).
 void WalkTargets(const WalkParams& p, const WalkIndex& ix, const WalkState& s, const float* action,
                  double* ctrl28);
+
+/// Height (m, world z) of the lowest corner of the box geoms `geoms` (the feet) in `d`'s
+/// current kinematics: subtract it from the root height to stand them on the floor.
+double LowestBoxCornerZ(const mjModel* m, const mjData* d, const std::vector<int>& geoms);
 
 /// Whether WalkTargets uses action entry `j` (false for the 8 arm entries it ignores).
 bool WalkActionUsed(int j);
