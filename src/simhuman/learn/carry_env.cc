@@ -18,6 +18,7 @@ constexpr double kDeg = M_PI / 180.0;
 constexpr double kSuccessRadius = 0.2;
 constexpr int kSuccessHold = 30;  // policy steps at rest after the put-down (1 s)
 constexpr double kStartAtBoxFraction = 0.5;
+constexpr double kStartInSquatFraction = 0.6;  // of the episodes that start at the box
 constexpr double kMaxApproachSeconds = 20;
 
 Eigen::Vector3d Vec(const mjtNum* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
@@ -190,6 +191,11 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   if (at_box) {
     control::CarryBox box = control::ReadCarryBox(e.m, d, box_geom_);
     control::StartLift(params_, e.m, e.scratch, d, ix_, box, &e.s);
+    // and some of them part-way down into the squat (reference-state initialisation)
+    if (e.rng.Uniform() < kStartInSquatFraction) {
+      control::PoseInLift(e.m, d, ix_, e.rng.Uniform(0.0, control::LiftRiseStartSeconds()),
+                          &e.s);
+    }
     control::UpdateWalkCommand(control::WalkParams(), d, ix_.walk, &e.s.walk);
     control::CarryObservation(d, ix_, e.s, box, obs);
   }

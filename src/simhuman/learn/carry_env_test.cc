@@ -91,6 +91,29 @@ TEST(CarryTask, SomeEpisodesStartLiftingAtTheBox) {
   EXPECT_GT(approaching, 10);
 }
 
+// reference-state starts inside the lift: lower than standing, feet on the floor, at rest
+TEST(CarryTask, SomeLiftsStartPartWayIntoTheSquat) {
+  auto t = CarryTask::Create(1);
+  ASSERT_TRUE(t.ok()) << t.status();
+  std::vector<float> obs((*t)->obs_dim());
+  const world::AgentIndex& a = (*t)->index().walk.agent;
+  int in_squat = 0;
+  for (uint64_t seed = 0; seed < 60; ++seed) {
+    (*t)->Reset(0, seed, obs.data());
+    const control::CarryState& s = (*t)->state(0);
+    if (s.phase != CarryPhase::kLift || s.phase_time_s < 0.6) continue;
+    ++in_squat;
+    const mjData* d = (*t)->data(0);
+    EXPECT_LT(d->xpos[3 * a.pelvis_body + 2], 0.85) << seed;
+    EXPECT_LE(s.phase_time_s, control::LiftRiseStartSeconds());
+    const double lowest = control::LowestBoxCornerZ(
+        (*t)->model(0), d, {(*t)->index().walk.left_foot_geom, (*t)->index().walk.right_foot_geom});
+    EXPECT_NEAR(lowest, 0.001, 1e-3) << seed;
+    for (float v : obs) ASSERT_TRUE(std::isfinite(v));
+  }
+  EXPECT_GT(in_squat, 5);
+}
+
 TEST(CarryTask, TheStandPointFacesTheNearFace) {
   control::CarryParams p;
   control::CarryBox box;

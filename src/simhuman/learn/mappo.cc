@@ -251,6 +251,7 @@ core::StatusOr<IterationStats> MappoTrainer::Iterate() {
   st.approx_kl = up.approx_kl;
   st.clip_frac = up.clip_frac;
   st.skipped_minibatches = up.skipped;
+  st.stepped_minibatches = up.minibatches;
   st.lr = lr;
   st.action_std = m.net.ActionStd();
   st.curriculum = 1.0;

@@ -52,7 +52,8 @@ nlohmann::json IterationStats::ToJson() const {
                    {"clip_frac", clip_frac},     {"lr", lr},
                    {"action_std", action_std},   {"curriculum", curriculum},
                    {"steps_per_s", steps_per_s}, {"collect_s", collect_s},
-                   {"update_s", update_s},       {"skipped", skipped_minibatches}};
+                   {"update_s", update_s},       {"skipped", skipped_minibatches},
+                   {"minibatches", stepped_minibatches}};
   if (ranks > 1) {
     j["ranks"] = ranks;
     j["allreduce_calls"] = allreduce_calls;
@@ -189,6 +190,7 @@ struct PpoTrainer::Impl {
     o.value_coef = cfg.value_coef;
     o.entropy_coef = cfg.entropy_coef;
     o.max_grad_norm = cfg.max_grad_norm;
+    o.target_kl = cfg.target_kl;
     // a run started from a given policy first fits its fresh value network
     o.critic_only = !cfg.init_from.empty() && progress.iteration < cfg.critic_warmup_iters;
     return o;
@@ -448,6 +450,7 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   st.approx_kl = up.approx_kl;
   st.clip_frac = up.clip_frac;
   st.skipped_minibatches = up.skipped;
+  st.stepped_minibatches = up.minibatches;
   st.lr = lr;
   st.collect_s = collect;
   st.update_s = update;

@@ -53,6 +53,7 @@ struct IterationStats {
   double lr = 0, action_std = 0, curriculum = 0;
   double steps_per_s = 0, collect_s = 0, update_s = 0;
   int skipped_minibatches = 0;
+  int stepped_minibatches = 0;  ///< minibatches that stepped (fewer after a target_kl stop)
   bool checkpointed = false;
   // AMP (logged only when AMP is on): discriminator loss and gradient penalty, accuracy and
   // mean D on expert and agent pairs (means over the iteration's discriminator updates), and

@@ -48,6 +48,9 @@ const core::FieldTable<PpoConfig>& Table() {
        F("value_coef", &PpoConfig::value_coef, "value loss weight"),
        F("entropy_coef", &PpoConfig::entropy_coef, "entropy bonus weight"),
        F("max_grad_norm", &PpoConfig::max_grad_norm, "gradient norm clip").In(kPositive),
+       F("target_kl", &PpoConfig::target_kl,
+         "epochs stop once a minibatch's approximate KL exceeds 1.5x this (0: off)")
+           .In(kAtLeast0),
        F("init_std", &PpoConfig::init_std, "initial action std dev").In(kPositive),
        F("hidden", &PpoConfig::hidden, "actor layer widths").MinItems(1).In(kAtLeast1),
        F("critic_hidden", &PpoConfig::critic_hidden,

@@ -40,6 +40,7 @@ struct PpoConfig {
   double value_coef = 0.5;
   double entropy_coef = 0.001;
   double max_grad_norm = 1.0;
+  double target_kl = 0;  ///< PPO epochs stop once a minibatch KL exceeds 1.5x this (0: off)
   double init_std = 0.5;
   std::vector<int> hidden = {256, 128};  ///< actor (policy) layer widths
   /// Value-network layer widths; empty: the same as `hidden`. The critic is not shipped, and a

@@ -108,6 +108,39 @@ TEST(PpoUpdate, MovesTheMeanTowardPositiveAdvantages) {
   EXPECT_GT(v, b.old_value[0].item<float>());
 }
 
+// the first minibatch steps from the rollout policy (KL 0); the second sees the step's KL
+TEST(PpoUpdate, TargetKlEndsTheEpochsEarly) {
+  for (double target : {1e-7, 1e3}) {
+    torch::manual_seed(4);
+    ActorCritic net = MakeActorCritic(3, 2, 1, {16}, {}, 0.5, 1e-2, {1.f});
+    const int64_t n = 64;
+    PpoBatch b;
+    b.obs = torch::ones({n, 3});
+    b.critic_obs = torch::ones({n, 2});
+    b.act = torch::cat({torch::ones({n / 2, 1}), -torch::ones({n / 2, 1})});
+    {
+      torch::NoGradGuard ng;
+      b.old_logp =
+          GaussianLogProb(b.act, net.actor->forward(b.obs), net.actor->log_std(), net.act_used);
+      b.old_value = net.critic->forward(b.critic_obs).squeeze(-1);
+    }
+    b.adv = torch::cat({torch::ones({n / 2}), -torch::ones({n / 2})});
+    b.ret = torch::full({n}, 3.f);
+    PpoUpdateOptions o;
+    o.epochs = 4;
+    o.target_kl = target;
+    core::Rng rng(1);
+    PpoUpdateStats st = PpoUpdate(net, b, o, rng);
+    if (target < 1) {
+      EXPECT_TRUE(st.kl_stopped);
+      EXPECT_EQ(st.minibatches, 2);
+    } else {
+      EXPECT_FALSE(st.kl_stopped);
+      EXPECT_EQ(st.minibatches, o.epochs * o.minibatches);
+    }
+  }
+}
+
 TEST(PpoUpdate, NonFiniteRolloutTrainsNothingAndTheGuardAbortsAfterSeveral) {
   torch::manual_seed(5);
   ActorCritic net = MakeActorCritic(2, 2, 1, {8}, {}, 0.5, 1e-2, {1.f});

@@ -14,6 +14,18 @@ namespace {
 
 constexpr double kLog2Pi = 1.8378770664093453;
 
+// whether the epochs stop on this minibatch's KL; data-parallel ranks decide on the mean KL
+// so that they run the same number of allreduces
+bool KlTooLarge(double mb_kl, double target_kl, core::Communicator* comm) {
+  if (comm && comm->size() > 1) {
+    std::vector<double> v{mb_kl};
+    absl::Status sum = SumCounts(&v, *comm);
+    SH_CHECK(sum.ok(), std::string(sum.message()).c_str());
+    mb_kl = v[0] / comm->size();
+  }
+  return mb_kl > 1.5 * target_kl;
+}
+
 }  // namespace
 
 std::vector<torch::Tensor> ActorCritic::Params() const {
@@ -134,10 +146,17 @@ PpoUpdateStats PpoUpdate(ActorCritic& net, const PpoBatch& batch, const PpoUpdat
       vl += vloss.item<double>();
       ent += entropy.item<double>();
       torch::Tensor log_ratio = logp.detach() - olp;
-      kl += ((torch::exp(log_ratio) - 1) - log_ratio).mean().item<double>();
+      const double mb_kl = ((torch::exp(log_ratio) - 1) - log_ratio).mean().item<double>();
+      kl += mb_kl;
       cf += (torch::abs(ratio.detach() - 1) > clip).to(torch::kFloat32).mean().item<double>();
       ++st.minibatches;
+      if (options.target_kl > 0 && !options.critic_only &&
+          KlTooLarge(mb_kl, options.target_kl, options.comm)) {
+        st.kl_stopped = true;
+        break;
+      }
     }
+    if (st.kl_stopped) break;
   }
   if (st.minibatches > 0) {
     st.policy_loss = pl / st.minibatches;

@@ -75,6 +75,9 @@ struct PpoUpdateOptions {
   double entropy_coef = 0.001;
   double max_grad_norm = 1.0;
   bool critic_only = false;  ///< train only the value network (critic warm-up)
+  /// Early stop: the epochs end once a minibatch's approximate KL to the rollout policy
+  /// exceeds 1.5 x this (0: never). Keeps fine-tuning from a narrow policy stable.
+  double target_kl = 0;
   /// Data-parallel PPO (learn/data_parallel.h): the gradients of each minibatch are averaged
   /// over the ranks of `comm`, and a non-finite rollout or loss on one rank skips the update
   /// or minibatch on all. Null: this process alone. Not owned.
@@ -86,6 +89,7 @@ struct PpoUpdateStats {
   double policy_loss = 0, value_loss = 0, entropy = 0, approx_kl = 0, clip_frac = 0;
   int minibatches = 0;         ///< minibatches that stepped
   int skipped = 0;             ///< minibatches skipped for a non-finite loss or gradient
+  bool kl_stopped = false;     ///< the epochs ended early on target_kl
   bool rollout_finite = true;  ///< false: nothing was trained (all minibatches skipped)
 };
 

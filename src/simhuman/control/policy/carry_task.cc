@@ -374,6 +374,41 @@ void StartLift(const CarryParams& p, const mjModel* m, mjData* scratch, const mj
   s->poses = SolveCarryPoses(p, m, scratch, ix, MakeLiftGeometry(p, d, ix, *s, box));
 }
 
+double LiftRiseStartSeconds() { return kRiseStart; }
+
+void PoseInLift(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s, CarryState* s) {
+  const world::AgentIndex& a = ix.walk.agent;
+  s->phase_time_s = Clamp(t_s, 0.0, kRiseStart);
+  double ref[kWalkActDim];
+  CarryReference(*s, ref);
+  Eigen::Vector3d pelvis;
+  double yaw;
+  PelvisPose(d, ix.walk, &pelvis, &yaw);
+  const int l = ix.walk.left_foot_geom, r = ix.walk.right_foot_geom;
+  auto feet_xy = [&] {
+    return Eigen::Vector2d(0.5 * (d->geom_xpos[3 * l] + d->geom_xpos[3 * r]),
+                           0.5 * (d->geom_xpos[3 * l + 1] + d->geom_xpos[3 * r + 1]));
+  };
+  const Eigen::Vector2d feet0 = feet_xy();
+  const double pitch = s->poses.squat_pitch_rad * Smooth(s->phase_time_s / kSqueezeStart);
+  mjtNum q_yaw[4] = {std::cos(yaw / 2), 0, 0, std::sin(yaw / 2)};
+  mjtNum q_pitch[4] = {std::cos(pitch / 2), 0, std::sin(pitch / 2), 0};
+  mju_mulQuat(d->qpos + a.root_qpos + 3, q_yaw, q_pitch);
+  for (int j = 0; j < kWalkActDim; ++j) {
+    d->qpos[a.hinge_qpos[j]] = ref[j];
+    d->ctrl[a.actuator[j]] = ref[j];
+  }
+  mju_zero(d->qvel + a.root_qvel, 6);
+  for (int j = 0; j < kWalkActDim; ++j) d->qvel[a.hinge_qvel[j]] = 0;
+  mj_kinematics(m, d);
+  const Eigen::Vector2d shift = feet0 - feet_xy();
+  d->qpos[a.root_qpos + 0] += shift.x();
+  d->qpos[a.root_qpos + 1] += shift.y();
+  mj_kinematics(m, d);
+  d->qpos[a.root_qpos + 2] -= LowestBoxCornerZ(m, d, {l, r}) - 0.001;
+  mj_forward(m, d);
+}
+
 void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
                  const CarryIndex& ix, const CarryBox& box, CarryState* s) {
   s->phase_time_s += kWalkPolicyDt;

@@ -134,6 +134,15 @@ void BeginCarry(const CarryParams& p, const CarryIndex& ix, const mjData* d, con
 void StartLift(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
                const CarryIndex& ix, const CarryBox& box, CarryState* s);
 
+/// Reference-state initialisation inside a started lift (training): sets the phase time to
+/// `t_s` (clamped to the squat-and-squeeze part, before the rise), the hinges and controls to
+/// the reference there, the root pitched as the squat keyframe scaled by the squat depth, the
+/// feet flat where they were and the lowest foot corner on the floor, at rest.
+void PoseInLift(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s, CarryState* s);
+
+/// Seconds into the lift at which the rise starts (the end of PoseInLift's range).
+double LiftRiseStartSeconds();
+
 /// Advances phases and the walking command by one policy step (call before CarryObservation).
 /// Entering the lift solves its keyframes (SolveCarryPoses) on `scratch`.
 void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
