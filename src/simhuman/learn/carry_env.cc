@@ -193,8 +193,7 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
     control::StartLift(params_, e.m, e.scratch, d, ix_, box, &e.s);
     // and some of them part-way down into the squat (reference-state initialisation)
     if (e.rng.Uniform() < kStartInSquatFraction) {
-      control::PoseInLift(e.m, d, ix_, e.rng.Uniform(0.0, control::LiftRiseStartSeconds()),
-                          &e.s);
+      control::PoseInLift(e.m, d, ix_, e.rng.Uniform(0.0, control::LiftRiseStartSeconds()), &e.s);
     }
     control::UpdateWalkCommand(control::WalkParams(), d, ix_.walk, &e.s.walk);
     control::CarryObservation(d, ix_, e.s, box, obs);

@@ -43,16 +43,26 @@ std::string Widths(const std::vector<int>& h) {
 }  // namespace
 
 nlohmann::json IterationStats::ToJson() const {
-  nlohmann::json j{{"iteration", iteration},     {"env_steps", env_steps},
-                   {"wall_s", wall_s},           {"return", mean_return},
-                   {"ep_length", mean_length},   {"success", success_rate},
-                   {"fall", fall_rate},          {"episodes", episodes},
-                   {"policy_loss", policy_loss}, {"value_loss", value_loss},
-                   {"entropy", entropy},         {"approx_kl", approx_kl},
-                   {"clip_frac", clip_frac},     {"lr", lr},
-                   {"action_std", action_std},   {"curriculum", curriculum},
-                   {"steps_per_s", steps_per_s}, {"collect_s", collect_s},
-                   {"update_s", update_s},       {"skipped", skipped_minibatches},
+  nlohmann::json j{{"iteration", iteration},
+                   {"env_steps", env_steps},
+                   {"wall_s", wall_s},
+                   {"return", mean_return},
+                   {"ep_length", mean_length},
+                   {"success", success_rate},
+                   {"fall", fall_rate},
+                   {"episodes", episodes},
+                   {"policy_loss", policy_loss},
+                   {"value_loss", value_loss},
+                   {"entropy", entropy},
+                   {"approx_kl", approx_kl},
+                   {"clip_frac", clip_frac},
+                   {"lr", lr},
+                   {"action_std", action_std},
+                   {"curriculum", curriculum},
+                   {"steps_per_s", steps_per_s},
+                   {"collect_s", collect_s},
+                   {"update_s", update_s},
+                   {"skipped", skipped_minibatches},
                    {"minibatches", stepped_minibatches}};
   if (ranks > 1) {
     j["ranks"] = ranks;
@@ -152,9 +162,43 @@ struct PpoTrainer::Impl {
     }
     if (parent) {
       norm = p->norm.Widened(d);
-      return absl::OkStatus();
+      return ResetParentUnusedActions(*def, a);
     }
     norm = p->norm;
+    return absl::OkStatus();
+  }
+
+  // actions the parent task ignores (the walking policy's arms follow its reference) were never
+  // trained: their output rows start at zero (the reference) and their std at the mean of the
+  // trained ones
+  absl::Status ResetParentUnusedActions(const TaskDef& def, int a) {
+    SH_ASSIGN_OR_RETURN(const TaskDef* parent_def, FindTask(def.init_parent));
+    SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> parent_task, parent_def->make(1, "newton"));
+    torch::NoGradGuard no_grad;
+    std::vector<int64_t> unused, used;
+    for (int j = 0; j < a; ++j) (parent_task->action_used(j) ? used : unused).push_back(j);
+    if (unused.empty() || used.empty()) return absl::OkStatus();
+    torch::Tensor out_w, out_b, log_std;
+    for (auto& prm : net.actor->named_parameters()) {
+      torch::Tensor t = prm.value();
+      if (prm.key() == "log_std") {
+        log_std = t;
+      } else if (t.dim() == 2 && t.size(0) == a) {
+        out_w = t;  // the last such layer is the output layer
+      } else if (t.dim() == 1 && t.size(0) == a) {
+        out_b = t;
+      }
+    }
+    if (!out_w.defined() || !out_b.defined() || !log_std.defined()) {
+      return absl::InternalError("init_from: the actor has no output layer of " +
+                                 std::to_string(a) + " actions");
+    }
+    torch::Tensor idx = torch::tensor(unused, torch::kInt64);
+    out_w.index_fill_(0, idx, 0.0);
+    out_b.index_fill_(0, idx, 0.0);
+    const double mean_log_std =
+        log_std.index_select(0, torch::tensor(used, torch::kInt64)).mean().item<double>();
+    log_std.index_fill_(0, idx, mean_log_std);
     return absl::OkStatus();
   }
 
