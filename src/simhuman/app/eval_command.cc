@@ -7,6 +7,7 @@
 #include <fstream>
 #include <optional>
 
+#include "simhuman/app/carry_eval_command.h"
 #include "simhuman/app/common.h"
 #include "simhuman/app/planner_factory.h"
 #include "simhuman/eval/episode.h"
@@ -227,6 +228,9 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
                            "with the plan suites (sit, lie, reach, sceneplan-simple, ...)"));
   }
   if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
+  if (suite->controller == eval::SuiteController::kCarryPolicy) {
+    return CarryEvalCommand(flags, out, err);
+  }
   if (suite->controller == eval::SuiteController::kWalkPolicy) {
     if (flags.episodes < 1) {
       return ReportError(err, kCommand, absl::InvalidArgumentError("--episodes must be >= 1"));

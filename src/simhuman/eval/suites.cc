@@ -295,6 +295,8 @@ const std::vector<SuiteDef>& Suites() {
       {"walk", C::kWalkPolicy, X::kNone, nullptr, "the walking policy: walk to a goal"},
       {"walk-step", C::kWalkPolicy, X::kNone, nullptr,
        "the walking policy: short steps back and sideways"},
+      {"carry", C::kCarryPolicy, X::kNone, nullptr,
+       "the carrying policy: a 2-13 kg box carried 1-20 m (CooHOI Table 1)"},
       {"language", C::kPlanner, X::kNone, nullptr, "the command corpus through a planner"},
   };
   return suites;

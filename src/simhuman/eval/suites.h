@@ -58,9 +58,10 @@ struct EpisodeSpec {
 
 /// What runs a suite's episodes.
 enum class SuiteController {
-  kMpc,         ///< plan episodes; get-close steps walked by the walking policy when given
-  kWalkPolicy,  ///< the walking policy alone (eval/walk_eval.h); needs --policy
-  kPlanner,     ///< commands through a planner, no simulation (eval/language_suite.h)
+  kMpc,          ///< plan episodes; get-close steps walked by the walking policy when given
+  kWalkPolicy,   ///< the walking policy alone (eval/walk_eval.h); needs --policy
+  kPlanner,      ///< commands through a planner, no simulation (eval/language_suite.h)
+  kCarryPolicy,  ///< the carrying policy on CooHOI's protocol (learn/carry_eval.h)
 };
 
 /// Draws one episode of a plan suite into `spec` (scene, plan, variant, object_id, joint) from

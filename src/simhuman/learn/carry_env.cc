@@ -152,7 +152,7 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   // half the episodes start at the box, ready to lift (the lift is practised from the first
   // iteration, not only after a walk); the others 1-2 m (up to 5 m) away, facing the box
   // within +-(30 + 150 c) degrees
-  const bool at_box = e.rng.Uniform() < kStartAtBoxFraction;
+  const bool at_box = e.rng.Uniform() < kStartAtBoxFraction && !evaluation_;
   Eigen::Vector2d start;
   double yaw;
   if (at_box) {
@@ -333,7 +333,7 @@ void CarryTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   control::CarryObservation(d, ix_, e.s, box, obs);
   info->reward = static_cast<float>(reward);
   info->terminated = e.failure != CarryFailure::kNone;
-  info->truncated = e.steps >= kMaxSteps || e.done_hold >= 2 * kSuccessHold;
+  info->truncated = e.steps >= max_steps_ || e.done_hold >= 2 * kSuccessHold;
   info->success = e.success;
 }
 

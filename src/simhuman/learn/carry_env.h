@@ -64,7 +64,14 @@ class CarryTask : public VecTask {
   void SetBox(int i, double side_m, double mass_kg, const Eigen::Vector3d& pos, double yaw_rad,
               const Eigen::Vector2d& dest_xy, float* obs);
 
-  static constexpr int kMaxSteps = 1200;  ///< 40 s at 30 Hz
+  static constexpr int kMaxSteps = 1200;  ///< 40 s at 30 Hz (training episodes)
+
+  /// Evaluation starts: no episode starts at the box or inside the lift (Reset always walks up
+  /// from 1-2 m, up to 5 m at curriculum 1), and episodes are cut after `max_steps` policy steps.
+  void SetEvaluation(int max_steps) {
+    evaluation_ = true;
+    max_steps_ = max_steps;
+  }
 
  private:
   struct Env {
@@ -89,6 +96,8 @@ class CarryTask : public VecTask {
   std::vector<char> allowed_floor_;  // per body id: feet and hands may touch the floor
   int box_geom_ = -1, box_body_ = -1, box_qpos_ = -1;
   double curriculum_ = 0;
+  bool evaluation_ = false;
+  int max_steps_ = kMaxSteps;
 };
 
 }  // namespace simhuman::learn
