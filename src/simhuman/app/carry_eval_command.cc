@@ -13,11 +13,6 @@ namespace {
 
 const char kCommand[] = "eval";
 
-std::string DefaultCarryPolicy(const std::string& flag) {
-  if (!flag.empty()) return flag;
-  return std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/carry.pt";
-}
-
 std::string Line(const learn::CarryEpisode& e) {
   char buf[200];
   std::snprintf(buf, sizeof(buf), "%4d %7.1f %6.2f %7.1f %-4s %-4s %7.1f %8.1f  %-10s %s", e.index,
@@ -30,16 +25,15 @@ std::string Line(const learn::CarryEpisode& e) {
 
 int CarryEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
   learn::CarryEvalOptions o;
-  o.policy = DefaultCarryPolicy(flags.policy);
+  o.policy = eval::DefaultCarryPolicy(flags.policy);
   o.episodes = flags.episodes;
   o.seed = flags.seed;
-  std::error_code ec;
-  if (!std::filesystem::exists(o.policy, ec)) {
+  if (o.policy.empty()) {
     return ReportError(err, kCommand,
                        absl::InvalidArgumentError(
-                           "--policy '" + o.policy +
-                           "' does not exist; give a carry policy (simhuman train --task carry "
-                           "writes RUN/policy.pt)"));
+                           "--suite carry needs --policy FILE, a carry policy (simhuman train "
+                           "--task carry writes RUN/policy.pt; this checkout has no "
+                           "assets/policies/carry.pt)"));
   }
   const std::string dir = flags.out.empty() ? "out/eval_carry" : flags.out;
   absl::Status made = MakeOutputDir(dir);

@@ -103,6 +103,8 @@ CLI::App* AddRunCommand(CLI::App& app, RunFlags* run, CLI::Option** preset) {
                       "Walking policy for get-close steps (default assets/policies/walk.pt if "
                       "present)");
   run_cmd->add_flag("--no-walk", run->no_walk, "Do get-close steps with the MPC only");
+  run_cmd->add_option("--carry-policy", run->carry_policy,
+                      "Carrying policy for carry steps (default assets/policies/carry.pt)");
   run_cmd->add_option("--start", run->start,
                       "Where the first human starts, standing: X,Y[,YAW_DEG] (m, degrees; "
                       "overrides the scene)");

@@ -124,18 +124,6 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
     if (absl::IsNotFound(st)) st = core::Annotate(st, "--plan");
     return ReportError(err, kCommand, st);
   }
-  // carry steps run only under the carry controller (issue 17, control/): refuse them here,
-  // before anything moves
-  for (size_t s = 0; s < chain->steps.size(); ++s) {
-    if (!chain->steps[s].carry) continue;
-    const std::string& label = chain->steps[s].label;
-    return ReportError(err, kCommand,
-                       absl::UnimplementedError(
-                           "plan step " + std::to_string(s + 1) +
-                           (label.empty() ? std::string() : " ('" + label + "')") +
-                           ": carry steps need the carry controller, which this build does not "
-                           "have yet (simhuman plan prints carry plans)"));
-  }
   absl::Status reach = eval::CheckWithinReach(*chain, *catalog, scene->humans);
   if (!reach.ok()) return ReportError(err, kCommand, reach);
   core::StatusOr<std::vector<world::AgentSpec>> placements = eval::AgentSpecs(*scene);
@@ -164,10 +152,11 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   control::Trajectory trajectory;
   const std::string walk_policy = flags.no_walk ? "" : eval::DefaultWalkPolicy(flags.policy);
   if (!walk_policy.empty()) out << "walking with the policy " << walk_policy << std::endl;
-  core::StatusOr<control::EpisodeResult> run_result =
-      eval::RunWithWalkPolicy(**sim, *chain, *controllers, walk_policy, options, &trajectory);
-  if (!run_result.ok())
-    return ReportError(err, kCommand, core::Annotate(run_result.status(), "--policy"));
+  const std::string carry_policy = eval::DefaultCarryPolicy(flags.carry_policy);
+  if (!carry_policy.empty()) out << "carrying with the policy " << carry_policy << std::endl;
+  core::StatusOr<control::EpisodeResult> run_result = eval::RunWithWalkPolicy(
+      **sim, *chain, *controllers, walk_policy, options, &trajectory, carry_policy);
+  if (!run_result.ok()) return ReportError(err, kCommand, run_result.status());
   const control::EpisodeResult& result = *run_result;
 
   // results first, so a rendering failure cannot lose them
@@ -181,6 +170,7 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   j["config"] = config->ToJson();
   j["settle_s"] = flags.settle_s;
   j["walk_policy"] = walk_policy;
+  j["carry_policy"] = carry_policy;
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) j[key] = value;
   absl::Status st = eval::WriteJsonFile(Join(out_dir, "scene.json"), world::SceneToJson(*scene));

@@ -27,6 +27,8 @@ struct RunFlags {
   /// Walking policy for get-close steps; empty: assets/policies/walk.pt when it exists.
   std::string policy;
   bool no_walk = false;  ///< never walk with a policy (MPC only)
+  /// Carrying policy for carry steps; empty: assets/policies/carry.pt when it exists.
+  std::string carry_policy;
   /// "X,Y" or "X,Y,YAW_DEG": where the first human starts, standing (overrides the scene's).
   std::string start;
 };

@@ -59,6 +59,13 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
                        double scale, const plan::PairParams& params) {
   StepTask task;
   task.label = step.label;
+  if (step.carry) {
+    for (int carrier : step.carry->Agents()) {
+      if (carrier != agent) continue;
+      task.carry_object = scene.Find(step.carry->object);
+      task.carry_goal = step.carry->goal;
+    }
+  }
   bool pelvis_on_seat = false, head_down = false, side_lie = false, any_contact = false;
   for (const plan::ContactPair& pair : step.pairs) {
     if (pair.agent != agent) continue;

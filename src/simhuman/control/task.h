@@ -54,6 +54,10 @@ struct StepTask {
   double walk_yaw_rad = 0;
   plan::Direction side = plan::Direction::kFront;
   std::string label;
+  /// A carry step in which this agent carries: the object (null otherwise) and its goal on the
+  /// floor (unset for a step that only holds it).
+  const core::CatalogObject* carry_object = nullptr;
+  std::optional<core::Pose> carry_goal;
 };
 
 /// Adapts a get-close step's walk point to the step after it: when `next` sits or lies on the

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "simhuman/control/policy/carry_controller.h"
 #include "simhuman/control/policy/policy_controller.h"
 #include "simhuman/core/json_io.h"
 #include "simhuman/core/rng.h"
@@ -75,21 +76,55 @@ core::StatusOr<control::EpisodeResult> RunWithWalkPolicy(
     world::SimWorld& world, const plan::ContactChain& chain,
     const std::vector<std::unique_ptr<control::MpcController>>& controllers,
     const std::string& walk_policy, const control::RunOptions& options,
-    control::Trajectory* trajectory) {
-  if (walk_policy.empty())
+    control::Trajectory* trajectory, const std::string& carry_policy) {
+  int first_carry = -1;
+  for (size_t s = 0; s < chain.steps.size() && first_carry < 0; ++s) {
+    if (chain.steps[s].carry) first_carry = static_cast<int>(s);
+  }
+  if (first_carry >= 0 && carry_policy.empty()) {
+    return absl::FailedPreconditionError(
+        "plan step " + std::to_string(first_carry + 1) + " carries '" +
+        chain.steps[first_carry].carry->object +
+        "': that needs a carry policy (--carry-policy FILE; simhuman train --task carry writes "
+        "one; the default is assets/policies/carry.pt, which this checkout does not have)");
+  }
+  if (walk_policy.empty() && first_carry < 0) {
     return RunWithControllers(world, chain, controllers, options, trajectory);
+  }
   std::vector<std::unique_ptr<control::WalkPolicyController>> walkers;
   std::vector<std::unique_ptr<control::WalkThenContactController>> combined;
+  std::vector<std::unique_ptr<control::CarryPolicyController>> carriers;
   std::vector<control::Controller*> raw;
   for (int a = 0; a < world.num_agents(); ++a) {
-    SH_ASSIGN_OR_RETURN(std::unique_ptr<control::WalkPolicyController> w,
-                        control::WalkPolicyController::Load(walk_policy, &world, a));
-    walkers.push_back(std::move(w));
-    combined.push_back(std::make_unique<control::WalkThenContactController>(walkers.back().get(),
-                                                                            controllers[a].get()));
-    raw.push_back(combined.back().get());
+    control::Controller* c = controllers[a].get();
+    if (!walk_policy.empty()) {
+      auto w = control::WalkPolicyController::Load(walk_policy, &world, a);
+      if (!w.ok()) return core::Annotate(w.status(), "--policy");
+      walkers.push_back(*std::move(w));
+      combined.push_back(
+          std::make_unique<control::WalkThenContactController>(walkers.back().get(), c));
+      c = combined.back().get();
+    }
+    if (first_carry >= 0) {
+      auto k = control::CarryPolicyController::Load(carry_policy, &world, a, c);
+      if (!k.ok()) return core::Annotate(k.status(), "--carry-policy");
+      carriers.push_back(*std::move(k));
+      c = carriers.back().get();
+    }
+    raw.push_back(c);
   }
-  return control::RunEpisode(world, chain, raw, options, trajectory);
+  control::RunOptions run = options;
+  if (first_carry >= 0) {
+    run.tracker.budget_s_per_step = std::max(run.tracker.budget_s_per_step, kCarryStepBudgetS);
+  }
+  return control::RunEpisode(world, chain, raw, run, trajectory);
+}
+
+std::string DefaultCarryPolicy(const std::string& flag) {
+  if (!flag.empty()) return flag;
+  std::string asset = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/carry.pt";
+  std::error_code ec;
+  return std::filesystem::exists(asset, ec) ? asset : "";
 }
 
 std::string DefaultWalkPolicy(const std::string& flag) {

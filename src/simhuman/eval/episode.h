@@ -49,12 +49,22 @@ control::EpisodeResult RunWithControllers(
 
 /// As RunWithControllers, but when `walk_policy` names a file, get-close steps that start
 /// standing are walked with that policy (control::WalkThenContactController) and the MPC does
-/// the other steps. Errors: the policy file (NotFound, DataLoss, InvalidArgument).
+/// the other steps; carry steps are carried by the carriers with `carry_policy`
+/// (control::CarryPolicyController), and a plan with carry steps gets kCarryStepBudgetS per
+/// step. Errors: a policy file (NotFound, DataLoss, InvalidArgument); a plan with carry steps
+/// and no `carry_policy` (FailedPrecondition, naming the step and the flag).
 core::StatusOr<control::EpisodeResult> RunWithWalkPolicy(
     world::SimWorld& world, const plan::ContactChain& chain,
     const std::vector<std::unique_ptr<control::MpcController>>& controllers,
     const std::string& walk_policy, const control::RunOptions& options,
-    control::Trajectory* trajectory);
+    control::Trajectory* trajectory, const std::string& carry_policy = "");
+
+/// Time budget of each step of a plan with carry steps (a 20 m carry takes about a minute).
+inline constexpr double kCarryStepBudgetS = 120.0;
+
+/// The carrying policy to use: `flag` when given, else assets/policies/carry.pt of the source
+/// tree when that file exists, else "".
+std::string DefaultCarryPolicy(const std::string& flag);
 
 /// The walking policy to use: `flag` when given, else assets/policies/walk.pt of the source
 /// tree when that file exists, else "" (no walking).

@@ -49,6 +49,11 @@ absl::Status CheckWithinReach(const plan::ContactChain& chain, const core::Scene
     };
     std::vector<std::pair<std::pair<int, std::string>, Nearest>> checks;
     std::set<std::pair<int, std::string>> closing;  // get-close pairs of this step
+    // a carry walks its carriers to the object's stand points itself
+    if (step.carry) {
+      for (const plan::ContactPair& pair : step.pairs) approached.insert({pair.agent, pair.object});
+      continue;
+    }
     for (const plan::ContactPair& pair : step.pairs) {
       std::pair<int, std::string> key(pair.agent, pair.object);
       if (pair.IsGetClose()) {

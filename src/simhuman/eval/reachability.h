@@ -24,6 +24,8 @@ inline constexpr double kMaxReachM = 1.0;
 /// step passes when at least one of those pairs' parts is within `max_reach_m` x the human's
 /// scale (horizontal distance from the human's start position to the part's nearest point).
 /// Not-contact and not-care pairs, and pairs whose target is a body joint, are not checked.
+/// Carry steps are not checked (a carry walks its carriers to the object), and count as an
+/// approach.
 ///
 /// `chain` must be grounded against `scene` (plan::ValidateAndGround) and `humans` must hold a
 /// human for every agent the plan names (scene.num_agents()). Error (InvalidArgument):

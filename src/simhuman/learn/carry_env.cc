@@ -74,10 +74,9 @@ core::StatusOr<std::unique_ptr<CarryTask>> CarryTask::Create(int num_envs) {
     return absl::InternalError("carry task: the box is not a free body with one box geom");
   }
   t->box_qpos_ = m->jnt_qposadr[m->body_jntadr[t->box_body_]];
-  // a hand is a patch, not a point: torsional friction (condim 4) lets two pressing palms
-  // resist the box turning about the line between them
-  m->geom_condim[t->box_geom_] = 4;
-  m->geom_friction[3 * t->box_geom_ + 1] = 0.05;
+  if (m->geom_condim[t->box_geom_] != 4) {
+    return absl::InternalError("carry task: the box has no torsional friction (condim 4)");
+  }
   const world::AgentIndex& a = t->ix_.walk.agent;
   t->allowed_floor_.assign(m->nbody, 0);
   for (int b : {a.left_foot_body, a.right_foot_body, m->geom_bodyid[t->ix_.left_hand_geom],

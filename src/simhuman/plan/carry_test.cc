@@ -5,6 +5,7 @@
 
 #include "simhuman/core/footprint.h"
 #include "simhuman/plan/contact_chain.h"
+#include "simhuman/plan/metrics.h"
 #include "simhuman/plan/test_scene.h"
 #include "simhuman/plan/validate.h"
 
@@ -151,6 +152,37 @@ TEST(PlanCarryTest, GroundsBesideAClearSideAndWritesTheHandPairs) {
   EXPECT_EQ(step.pairs[0].direction, Direction::kLeft);
   EXPECT_EQ(step.pairs[1].joint, core::BodyJoint::kRightHand);
   EXPECT_EQ(step.pairs[1].direction, Direction::kRight);
+}
+
+// a carry step to a floor point completes only with the box down at its goal and let go
+TEST(PlanCarryTest, ACarryStepCompletesWithTheObjectDownAtItsGoalAndReleased) {
+  core::SceneCatalog scene = CarryScene();
+  absl::StatusOr<ContactChain> chain = ParseAndGround(
+      Plan(R"({"object": "box002", "carriers": [0], "to": {"point": [-2, 3]}})"), "p", scene);
+  ASSERT_TRUE(chain.ok()) << chain.status();
+  const ContactStep& step = chain->steps[0];
+  ASSERT_TRUE(step.carry->goal.has_value());
+  core::SceneCatalog live = CarryScene();  // the box still at its start
+  core::CatalogObject* box = live.Find("box002");
+  std::vector<BodyPoints> agents(2);
+  for (BodyPoints& b : agents) {
+    for (Eigen::Vector3d& p : b.pos_world) p = Eigen::Vector3d(5, 5, 1);  // far from the box
+  }
+  const PairParams params;
+  EXPECT_FALSE(EvaluateStep(step, live, agents, params).complete);
+  box->pose = core::Pose::FromYaw(step.carry->goal->pos + Eigen::Vector3d(0.1, 0.05, 0), 0.3);
+  EXPECT_TRUE(EvaluateStep(step, live, agents, params).complete);
+  // still held: the hands on its sides
+  BodyPoints& h = agents[0];
+  h.at(core::BodyJoint::kLeftHand) = box->pose.Apply({0, 0.3, 0.25});
+  h.at(core::BodyJoint::kRightHand) = box->pose.Apply({0, -0.3, 0.25});
+  EXPECT_FALSE(EvaluateStep(step, live, agents, params).complete);
+  h.at(core::BodyJoint::kLeftHand) = h.at(core::BodyJoint::kRightHand) = {5, 5, 1};
+  // off the floor, or too far from the goal
+  box->pose.pos.z() = 0.2;
+  EXPECT_FALSE(EvaluateStep(step, live, agents, params).complete);
+  box->pose = core::Pose::FromYaw(step.carry->goal->pos + Eigen::Vector3d(0.25, 0, 0), 0);
+  EXPECT_FALSE(EvaluateStep(step, live, agents, params).complete);
 }
 
 TEST(PlanCarryTest, RefusesWhatTheTeamCannotDo) {

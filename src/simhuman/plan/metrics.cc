@@ -272,7 +272,19 @@ StepEval EvaluateStep(const ContactStep& step, const core::SceneCatalog& scene,
   }
   out.weights = AdaptiveWeights(rewards, params.adaptive_weight_eps);
   for (size_t k = 0; k < rewards.size(); ++k) out.reward += out.weights[k] * rewards[k];
+  // a carry step with a destination completes when the object is down there and let go
+  if (step.carry && step.carry->goal) {
+    const core::CatalogObject* obj = scene.Find(step.carry->object);
+    bool released = true;
+    for (const PairEval& e : out.pairs) released = released && !e.satisfied;
+    out.complete = obj && released && CarriedObjectAtGoal(obj->pose, *step.carry->goal);
+  }
   return out;
+}
+
+bool CarriedObjectAtGoal(const core::Pose& object, const core::Pose& goal) {
+  return (object.pos - goal.pos).head<2>().norm() < kCarryGoalRadiusM &&
+         std::abs(object.pos.z() - goal.pos.z()) < kCarryGoalHeightTolM;
 }
 
 absl::Status TrackerParams::Validate() const {

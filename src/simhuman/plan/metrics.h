@@ -160,7 +160,17 @@ struct StepEval {
   bool complete = false;        // every pair satisfied (Eq. 8)
 };
 
-/// Evaluates all pairs of `step` (see EvaluatePair) with the adaptive weights of Eq. 9.
+/// A carried object is at its destination (CooHOI's rule): its origin within this of the
+/// goal's horizontally, and down on the floor (its origin within kCarryGoalHeightTolM of the
+/// goal's height).
+inline constexpr double kCarryGoalRadiusM = 0.2;
+inline constexpr double kCarryGoalHeightTolM = 0.03;
+bool CarriedObjectAtGoal(const core::Pose& object, const core::Pose& goal);
+
+/// Evaluates all pairs of `step` (see EvaluatePair) with the adaptive weights of Eq. 9. A carry
+/// step with a destination (floor point, beside an object) is complete when the object is at
+/// its goal (CarriedObjectAtGoal) and none of its carriers' hand pairs is satisfied (put down
+/// and let go); a carry step that only holds completes on its hand pairs.
 StepEval EvaluateStep(const ContactStep& step, const core::SceneCatalog& scene,
                       const std::vector<BodyPoints>& agents, const PairParams& params);
 

@@ -134,6 +134,9 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
       if (cushion) o << " solref=\"0.03 1\" solimp=\"0.4 0.95 0.04\"";
       if (obj.movable) {
         o << " mass=\"" << F(obj.mass_kg / std::max<size_t>(1, obj.shapes.size())) << "\"";
+        // a hand is a patch, not a point: torsional friction lets two pressing palms resist
+        // the object turning about the line between them (what carrying relies on)
+        o << " condim=\"4\" friction=\"0.9 0.05 0.01\"";
       }
       o << "/>\n";
     }
