@@ -281,3 +281,25 @@ TEST(ExportCommand, BlenderImportsTheGlbAndTheBvh) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(ExportCommand, RendersTheContactSheetAgain) {
+  Trajectory tr;
+  std::unique_ptr<SimWorld> world;
+  const std::string dir = WriteRunFolder("sit_demo", "sheet", &tr, &world);
+  const std::string bin = SIMHUMAN_BIN;
+  // without the run's plan there are no captions: refused, naming the file
+  Proc p = Shell(bin + " export " + dir + " --sheet " + dir + "/sheet.png");
+  EXPECT_EQ(p.exit_code, 2);
+  EXPECT_NE(p.err.find("plan.json"), std::string::npos) << p.err;
+  fs::copy_file(kSource + "/assets/plans/sit_then_stand.json", dir + "/plan.json");
+  p = Shell(bin + " export " + dir + " --sheet " + dir + "/sheet.png");
+  if (p.exit_code == 1 && p.err.find("EGL") != std::string::npos) {
+    GTEST_SKIP() << "no EGL display: " << p.err;
+  }
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  EXPECT_GT(fs::file_size(dir + "/sheet.png"), 10000u);
+}
+
+}  // namespace
