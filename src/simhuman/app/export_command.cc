@@ -34,7 +34,6 @@ int RenderRun(const ExportRunFlags& flags, const eval::RunFolder& run, std::ostr
   eval::ReplayOptions replay;
   replay.video_path = flags.video;
   replay.sheet_path = flags.sheet;
-  replay.shadows = flags.shadows;
   replay.auto_camera = !flags.fixed_camera;
   for (const std::string& path : {flags.video, flags.sheet}) {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();

@@ -101,7 +101,6 @@ absl::Status RenderReplay(const world::SimWorld& world, const plan::ContactChain
         render::RendererOptions r;
         r.font_scale = options.font_scale;
         r.sky = options.sky;
-        r.shadows = options.shadows;
         return r;
       }());
   if (!renderer.ok()) return renderer.status();

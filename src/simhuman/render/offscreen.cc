@@ -167,10 +167,6 @@ absl::StatusOr<std::unique_ptr<OffscreenRenderer>> OffscreenRenderer::Create(
   }
   r->bottom_up_.resize(static_cast<size_t>(width) * height * 3);
   if (options.sky) r->depth_.resize(static_cast<size_t>(width) * height);
-  // shadows need a light that casts them: every light of the snapshot does
-  if (options.shadows) {
-    for (int l = 0; l < r->model_->nlight; ++l) r->model_->light_castshadow[l] = 1;
-  }
   return r;
 }
 
