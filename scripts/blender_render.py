@@ -47,7 +47,7 @@ cam.rotation_euler = (target - eye).to_track_quat("-Z", "Y").to_euler()
 scene.camera = cam
 
 sun_data = bpy.data.lights.new("sun", type="SUN")
-sun_data.energy = 2.0
+sun_data.energy = 1.5
 sun_data.angle = math.radians(10)
 sun = bpy.data.objects.new("sun", sun_data)
 sun.rotation_euler = (math.radians(40), math.radians(15), math.radians(30))
@@ -55,9 +55,10 @@ scene.collection.objects.link(sun)
 world = bpy.data.worlds.new("sky")
 world.use_nodes = True
 world.node_tree.nodes["Background"].inputs[0].default_value = (0.62, 0.74, 0.88, 1.0)
-world.node_tree.nodes["Background"].inputs[1].default_value = 0.5
+world.node_tree.nodes["Background"].inputs[1].default_value = 0.35
 scene.world = world
 
+scene.view_settings.exposure = -0.5
 scene.render.engine = "CYCLES"
 scene.cycles.device = "CPU"
 scene.cycles.samples = args.samples
