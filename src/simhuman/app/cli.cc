@@ -234,6 +234,7 @@ CLI::App* AddExportRunCommand(CLI::App& app, ExportRunFlags* xf) {
   cmd->add_option("--fps", xf->fps, "Sample rate (default: the run's, 30)");
   cmd->add_option("--video", xf->video, "Render the run again into this MP4 (needs plan.json)");
   cmd->add_option("--sheet", xf->sheet, "Render a contact sheet PNG (needs plan.json)");
+  cmd->add_flag("--shadows", xf->shadows, "Video and sheet with shadows (several times slower)");
   cmd->add_flag("--fixed-camera", xf->fixed_camera,
                 "Video and sheet from the fixed side-front camera (no occlusion avoidance)");
   return cmd;

@@ -35,6 +35,7 @@ int RenderRun(const ExportRunFlags& flags, const eval::RunFolder& run, std::ostr
   replay.video_path = flags.video;
   replay.sheet_path = flags.sheet;
   replay.auto_camera = !flags.fixed_camera;
+  replay.shadows = flags.shadows;
   for (const std::string& path : {flags.video, flags.sheet}) {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     absl::Status st =

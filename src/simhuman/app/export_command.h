@@ -1,6 +1,6 @@
 #pragma once
 /// `simhuman export RUN_DIR [--bvh out.bvh] [--gltf out.glb] [--agent N] [--fps R]
-/// [--video out.mp4] [--sheet out.png] [--fixed-camera]`: a finished run (the --out
+/// [--video out.mp4] [--sheet out.png] [--shadows] [--fixed-camera]`: a finished run (the --out
 /// folder of `simhuman run`) as BVH motion of the humans, an animated glTF scene
 /// (docs/FORMATS.md "BVH export", "glTF export"), or a video and contact sheet rendered again
 /// with today's camera.
@@ -14,12 +14,13 @@ namespace simhuman::app {
 /// The flags of `simhuman export`.
 struct ExportRunFlags {
   std::string run_dir;
-  std::string bvh;    ///< BVH output; with several humans and no --agent, one file per human
-  std::string gltf;   ///< .glb output
-  int agent = -1;     ///< only this human's BVH (-1: every human)
-  double fps = 0;     ///< sample rate (0: the run's recording rate)
-  std::string video;  ///< MP4 re-rendered from the trajectory (needs the run's plan.json)
-  std::string sheet;  ///< contact sheet PNG, likewise
+  std::string bvh;       ///< BVH output; with several humans and no --agent, one file per human
+  std::string gltf;      ///< .glb output
+  int agent = -1;        ///< only this human's BVH (-1: every human)
+  double fps = 0;        ///< sample rate (0: the run's recording rate)
+  std::string video;     ///< MP4 re-rendered from the trajectory (needs the run's plan.json)
+  std::string sheet;     ///< contact sheet PNG, likewise
+  bool shadows = false;  ///< video/sheet: shadows from the scene's lights
   bool fixed_camera = false;  ///< video/sheet: the fixed side-front camera of earlier versions
 };
 

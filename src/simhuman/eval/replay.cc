@@ -35,6 +35,7 @@ std::string Caption(const plan::ContactChain& chain, int step, double t) {
 std::vector<size_t> EvenlySpaced(size_t n, int count) {
   std::vector<size_t> out;
   if (n == 0 || count <= 0) return out;
+  if (count == 1) return {0};  // (the spacing below divides by count - 1)
   if (static_cast<size_t>(count) >= n) {
     for (size_t i = 0; i < n; ++i) out.push_back(i);
     return out;
@@ -101,6 +102,7 @@ absl::Status RenderReplay(const world::SimWorld& world, const plan::ContactChain
         render::RendererOptions r;
         r.font_scale = options.font_scale;
         r.sky = options.sky;
+        r.shadows = options.shadows;
         return r;
       }());
   if (!renderer.ok()) return renderer.status();
@@ -131,6 +133,8 @@ absl::Status RenderReplay(const world::SimWorld& world, const plan::ContactChain
   auto pose = [&](size_t f) {
     std::copy(trajectory.qpos[f].begin(), trajectory.qpos[f].end(), d->qpos);
     mj_kinematics(m, d.get());
+    // light (and camera) poses: without them the sun has no direction and casts no shadow
+    mj_camlight(m, d.get());
   };
   // side-front view of the first agent as it starts
   pose(0);

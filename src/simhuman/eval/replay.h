@@ -30,6 +30,7 @@ struct ReplayOptions {
   double smooth_s = 0.6;  ///< CameraSmoother time constant
   int font_scale = 150;   ///< caption size (render::RendererOptions::font_scale)
   bool sky = true;        ///< a daylight sky instead of black (render::RendererOptions::sky)
+  bool shadows = false;   ///< shadows from the scene's lights (several times slower)
 };
 
 /// Replays `trajectory` (recorded by control::RunEpisode on `world`) into the files of

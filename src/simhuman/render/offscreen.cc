@@ -148,6 +148,11 @@ absl::StatusOr<std::unique_ptr<OffscreenRenderer>> OffscreenRenderer::Create(
       options.msaa_samples >= 0 ? options.msaa_samples : r->model_->vis.quality.offsamples;
   r->model_->vis.quality.offsamples = std::clamp(samples, 0, std::max<int>(max_samples, 0));
 
+  // shadows need a light that casts them: every light of the snapshot does (before
+  // mjr_makeContext, which reads the shadow settings once)
+  if (options.shadows) {
+    for (int l = 0; l < r->model_->nlight; ++l) r->model_->light_castshadow[l] = 1;
+  }
   mjv_defaultOption(&r->vis_options_);
   mjv_defaultScene(&r->scene_);
   mjv_makeScene(r->model_, &r->scene_, options.max_geoms);
