@@ -12,6 +12,7 @@
 #include "simhuman/app/clip_command.h"
 #include "simhuman/app/common.h"
 #include "simhuman/app/eval_command.h"
+#include "simhuman/app/export_command.h"
 #include "simhuman/app/plan_command.h"
 #include "simhuman/app/planner_factory.h"
 #include "simhuman/app/run_command.h"
@@ -222,6 +223,25 @@ CLI::App* AddExportCommand(CLI::App& app, ExportFlags* ex) {
   return export_cmd;
 }
 
+// `simhuman export`: its flags into `xf`
+CLI::App* AddExportRunCommand(CLI::App& app, ExportRunFlags* xf) {
+  CLI::App* cmd = app.add_subcommand(
+      "export", "Export a finished run as BVH motion (--bvh) and an animated glTF scene (--gltf)");
+  cmd->add_option("run_dir", xf->run_dir, "The run's folder (simhuman run --out DIR)")->required();
+  cmd->add_option("--bvh", xf->bvh,
+                  "BVH file to write; with several humans one per human: NAME_h0.bvh, "
+                  "NAME_h1.bvh, ... (unless --agent)");
+  cmd->add_option("--gltf", xf->gltf, "glTF 2.0 binary file (.glb) to write");
+  cmd->add_option("--agent", xf->agent, "Export only this human's BVH (0-based)");
+  cmd->add_option("--fps", xf->fps, "Sample rate (default: the run's, 30)");
+  cmd->add_option("--video", xf->video, "Render the run again into this MP4 (needs plan.json)");
+  cmd->add_option("--sheet", xf->sheet, "Render a contact sheet PNG (needs plan.json)");
+  cmd->add_flag("--shadows", xf->shadows, "Video and sheet with shadows (several times slower)");
+  cmd->add_flag("--fixed-camera", xf->fixed_camera,
+                "Video and sheet from the fixed side-front camera (no occlusion avoidance)");
+  return cmd;
+}
+
 // parses `args` into `app`'s flags; returns the exit code when that already ends the run (help,
 // version, a parse error), nullopt when the parsed command is to run
 std::optional<int> ParseArgs(CLI::App& app, const std::vector<std::string>& args, std::ostream& out,
@@ -287,6 +307,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   const ClipCommands clip = AddClipCommands(app, &cf);
   ExportFlags ex;
   CLI::App* export_cmd = AddExportCommand(app, &ex);
+  ExportRunFlags xf;
+  CLI::App* export_run_cmd = AddExportRunCommand(app, &xf);
 
   std::ostringstream parse_err;
   std::optional<int> code = ParseArgs(app, args, out, parse_err);
@@ -321,11 +343,12 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   }
   if (clip.convert->parsed()) return ClipConvertCommand(cf, out, err);
   if (clip.gait->parsed()) return ClipGaitCommand(cf, out, err);
+  if (export_run_cmd->parsed()) return ExportRunCommand(xf, out, err);
   if (export_cmd->parsed()) {
     return ExportPolicyCommand(ex.checkpoint, ex.out, ex.eval_summary, out, err);
   }
   err << "simhuman: error: a command is required; valid commands are: run, plan, eval, scenes, "
-         "train, export-policy, clip (or "
+         "train, export-policy, export, clip (or "
          "--version, --help)"
       << std::endl;
   return kExitBadInput;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "simhuman/eval/episode.h"
+#include "simhuman/render/auto_camera.h"
 #include "simhuman/render/camera.h"
 #include "simhuman/render/image_io.h"
 #include "simhuman/render/offscreen.h"
@@ -34,6 +35,7 @@ std::string Caption(const plan::ContactChain& chain, int step, double t) {
 std::vector<size_t> EvenlySpaced(size_t n, int count) {
   std::vector<size_t> out;
   if (n == 0 || count <= 0) return out;
+  if (count == 1) return {0};  // (the spacing below divides by count - 1)
   if (static_cast<size_t>(count) >= n) {
     for (size_t i = 0; i < n; ++i) out.push_back(i);
     return out;
@@ -42,6 +44,40 @@ std::vector<size_t> EvenlySpaced(size_t n, int count) {
     out.push_back(static_cast<size_t>(std::lround(static_cast<double>(k) * (n - 1) / (count - 1))));
   }
   return out;
+}
+
+// the humans' mean facing (degrees about +z), the way the preferred view looks at
+double FacingDeg(const world::SimWorld& world, const mjData* d) {
+  double x = 0, y = 0;
+  for (int a = 0; a < world.num_agents(); ++a) {
+    const double yaw = world::PelvisYaw(d, world.agent(a));
+    x += std::cos(yaw);
+    y += std::sin(yaw);
+  }
+  return std::atan2(y, x) * kRadToDeg;
+}
+
+// a camera that frames every human and keeps their body points in view (hands count double:
+// at a table they are what the step is about)
+std::unique_ptr<render::AutoCamera> MakeAutoCamera(const world::SimWorld& world,
+                                                   const ReplayOptions& options) {
+  std::vector<int> bodies, sites;
+  std::vector<double> weights;
+  for (int a = 0; a < world.num_agents(); ++a) {
+    const world::AgentIndex& ag = world.agent(a);
+    bodies.insert(bodies.end(), ag.bodies.begin(), ag.bodies.end());
+    for (size_t p = 0; p < ag.site.size(); ++p) {
+      sites.push_back(ag.site[p]);
+      const bool hand = p == static_cast<size_t>(core::BodyJoint::kLeftHand) ||
+                        p == static_cast<size_t>(core::BodyJoint::kRightHand);
+      weights.push_back(hand ? 2.0 : 1.0);
+    }
+  }
+  render::AutoCameraOptions o;
+  o.margin = options.margin;
+  o.smooth_s = options.smooth_s;
+  o.aspect = static_cast<double>(options.width) / options.height;
+  return std::make_unique<render::AutoCamera>(world.model(), bodies, sites, weights, o);
 }
 
 }  // namespace
@@ -65,6 +101,8 @@ absl::Status RenderReplay(const world::SimWorld& world, const plan::ContactChain
       render::OffscreenRenderer::Create(m, options.width, options.height, [&] {
         render::RendererOptions r;
         r.font_scale = options.font_scale;
+        r.sky = options.sky;
+        r.shadows = options.shadows;
         return r;
       }());
   if (!renderer.ok()) return renderer.status();
@@ -95,6 +133,8 @@ absl::Status RenderReplay(const world::SimWorld& world, const plan::ContactChain
   auto pose = [&](size_t f) {
     std::copy(trajectory.qpos[f].begin(), trajectory.qpos[f].end(), d->qpos);
     mj_kinematics(m, d.get());
+    // light (and camera) poses: without them the sun has no direction and casts no shadow
+    mj_camlight(m, d.get());
   };
   // side-front view of the first agent as it starts
   pose(0);
@@ -104,6 +144,8 @@ absl::Status RenderReplay(const world::SimWorld& world, const plan::ContactChain
   double aspect = static_cast<double>(options.width) / options.height;
   render::CameraSmoother smoother(options.smooth_s);
   const double dt = 1.0 / std::max(1.0, trajectory.fps);
+  std::unique_ptr<render::AutoCamera> auto_camera;
+  if (options.auto_camera && !bodies.empty()) auto_camera = MakeAutoCamera(world, options);
 
   std::vector<std::vector<uint8_t>> sheet;
   std::vector<uint8_t> rgb;
@@ -112,9 +154,11 @@ absl::Status RenderReplay(const world::SimWorld& world, const plan::ContactChain
   for (size_t f = 0; f < n; ++f) {
     pose(f);
     render::CameraSpec cam =
-        smoother.Update(render::FrameBodies(m, d.get(), bodies, azimuth, options.elevation_deg,
-                                            options.margin, aspect),
-                        dt);
+        auto_camera
+            ? auto_camera->Update(d.get(), FacingDeg(world, d.get()), dt)
+            : smoother.Update(render::FrameBodies(m, d.get(), bodies, azimuth,
+                                                  options.elevation_deg, options.margin, aspect),
+                              dt);
     bool for_sheet = next_sheet < sheet_idx.size() && sheet_idx[next_sheet] == f;
     if (!video && !for_sheet) continue;
     int step = f < trajectory.step_index.size() ? trajectory.step_index[f] : 0;

@@ -20,12 +20,17 @@ struct ReplayOptions {
   int sheet_frames = 12;  ///< frames on the sheet, evenly spaced (fewer if fewer recorded)
   int sheet_cols = 4;
   int sheet_downscale = 2;
-  /// Camera: side-front view, this many degrees off the first agent's starting facing.
+  /// Camera: render::AutoCamera (every human framed, their body points kept out of
+  /// occlusion, a front-side view preferred) when true; else a fixed side-front view
+  /// `side_angle_deg` off the first human's starting facing at `elevation_deg`.
+  bool auto_camera = true;
   double side_angle_deg = 45.0;
   double elevation_deg = -15.0;
   double margin = 1.3;    ///< FrameBodies margin
   double smooth_s = 0.6;  ///< CameraSmoother time constant
   int font_scale = 150;   ///< caption size (render::RendererOptions::font_scale)
+  bool sky = true;        ///< a daylight sky instead of black (render::RendererOptions::sky)
+  bool shadows = false;   ///< shadows from the scene's lights (several times slower)
 };
 
 /// Replays `trajectory` (recorded by control::RunEpisode on `world`) into the files of

@@ -582,15 +582,26 @@ absl::Status SegmentHinges(const std::array<Matrix3d, kNumSegs>& R,
     int n = 1;
     while (k + n < world::kHumanoidDofs && ht.seg_of[k + n] == s) ++n;
     if (n == 3) {
-      Vector3d e = EulerXYZ(rel);
+      // two Euler triples give the same rotation; take the one nearer the hinge ranges (a hip
+      // flexed beyond 90 degrees is the second)
+      const Vector3d e = EulerXYZ(rel);
+      const Vector3d alt(std::remainder(e[0] + M_PI, 2 * M_PI),
+                         std::remainder(M_PI - e[1], 2 * M_PI),
+                         std::remainder(e[2] + M_PI, 2 * M_PI));
+      double outside[2] = {0, 0};
       for (int a = 0; a < 3; ++a) {
         double sign = ht.axis[k + a][a];
         if (std::abs(std::abs(sign) - 1) > 1e-9) {
           return absl::InternalError("retarget: hinge '" + jnames[k + a] +
                                      "' is not along a body axis in x, y, z order");
         }
-        fr->q_rad[k + a] = e[a] * sign;
+        for (int c = 0; c < 2; ++c) {
+          const double q = (c == 0 ? e[a] : alt[a]) * sign;
+          outside[c] += std::max({0.0, ht.lo[k + a] - q, q - ht.hi[k + a]});
+        }
       }
+      const Vector3d& best = outside[1] < outside[0] - 1e-9 ? alt : e;
+      for (int a = 0; a < 3; ++a) fr->q_rad[k + a] = best[a] * ht.axis[k + a][a];
     } else if (n == 1) {
       fr->q_rad[k] = TwistAngle(rel, ht.axis[k]);
     } else {

@@ -18,7 +18,8 @@ constexpr double kAngleTol = 1e-6;  // rad: retargeting exact rotations is exact
 
 // hinge indices (world::HumanoidJointNames())
 constexpr int kRShX = 6, kRShY = 7, kRShZ = 8, kRElbow = 9, kLShX = 10, kLShY = 11, kLShZ = 12,
-              kLElbow = 13, kRKnee = 17, kLKnee = 24, kLAnkY = 26;
+              kLElbow = 13, kRKnee = 17, kLHipX = 21, kLHipY = 22, kLHipZ = 23, kLKnee = 24,
+              kLAnkY = 26;
 
 // A small CMU-style skeleton (Y up, facing +Z, T-pose, CMU-like units: hips 15.5 above the
 // toes). `p` prefixes every joint name (e.g. "mixamorig:"); `six` gives LeftLeg 6 channels.
@@ -67,12 +68,13 @@ std::string Hierarchy(const std::string& p = "", bool six = false) {
 struct Pose {
   double root[6] = {0, 15.5, 0, 0, 0, 0};  // x y z, then Z X Y rotations
   double left_knee_x = 0, left_arm_z = 0, right_arm_z = 0;
+  double left_hip_x = 0;  // LeftUpLeg Xrotation: negative swings the leg forward
 };
 
 std::string FrameLine(const Pose& p, bool six) {
   std::vector<double> v(p.root, p.root + 6);
   auto rot = [&](double z, double x, double y) { v.insert(v.end(), {z, x, y}); };
-  rot(0, 0, 0);  // LeftUpLeg
+  rot(0, p.left_hip_x, 0);  // LeftUpLeg
   if (six) v.insert(v.end(), {0, -7, 0});
   rot(0, p.left_knee_x, 0);  // LeftLeg
   rot(0, 0, 0);
@@ -201,6 +203,23 @@ void ExpectErrorAt(const std::string& text, int line, const std::string& what) {
   std::string msg(bvh.status().message());
   EXPECT_NE(msg.find("malformed.bvh:" + std::to_string(line) + ":"), std::string::npos) << msg;
   EXPECT_NE(msg.find(what), std::string::npos) << msg;
+}
+
+// a hip flexed beyond 90 degrees (sitting deep) has two Euler triples; the one inside the
+// hinge ranges is taken (the other, 70 degrees with the thigh turned over, used to be clipped)
+TEST(Bvh, HipFlexedBeyondNinetyDegreesComesBackAsIs) {
+  Pose deep;
+  deep.left_hip_x = -110;
+  auto bvh =
+      ParseBvh(Hierarchy() + "MOTION\nFrames: 1\nFrame Time: 0.0333333\n" + FrameLine(deep, false),
+               "deep.bvh");
+  ASSERT_TRUE(bvh.ok()) << bvh.status();
+  auto clip = RetargetBvh(*bvh, "deep.bvh");
+  ASSERT_TRUE(clip.ok()) << clip.status();
+  const ClipFrame& f = clip->frames[0];
+  EXPECT_NEAR(f.q_rad[kLHipY], 110 * kDeg, kAngleTol);
+  EXPECT_NEAR(f.q_rad[kLHipX], 0, kAngleTol);
+  EXPECT_NEAR(f.q_rad[kLHipZ], 0, kAngleTol);
 }
 
 TEST(Bvh, ParseErrorsNameTheLine) {

@@ -3,6 +3,7 @@
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -46,6 +47,38 @@ absl::Status CheckGlRequirements() {
                      ", renderer '", GlString(GL_RENDERER), "') lacks"));
   }
   return absl::OkStatus();
+}
+
+// the sky's colour for a view ray `elev_deg` above the horizon: pale at the horizon, deeper
+// blue overhead; below the horizon (past the floor's edge) a hazy grey-blue
+void SkyColour(double elev_deg, uint8_t* rgb) {
+  constexpr double kHorizon[3] = {214, 226, 238}, kZenith[3] = {92, 142, 206};
+  constexpr double kGround[3] = {178, 186, 196};
+  const double t = std::clamp(elev_deg / 50.0, 0.0, 1.0);
+  for (int k = 0; k < 3; ++k) {
+    const double c = elev_deg < 0 ? kGround[k] + (kHorizon[k] - kGround[k]) *
+                                                     std::clamp(1.0 + elev_deg / 3.0, 0.0, 1.0)
+                                  : kHorizon[k] + (kZenith[k] - kHorizon[k]) * std::sqrt(t);
+    rgb[k] = static_cast<uint8_t>(std::lround(c));
+  }
+}
+
+// paints the sky where the depth buffer is at the far plane (`bottom_up`: OpenGL row order)
+void PaintSky(const CameraSpec& cam, double fovy_deg, int width, int height,
+              const std::vector<float>& depth, std::vector<uint8_t>* bottom_up) {
+  const double tan_half = std::tan(0.5 * fovy_deg * M_PI / 180.0);
+  for (int y = 0; y < height; ++y) {
+    // row y counts from the bottom; its view ray's angle above the camera's axis
+    const double v = (2.0 * (y + 0.5) / height - 1.0) * tan_half;
+    const double elev = cam.elevation_deg + std::atan(v) * 180.0 / M_PI;
+    uint8_t colour[3];
+    SkyColour(elev, colour);
+    for (int x = 0; x < width; ++x) {
+      const size_t i = static_cast<size_t>(y) * width + x;
+      if (depth[i] < 1.0f) continue;
+      std::memcpy(bottom_up->data() + 3 * i, colour, 3);
+    }
+  }
 }
 
 int AutoFontScale(int height) {
@@ -115,6 +148,11 @@ absl::StatusOr<std::unique_ptr<OffscreenRenderer>> OffscreenRenderer::Create(
       options.msaa_samples >= 0 ? options.msaa_samples : r->model_->vis.quality.offsamples;
   r->model_->vis.quality.offsamples = std::clamp(samples, 0, std::max<int>(max_samples, 0));
 
+  // shadows need a light that casts them: every light of the snapshot does (before
+  // mjr_makeContext, which reads the shadow settings once)
+  if (options.shadows) {
+    for (int l = 0; l < r->model_->nlight; ++l) r->model_->light_castshadow[l] = 1;
+  }
   mjv_defaultOption(&r->vis_options_);
   mjv_defaultScene(&r->scene_);
   mjv_makeScene(r->model_, &r->scene_, options.max_geoms);
@@ -133,6 +171,7 @@ absl::StatusOr<std::unique_ptr<OffscreenRenderer>> OffscreenRenderer::Create(
                                             r->gl_renderer()));
   }
   r->bottom_up_.resize(static_cast<size_t>(width) * height * 3);
+  if (options.sky) r->depth_.resize(static_cast<size_t>(width) * height);
   return r;
 }
 
@@ -180,13 +219,22 @@ absl::Status OffscreenRenderer::Render(const mjData* d, const CameraSpec& cam,
   const mjrRect viewport = {0, 0, width_, height_};
   mjr_setBuffer(mjFB_OFFSCREEN, &context_);
   mjr_render(viewport, &scene_, &context_);
+  // rows of odd widths are not 4-byte aligned
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  if (options_.sky) {
+    // the sky goes under the caption: read, paint, draw back, then the caption
+    mjr_readPixels(bottom_up_.data(), depth_.data(), viewport, &context_);
+    PaintSky(cam, model_->vis.global.fovy, width_, height_, depth_, &bottom_up_);
+    if (!caption.empty()) mjr_drawPixels(bottom_up_.data(), nullptr, viewport, &context_);
+  }
   if (!caption.empty()) {
     const std::string text(caption);
     mjr_overlay(mjFONT_SHADOW, mjGRID_TOPLEFT, viewport, text.c_str(), nullptr, &context_);
   }
-  // rows of odd widths are not 4-byte aligned
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  mjr_readPixels(bottom_up_.data(), nullptr, viewport, &context_);
+  if (!options_.sky || !caption.empty()) {
+    mjr_readPixels(bottom_up_.data(), nullptr, viewport, &context_);
+  }
   if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
     return absl::InternalError(
         absl::StrCat("OffscreenRenderer::Render: OpenGL error 0x", absl::Hex(err)));

@@ -25,6 +25,10 @@ struct RendererOptions {
   bool shadows = false;      // mjRND_SHADOW
   bool reflections = false;  // mjRND_REFLECTION (reflective floors)
   bool skybox = false;       // mjRND_SKYBOX; when off the background is black
+  /// Paint the background (pixels nothing was drawn on) with a daylight sky, blue overhead and
+  /// pale at the horizon, by the elevation of each pixel's view ray; costs one extra readback
+  /// and redraw per frame when there is a caption.
+  bool sky = false;
   /// Multisample anti-aliasing samples; -1 keeps the model's m->vis.quality.offsamples
   /// (4 unless the model says otherwise), 0 is fastest. Clamped to GL_MAX_SAMPLES.
   int msaa_samples = -1;
@@ -101,6 +105,7 @@ class OffscreenRenderer {
   bool scene_made_ = false;
   bool context_made_ = false;
   std::vector<uint8_t> bottom_up_;  // readback scratch
+  std::vector<float> depth_;        // readback scratch (sky)
 };
 
 }  // namespace simhuman::render

@@ -111,6 +111,32 @@ TEST_F(OffscreenTest, RendersBoxFloorAndBackground) {
   EXPECT_GT(blue_right, 5);
 }
 
+TEST_F(OffscreenTest, SkyPaintsTheBackgroundOnlyAndKeepsTheCaption) {
+  RendererOptions with_sky;
+  with_sky.sky = true;
+  MAKE_RENDERER_OR_SKIP(plain, kWidth, kHeight);
+  MAKE_RENDERER_OR_SKIP(sky, kWidth, kHeight, with_sky);
+  std::vector<uint8_t> a, b, c;
+  ASSERT_TRUE(plain->Render(d_, BoxCamera(), &a).ok());
+  ASSERT_TRUE(sky->Render(d_, BoxCamera(), &b).ok());
+  // the background at the top is a light blue sky, no longer black
+  const Pixel top = At(b, kWidth, 2, 0);
+  EXPECT_GT(top.b, 150);
+  EXPECT_GT(top.b, top.r);
+  // the box and the floor are drawn as before
+  const Pixel box_a = At(a, kWidth, kWidth / 2, kHeight / 2),
+              box_b = At(b, kWidth, kWidth / 2, kHeight / 2);
+  EXPECT_EQ(box_a.r, box_b.r);
+  EXPECT_EQ(box_a.g, box_b.g);
+  const Pixel floor_a = At(a, kWidth, 2, kHeight - 1), floor_b = At(b, kWidth, 2, kHeight - 1);
+  EXPECT_NEAR(floor_a.r, floor_b.r, 2);
+  // a caption goes over the sky: the top-left corner differs from the sky without one
+  ASSERT_TRUE(sky->Render(d_, BoxCamera(), &c, "step 1/2").ok());
+  int changed = 0;
+  for (size_t i = 0; i < b.size(); ++i) changed += b[i] != c[i];
+  EXPECT_GT(changed, 20);
+}
+
 TEST_F(OffscreenTest, CreateDestroyCreateAgain) {
   std::vector<uint8_t> first, second;
   {
