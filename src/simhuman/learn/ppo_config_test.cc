@@ -19,7 +19,8 @@ std::string Error(const json& j) {
 TEST(PpoConfigTable, DefaultsRoundTripThroughToJsonWithEveryKey) {
   const PpoConfig defaults;
   json j = defaults.ToJson();
-  EXPECT_EQ(j.size(), 38u);  // every key, as before the table
+  EXPECT_EQ(j.size(), 39u);  // every key (38 before the table, + target_kl)
+  EXPECT_EQ(j["target_kl"], 0.0);
   EXPECT_TRUE(j["seed"].is_number_unsigned());
   EXPECT_TRUE(j["total_steps"].is_number_integer());
   auto back = PpoConfig::FromJson(json::parse(j.dump()));
