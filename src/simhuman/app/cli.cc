@@ -14,6 +14,7 @@
 #include "simhuman/app/eval_command.h"
 #include "simhuman/app/plan_command.h"
 #include "simhuman/app/planner_factory.h"
+#include "simhuman/app/replay_command.h"
 #include "simhuman/app/run_command.h"
 #include "simhuman/app/train_command.h"
 #include "simhuman/core/version.h"
@@ -99,6 +100,7 @@ CLI::App* AddRunCommand(CLI::App& app, RunFlags* run, CLI::Option** preset) {
   run_cmd->add_option("--config", run->config, "MPC settings JSON file (keys of MpcConfig)");
   run_cmd->add_option("--out", run->out, "Output folder")->capture_default_str();
   run_cmd->add_flag("--video", run->video, "Also render DIR/video.mp4 and DIR/contact_sheet.png");
+  run_cmd->add_flag("--html", run->html, "Also write DIR/replay.html (open it in a browser)");
   run_cmd->add_option("--policy", run->policy,
                       "Walking policy for get-close steps (default assets/policies/walk.pt if "
                       "present)");
@@ -285,6 +287,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   const ClipCommands clip = AddClipCommands(app, &cf);
   ExportFlags ex;
   CLI::App* export_cmd = AddExportCommand(app, &ex);
+  ReplayFlags rf;
+  CLI::App* replay_cmd = AddReplayCommand(app, &rf);
 
   std::ostringstream parse_err;
   std::optional<int> code = ParseArgs(app, args, out, parse_err);
@@ -317,13 +321,14 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     tf.seed_given = seed_opt->count() > 0;
     return TrainCommand(tf, out, err, comm);
   }
+  if (replay_cmd->parsed()) return ReplayCommand(rf, out, err);
   if (clip.convert->parsed()) return ClipConvertCommand(cf, out, err);
   if (clip.gait->parsed()) return ClipGaitCommand(cf, out, err);
   if (export_cmd->parsed()) {
     return ExportPolicyCommand(ex.checkpoint, ex.out, ex.eval_summary, out, err);
   }
   err << "simhuman: error: a command is required; valid commands are: run, plan, eval, scenes, "
-         "train, export-policy, clip (or "
+         "train, export-policy, clip, replay (or "
          "--version, --help)"
       << std::endl;
   return kExitBadInput;

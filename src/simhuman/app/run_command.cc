@@ -12,6 +12,7 @@
 #include "simhuman/eval/reachability.h"
 #include "simhuman/eval/replay.h"
 #include "simhuman/plan/validate.h"
+#include "simhuman/web/replay_html.h"
 #include "simhuman/world/scene.h"
 
 namespace simhuman::app {
@@ -203,6 +204,19 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
     err << "simhuman run: warning: the episode ended early: " << result.end_reason << std::endl;
   }
 
+  if (flags.html) {
+    web::ReplayHtmlOptions page;
+    page.title = "simhuman run: " + scene->name +
+                 (flags.command.empty() ? std::string() : ", \"" + flags.command + "\"");
+    const std::string path = Join(out_dir, "replay.html");
+    absl::Status hs = web::WriteReplayHtml(path, **sim, *chain, trajectory, j, page);
+    if (!hs.ok()) {
+      err << "simhuman run: error: writing the replay page failed (the results are in "
+          << Join(out_dir, "result.json") << "): " << hs.message() << std::endl;
+      return kExitInternal;
+    }
+    out << "replay page: " << path << std::endl;
+  }
   if (flags.video) {
     eval::ReplayOptions replay;
     replay.video_path = Join(out_dir, "video.mp4");

@@ -129,6 +129,37 @@ TEST(RunnerTest, EachAgentFallsByItsOwnPosture) {
   EXPECT_FALSE(IsFall(Posture::kStand, 0.35, 0.7, o));
 }
 
+TEST(RunnerTest, OnFrameInterruptsAndTheNextEpisodeContinuesFromThatState) {
+  Scene s = SitDemo("humanoid", {});
+  HoldController hold(s.world.get(), 0, 0.005);
+  const std::string chair = s.catalog.objects[0].id;
+  plan::ContactChain chain = Ground(
+      "[[[\"" + chair + "\", \"seat surface\", \"pelvis\", \"contact\", \"up\"]]]", s.catalog);
+  RunOptions ro;
+  ro.record = false;
+  std::vector<double> frames_s;
+  ro.on_frame = [&](double t, int step) {
+    EXPECT_EQ(step, 0);
+    frames_s.push_back(t);
+    return t < 0.2;
+  };
+  EpisodeResult first = RunEpisode(*s.world, chain, {&hold}, ro, nullptr);
+  EXPECT_EQ(first.end_reason, "interrupted");
+  // frames every 1/30 s of simulated time, the last one the interrupting one
+  ASSERT_GE(frames_s.size(), 2u);
+  EXPECT_NEAR(frames_s[1] - frames_s[0], 1.0 / ro.record_fps, 0.01);
+  EXPECT_GE(frames_s.back(), 0.2);
+  EXPECT_LT(frames_s.back(), 0.2 + 2.0 / ro.record_fps);
+  const double world_time_s = s.world->data()->time;
+  // the next episode starts at the world's current time, from the state left behind
+  frames_s.clear();
+  EpisodeResult second = RunEpisode(*s.world, chain, {&hold}, ro, nullptr);
+  EXPECT_EQ(second.end_reason, "interrupted");
+  ASSERT_FALSE(frames_s.empty());
+  EXPECT_NEAR(frames_s.front(), 0.0, 1e-9);
+  EXPECT_GT(s.world->data()->time, world_time_s + 0.19);
+}
+
 TEST(RunnerTest, TwoHumansWithDifferentControllersAndPosturesIntegration) {
   // human 0 sits on the chair with the MPC; human 1 stands 2 m to its side with a hold
   // controller that asks for a 4 ms physics step
