@@ -16,6 +16,7 @@
 #include "simhuman/app/planner_factory.h"
 #include "simhuman/app/replay_command.h"
 #include "simhuman/app/run_command.h"
+#include "simhuman/app/serve_command.h"
 #include "simhuman/app/train_command.h"
 #include "simhuman/core/version.h"
 #include "simhuman/dist/mpi_communicator.h"
@@ -289,6 +290,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   CLI::App* export_cmd = AddExportCommand(app, &ex);
   ReplayFlags rf;
   CLI::App* replay_cmd = AddReplayCommand(app, &rf);
+  ServeFlags sf;
+  CLI::Option* serve_preset = nullptr;
+  CLI::App* serve_cmd = AddServeCommand(app, &sf, &serve_preset);
 
   std::ostringstream parse_err;
   std::optional<int> code = ParseArgs(app, args, out, parse_err);
@@ -322,13 +326,17 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     return TrainCommand(tf, out, err, comm);
   }
   if (replay_cmd->parsed()) return ReplayCommand(rf, out, err);
+  if (serve_cmd->parsed()) {
+    sf.preset_given = serve_preset->count() > 0;
+    return ServeCommand(sf, out, err);
+  }
   if (clip.convert->parsed()) return ClipConvertCommand(cf, out, err);
   if (clip.gait->parsed()) return ClipGaitCommand(cf, out, err);
   if (export_cmd->parsed()) {
     return ExportPolicyCommand(ex.checkpoint, ex.out, ex.eval_summary, out, err);
   }
   err << "simhuman: error: a command is required; valid commands are: run, plan, eval, scenes, "
-         "train, export-policy, clip, replay (or "
+         "train, export-policy, clip, replay, serve (or "
          "--version, --help)"
       << std::endl;
   return kExitBadInput;
