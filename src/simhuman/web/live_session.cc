@@ -320,6 +320,25 @@ void LiveSession::SimLoop() {
     run.record_fps = options_.frame_hz;
     run.settle_s = std::numeric_limits<double>::infinity();  // hold the last step until told
     run.on_frame = [&](double, int step) { return OnFrame(*chain, step); };
+    const bool idle = idle_ && chain->steps.size() == 1 && chain->steps[0].label == "stand by";
+    run.progress = [&](const control::ProgressEvent& e) {
+      if (idle || e.ended) return;
+      std::lock_guard<std::mutex> lock(mu_);
+      const std::string text = eval::StepText(chain->steps[e.step]);
+      if (!e.completed) {
+        SetStatus("error", "step " + std::to_string(e.step + 1) + " ('" + text +
+                               "') ran out of time; the human could not do it from here");
+      } else if (e.step + 1 == e.steps_total) {
+        SetStatus("done", "done: " + text + " (holding it; type the next command)");
+      } else {
+        SetStatus("running", "step " + std::to_string(e.step + 1) + " done: " + text);
+      }
+    };
+    // fresh controllers per episode: they tell a new step from the last by its index, and
+    // every episode starts at index 0 (they start from the current state, whatever it is)
+    core::StatusOr<std::vector<std::unique_ptr<control::MpcController>>> fresh =
+        eval::MakeControllers(*world_, options_.config, options_.seed);
+    if (fresh.ok()) controllers_ = std::move(*fresh);
     const double t0 = world_->data()->time;
     core::StatusOr<control::EpisodeResult> result =
         eval::RunWithWalkPolicy(*world_, *chain, controllers_, options_.walk_policy, run, nullptr);

@@ -78,7 +78,7 @@ class LiveSession {
   /// The newest frame if its seq > `after_seq`, waiting up to `timeout` for one; nullopt on
   /// timeout or when the session stops.
   std::optional<LiveFrame> WaitFrame(uint64_t after_seq, std::chrono::milliseconds timeout) const;
-  /// The status ({"seq", "state": "idle"|"planning"|"running"|"question"|"error", "message",
+  /// The status ({"seq", "state": "idle"|"planning"|"running"|"done"|"question"|"error", "message",
   /// "question", "command", "steps", "plan", "paused"}) and its change counter.
   nlohmann::json Status() const;
   uint64_t status_seq() const;

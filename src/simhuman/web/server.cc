@@ -1,8 +1,10 @@
 #include "simhuman/web/server.h"
 
 #include <httplib.h>
+#include <sys/socket.h>
 
 #include <random>
+#include <thread>
 
 #include "simhuman/core/json_io.h"
 #include "simhuman/web/viewer_page.h"
@@ -19,9 +21,14 @@ constexpr int kSpareThreads = 6;
 // an event stream without news sends a comment this often (and finds dead peers)
 constexpr std::chrono::milliseconds kKeepAlive{1000};
 
+// JSON text; bytes of a request that are not UTF-8 (echoed in an error) become U+FFFD
+std::string Dump(const nlohmann::json& j) {
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 void Reply(httplib::Response& res, int code, const nlohmann::json& body) {
   res.status = code;
-  res.set_content(body.dump(), kJson);
+  res.set_content(Dump(body), kJson);
 }
 
 void Fail(httplib::Response& res, int code, const std::string& message) {
@@ -89,6 +96,12 @@ LiveServer::LiveServer(LiveSession* session, const ServerOptions& options)
   http_->new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
   http_->set_payload_max_length(options_.max_body_bytes);
   http_->set_tcp_nodelay(true);
+  // SO_REUSEADDR only: httplib's default also sets SO_REUSEPORT, with which a second server on
+  // a port in use would share it silently instead of failing
+  http_->set_socket_options([](int sock) {
+    int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+  });
   http_->set_read_timeout(5, 0);
   http_->set_write_timeout(5, 0);
   Routes();
@@ -114,10 +127,19 @@ absl::Status LiveServer::Bind() {
                                 "is not this machine's; choose another with --port or --bind");
 }
 
-void LiveServer::Serve() { http_->listen_after_bind(); }
+void LiveServer::Serve() {
+  // either Stop() sees serving_ and waits for the listener to run, or this sees stopping_
+  serving_ = true;
+  if (!stopping_) http_->listen_after_bind();
+  serving_ = false;
+}
 
 void LiveServer::Stop() {
-  if (http_) http_->stop();
+  stopping_ = true;
+  while (serving_ && !http_->is_running()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  http_->stop();
 }
 
 std::string LiveServer::CheckDriver(const std::string& token) {
@@ -163,10 +185,10 @@ void LiveServer::Routes() {
           if (session_->status_seq() != *last_status) {
             nlohmann::json st = session_->Status();
             *last_status = st["seq"].get<uint64_t>();
-            out += "event: status\ndata: " + st.dump() + "\n\n";
+            out += "event: status\ndata: " + Dump(st) + "\n\n";
           }
           std::optional<LiveFrame> f = session_->WaitFrame(*last_frame, kKeepAlive);
-          if (session_->stopping()) return false;
+          if (stopping_ || session_->stopping()) return false;
           if (f) {
             *last_frame = f->seq;
             out += "event: frame\ndata: " + *f->json + "\n\n";

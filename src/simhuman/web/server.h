@@ -42,7 +42,7 @@ class LiveServer {
   absl::Status Bind();
   /// The bound port (after Bind()).
   int port() const { return port_; }
-  /// Serves until Stop(). Call after Bind().
+  /// Serves until Stop() (returns at once if Stop() came first). Call after Bind().
   void Serve();
   void Stop();
 
@@ -57,6 +57,8 @@ class LiveServer {
   std::string page_;
   int port_ = 0;
   std::atomic<int> streams_{0};
+  std::atomic<bool> serving_{false};
+  std::atomic<bool> stopping_{false};  // event streams end, Serve() returns
   std::mutex driver_mu_;
   std::string driver_token_;
   std::chrono::steady_clock::time_point driver_seen_;
