@@ -352,7 +352,10 @@
       return claim();
     }).then(function () {
       statusEl.dataset.ready = '1';
-      setInterval(function () { if (token) post('/drive').catch(function () { claim(); }); }, 3000);
+      setInterval(function () {
+        var fps = parseFloat(statusEl.dataset.fps);
+        if (token) post('/drive', { fps: isFinite(fps) ? fps : 0 }).catch(function () { claim(); });
+      }, 3000);
       var cmd = params.get('command');  // test hook: type this command into the box and send it
       if (cmd && token) window.simhuman.send(cmd);
     }).catch(reportError);

@@ -73,6 +73,25 @@ void PrintProgress(std::ostream& out, const plan::ContactChain& chain,
       << " s (distance " << Fixed(e.distance_m, 3) << " m)" << std::endl;
 }
 
+// --html: DIR/replay.html, the run in one web page; false (the error on `err`) on failure
+bool WriteRunPage(const RunFlags& flags, const std::string& scene_name, const world::SimWorld& sim,
+                  const plan::ContactChain& chain, const control::Trajectory& trajectory,
+                  const nlohmann::ordered_json& j, std::ostream& out, std::ostream& err) {
+  web::ReplayHtmlOptions page;
+  page.title = "simhuman run: " + scene_name +
+               (flags.command.empty() ? std::string() : ", \"" + flags.command + "\"");
+  const std::string path = Join(flags.out, "replay.html");
+  absl::Status st =
+      web::WriteReplayHtml(path, sim, chain, trajectory, nlohmann::json::parse(j.dump()), page);
+  if (!st.ok()) {
+    err << "simhuman run: error: writing the replay page failed (the results are in "
+        << Join(flags.out, "result.json") << "): " << st.message() << std::endl;
+    return false;
+  }
+  out << "replay page: " << path << std::endl;
+  return true;
+}
+
 }  // namespace
 
 int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
@@ -204,18 +223,8 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
     err << "simhuman run: warning: the episode ended early: " << result.end_reason << std::endl;
   }
 
-  if (flags.html) {
-    web::ReplayHtmlOptions page;
-    page.title = "simhuman run: " + scene->name +
-                 (flags.command.empty() ? std::string() : ", \"" + flags.command + "\"");
-    const std::string path = Join(out_dir, "replay.html");
-    absl::Status hs = web::WriteReplayHtml(path, **sim, *chain, trajectory, j, page);
-    if (!hs.ok()) {
-      err << "simhuman run: error: writing the replay page failed (the results are in "
-          << Join(out_dir, "result.json") << "): " << hs.message() << std::endl;
-      return kExitInternal;
-    }
-    out << "replay page: " << path << std::endl;
+  if (flags.html && !WriteRunPage(flags, scene->name, **sim, *chain, trajectory, j, out, err)) {
+    return kExitInternal;
   }
   if (flags.video) {
     eval::ReplayOptions replay;

@@ -156,7 +156,7 @@ class EpisodeLoop {
     obs->agent = a;
     obs->world = &world_;
     obs->data = d_;
-    obs->step_index = step;
+    obs->step_index = step + options_.controller_step_offset;
     obs->task = &tasks_[a];
     world_.AllBodyPoints(d_, a, &obs->body_points);
     if (heightmap_) {

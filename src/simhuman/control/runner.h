@@ -61,6 +61,10 @@ struct RunOptions {
   /// with end_reason "interrupted", and a later RunEpisode on the same world continues from that
   /// state (the live server, web/, ends a plan this way when a new command arrives).
   std::function<bool(double time_s, int step)> on_frame;
+  /// Added to the step index controllers observe (Observation::step_index). Controllers tell a
+  /// new step from the last one by its index, so a caller that runs several episodes on the
+  /// same controllers (the live server) starts each past the steps of the episodes before.
+  int controller_step_offset = 0;
 };
 
 struct EpisodeResult {

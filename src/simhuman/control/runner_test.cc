@@ -27,6 +27,7 @@ class HoldController : public Controller {
       : world_(world), agent_(agent), dt_s_(dt_s) {}
   std::string name() const override { return "hold"; }
   absl::Status Act(const Observation& obs) override {
+    last_step_index_ = obs.step_index;
     if (hold_.empty()) {
       const world::AgentIndex& ix = world_->agent(agent_);
       for (int j = 0; j < ix.num_actuators(); ++j) hold_.push_back(obs.data->ctrl[ix.actuator[j]]);
@@ -41,12 +42,14 @@ class HoldController : public Controller {
   double control_period_s() const override { return 0.03; }
   double physics_timestep_s() const override { return dt_s_; }
   const std::set<double>& steps_seen() const { return steps_seen_; }
+  int last_step_index() const { return last_step_index_; }
 
  private:
   const world::SimWorld* world_;
   int agent_;
   double dt_s_;
   std::vector<double> hold_;
+  int last_step_index_ = -1;
   mutable double last_time_s_ = -1;
   mutable std::set<double> steps_seen_;
 };
@@ -158,6 +161,10 @@ TEST(RunnerTest, OnFrameInterruptsAndTheNextEpisodeContinuesFromThatState) {
   ASSERT_FALSE(frames_s.empty());
   EXPECT_NEAR(frames_s.front(), 0.0, 1e-9);
   EXPECT_GT(s.world->data()->time, world_time_s + 0.19);
+  // controllers kept across episodes see the second one's steps as new ones
+  ro.controller_step_offset = 1;
+  EXPECT_EQ(RunEpisode(*s.world, chain, {&hold}, ro, nullptr).end_reason, "interrupted");
+  EXPECT_EQ(hold.last_step_index(), 1);
 }
 
 TEST(RunnerTest, TwoHumansWithDifferentControllersAndPosturesIntegration) {

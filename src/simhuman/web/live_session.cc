@@ -334,11 +334,9 @@ void LiveSession::SimLoop() {
         SetStatus("running", "step " + std::to_string(e.step + 1) + " done: " + text);
       }
     };
-    // fresh controllers per episode: they tell a new step from the last by its index, and
-    // every episode starts at index 0 (they start from the current state, whatever it is)
-    core::StatusOr<std::vector<std::unique_ptr<control::MpcController>>> fresh =
-        eval::MakeControllers(*world_, options_.config, options_.seed);
-    if (fresh.ok()) controllers_ = std::move(*fresh);
+    // the controllers are kept across episodes; each episode's steps are new ones to them
+    run.controller_step_offset = step_offset_;
+    step_offset_ += static_cast<int>(chain->steps.size());
     const double t0 = world_->data()->time;
     core::StatusOr<control::EpisodeResult> result =
         eval::RunWithWalkPolicy(*world_, *chain, controllers_, options_.walk_policy, run, nullptr);

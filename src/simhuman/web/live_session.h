@@ -138,6 +138,7 @@ class LiveSession {
   double first_frame_ms_ = -1, first_motion_ms_ = -1;
 
   // sim thread only
+  int step_offset_ = 0;  // RunOptions::controller_step_offset of the next episode
   std::chrono::steady_clock::time_point pace_wall0_;
   double pace_sim0_ = 0;
   std::chrono::steady_clock::time_point rtf_wall0_;

@@ -164,6 +164,7 @@ void LiveServer::Routes() {
   s.Get("/api/state", [this](const httplib::Request&, httplib::Response& res) {
     nlohmann::json j = session_->State();
     std::lock_guard<std::mutex> lock(driver_mu_);
+    j["page_fps"] = page_fps_;  // as the driving page last reported it
     j["driver"] =
         !driver_token_.empty() && std::chrono::steady_clock::now() - driver_seen_ <
                                       std::chrono::duration<double>(options_.driver_lease_s);
@@ -200,10 +201,12 @@ void LiveServer::Routes() {
   });
   s.Post("/api/drive", [this](const httplib::Request& req, httplib::Response& res) {
     nlohmann::json body;
-    std::string token, e = ParseBody(req, {"token"}, &body);
+    std::string token, e = ParseBody(req, {"token", "fps"}, &body);
     if (e.empty()) e = StringField(body, "token", false, &token);
+    if (e.empty() && body.contains("fps") && !body["fps"].is_number()) e = "'fps' must be a number";
     if (!e.empty()) return Fail(res, 400, e);
     std::lock_guard<std::mutex> lock(driver_mu_);
+    if (body.contains("fps")) page_fps_ = body["fps"].get<double>();
     const auto now = std::chrono::steady_clock::now();
     const bool held = !driver_token_.empty() &&
                       now - driver_seen_ < std::chrono::duration<double>(options_.driver_lease_s);

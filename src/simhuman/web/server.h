@@ -62,6 +62,7 @@ class LiveServer {
   std::mutex driver_mu_;
   std::string driver_token_;
   std::chrono::steady_clock::time_point driver_seen_;
+  double page_fps_ = -1;  // frames per second the driving page renders (its heartbeat)
 };
 
 }  // namespace simhuman::web
