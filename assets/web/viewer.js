@@ -164,6 +164,9 @@
         var dx = p.x - lastFollow.x, dy = p.y - lastFollow.y;
         controls.target.x += dx; controls.target.y += dy;
         camera.position.x += dx; camera.position.y += dy;
+      } else {  // the first pose shown: frame the human from the front-side
+        controls.target.set(p.x, p.y, 0.7);
+        camera.position.set(p.x + 2.4, p.y - 2.4, 1.9);
       }
       lastFollow = { x: p.x, y: p.y };
     }

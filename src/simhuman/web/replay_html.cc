@@ -11,6 +11,9 @@
 namespace simhuman::web {
 namespace {
 
+// a rate read back from rounded times (30.0003 Hz) is not above max_fps (30 Hz)
+constexpr double kRateTol = 0.01;
+
 struct DataDeleter {
   void operator()(mjData* d) const { mj_deleteData(d); }
 };
@@ -48,7 +51,7 @@ absl::StatusOr<nlohmann::json> ReplayData(const world::SimWorld& world,
     }
   }
   const double fps = trajectory.fps > 0 ? trajectory.fps : 30.0;
-  const size_t stride = static_cast<size_t>(std::max(1.0, std::ceil(fps / options.max_fps - 1e-9)));
+  const size_t stride = static_cast<size_t>(std::max(1.0, std::ceil(fps / options.max_fps - kRateTol)));
 
   std::unique_ptr<mjData, DataDeleter> d(mj_makeData(m));
   auto pose = [&](size_t f) {

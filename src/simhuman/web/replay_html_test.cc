@@ -90,6 +90,28 @@ TEST(ReplayHtmlTest, FramesArePosesOfTheMovingBodiesDecimatedToMaxFps) {
   EXPECT_EQ((*data)["steps"][0], "pelvis on chair000 seat surface");
 }
 
+TEST(ReplayHtmlTest, SeveralHumansAreAllDrawn) {
+  auto spec =
+      world::LoadScene(std::string(SIMHUMAN_SOURCE_DIR) + "/assets/scenes/lounge_two_humans.json");
+  ASSERT_TRUE(spec.ok()) << spec.status();
+  auto catalog = world::BuildCatalog(*spec);
+  ASSERT_TRUE(catalog.ok()) << catalog.status();
+  auto sim = eval::BuildWorld(*spec, *catalog);
+  ASSERT_TRUE(sim.ok()) << sim.status();
+  auto chain = plan::ParseAndGround(R"([[["sofa000", "seat surface", "pelvis", "contact", "up"]]])",
+                                    "<test>", (*sim)->catalog());
+  ASSERT_TRUE(chain.ok()) << chain.status();
+  auto data = ReplayData(**sim, *chain, Sliding(**sim, 4, 30.0, 0.0), nullptr);
+  ASSERT_TRUE(data.ok()) << data.status();
+  int per_agent[2] = {0, 0};
+  for (const auto& b : (*data)["scene"]["bodies"]) {
+    const int a = b["agent"];
+    if (a >= 0 && a < 2) ++per_agent[a];
+  }
+  EXPECT_GT(per_agent[0], 10);
+  EXPECT_EQ(per_agent[0], per_agent[1]);
+}
+
 TEST(ReplayHtmlTest, BadTrajectoriesAreRefused) {
   World w = SitDemo();
   control::Trajectory empty;
