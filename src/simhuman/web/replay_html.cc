@@ -51,7 +51,8 @@ absl::StatusOr<nlohmann::json> ReplayData(const world::SimWorld& world,
     }
   }
   const double fps = trajectory.fps > 0 ? trajectory.fps : 30.0;
-  const size_t stride = static_cast<size_t>(std::max(1.0, std::ceil(fps / options.max_fps - kRateTol)));
+  const size_t stride =
+      static_cast<size_t>(std::max(1.0, std::ceil(fps / options.max_fps - kRateTol)));
 
   std::unique_ptr<mjData, DataDeleter> d(mj_makeData(m));
   auto pose = [&](size_t f) {
