@@ -84,6 +84,10 @@ int ServeCommand(const ServeFlags& flags, std::ostream& out, std::ostream& err) 
     err << "simhuman serve: error: " << bound.message() << std::endl;
     return kExitInternal;
   }
+  if (flags.bind != "127.0.0.1" && flags.bind != "localhost") {
+    err << "simhuman serve: warning: listening on " << flags.bind
+        << ": other machines can reach this server, and it has no authentication" << std::endl;
+  }
   out << "simhuman serve: scene " << scene->name << ", preset " << config->preset << ", planner "
       << flags.planner << "; open http://" << flags.bind << ":" << server.port()
       << "/ (Ctrl-C stops)" << std::endl;

@@ -172,6 +172,30 @@ TEST(LiveServerTest, CommandMakesTheHumanMoveAndStreamsFramesIntegration) {
   EXPECT_GT(s["latency_first_frame_ms"].get<double>(), 0);
 }
 
+TEST(LiveServerTest, ClarifyingQuestionIsAnsweredIntegration) {
+  world::SceneSpec scene = *world::LoadScene("tabletop_demo");
+  LiveOptions live;
+  live.config = *control::MpcConfig::Preset("fast");
+  auto session = LiveSession::Start(scene, std::make_unique<language::OfflinePlanner>(), live);
+  ASSERT_TRUE(session.ok()) << session.status();
+  LiveSession& s = **session;
+  auto wait_for = [&](const std::string& state) {
+    for (int i = 0; i < 100 && s.Status()["state"] != state; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return s.Status();
+  };
+  ASSERT_TRUE(s.SubmitCommand("touch the box").ok());
+  nlohmann::json st = wait_for("question");
+  EXPECT_THAT(st["question"].get<std::string>(), HasSubstr("Which box"));
+  EXPECT_THAT(s.Answer("the purple one").message(), HasSubstr("matches none"));
+  ASSERT_TRUE(s.Answer("2").ok());
+  st = wait_for("running");
+  EXPECT_EQ(st["command"], "touch box002");
+  EXPECT_EQ(st["plan"], 1);
+  EXPECT_TRUE(absl::IsFailedPrecondition(s.Answer("2")));
+}
+
 // random bytes and random bodies to every endpoint; the server answers the next request
 TEST(LiveServerTest, FuzzedRequestsDoNotHurtTheServerIntegration) {
   ServerFixture f;
