@@ -13,7 +13,7 @@ pkgs=(
   libopenmpi-dev openmpi-bin
   clang libfuzzer-14-dev libclang-rt-14-dev
   pybind11-dev python3-dev python3-numpy python3-torch python3-matplotlib
-  blender
+  blender libjs-three chromium
 )
 missing=()
 for p in "${pkgs[@]}"; do

@@ -15,7 +15,9 @@
 #include "simhuman/app/export_command.h"
 #include "simhuman/app/plan_command.h"
 #include "simhuman/app/planner_factory.h"
+#include "simhuman/app/replay_command.h"
 #include "simhuman/app/run_command.h"
+#include "simhuman/app/serve_command.h"
 #include "simhuman/app/train_command.h"
 #include "simhuman/core/version.h"
 #include "simhuman/dist/mpi_communicator.h"
@@ -100,6 +102,7 @@ CLI::App* AddRunCommand(CLI::App& app, RunFlags* run, CLI::Option** preset) {
   run_cmd->add_option("--config", run->config, "MPC settings JSON file (keys of MpcConfig)");
   run_cmd->add_option("--out", run->out, "Output folder")->capture_default_str();
   run_cmd->add_flag("--video", run->video, "Also render DIR/video.mp4 and DIR/contact_sheet.png");
+  run_cmd->add_flag("--html", run->html, "Also write DIR/replay.html (open it in a browser)");
   run_cmd->add_option("--policy", run->policy,
                       "Walking policy for get-close steps (default assets/policies/walk.pt if "
                       "present)");
@@ -309,6 +312,11 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   CLI::App* export_cmd = AddExportCommand(app, &ex);
   ExportRunFlags xf;
   CLI::App* export_run_cmd = AddExportRunCommand(app, &xf);
+  ReplayFlags rf;
+  CLI::App* replay_cmd = AddReplayCommand(app, &rf);
+  ServeFlags sf;
+  CLI::Option* serve_preset = nullptr;
+  CLI::App* serve_cmd = AddServeCommand(app, &sf, &serve_preset);
 
   std::ostringstream parse_err;
   std::optional<int> code = ParseArgs(app, args, out, parse_err);
@@ -341,6 +349,11 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     tf.seed_given = seed_opt->count() > 0;
     return TrainCommand(tf, out, err, comm);
   }
+  if (replay_cmd->parsed()) return ReplayCommand(rf, out, err);
+  if (serve_cmd->parsed()) {
+    sf.preset_given = serve_preset->count() > 0;
+    return ServeCommand(sf, out, err);
+  }
   if (clip.convert->parsed()) return ClipConvertCommand(cf, out, err);
   if (clip.gait->parsed()) return ClipGaitCommand(cf, out, err);
   if (export_run_cmd->parsed()) return ExportRunCommand(xf, out, err);
@@ -348,7 +361,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     return ExportPolicyCommand(ex.checkpoint, ex.out, ex.eval_summary, out, err);
   }
   err << "simhuman: error: a command is required; valid commands are: run, plan, eval, scenes, "
-         "train, export-policy, export, clip (or "
+         "train, export-policy, export, clip, replay, serve (or "
          "--version, --help)"
       << std::endl;
   return kExitBadInput;

@@ -101,6 +101,18 @@ TEST(CliTest, RunRequiresSceneAndPlan) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+TEST(CliTest, ReplayAndServeRefuseBadInput) {
+  const std::string missing = OutDir("no_run");
+  ExpectBadInput(Cli({"replay", missing, "--html", missing + ".html"}),
+                 {"run folder '" + missing + "' does not exist", "scene.json"});
+  ExpectBadInput(Cli({"replay", missing}), {"--html"});
+  ExpectBadInput(Cli({"replay", missing, "--html", "x.html", "--max-fps", "0"}), {"--max-fps"});
+  EXPECT_FALSE(std::filesystem::exists(missing + ".html"));
+  ExpectBadInput(Cli({"serve"}), {"--scene"});
+  ExpectBadInput(Cli({"serve", "--scene", "nowhere"}), {"--scene", "living_room"});
+  ExpectBadInput(Cli({"serve", "--scene", "sit_demo", "--speed", "-1"}), {"--speed"});
+}
+
 TEST(CliTest, PlanPrintsTheChainAndExplains) {
   std::string out = OutDir("plan") + ".json";
   CliRun r = Cli({"plan", "--scene", "sit_demo", "--command", "sit on the chair, then stand up",

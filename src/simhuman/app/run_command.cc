@@ -12,6 +12,7 @@
 #include "simhuman/eval/reachability.h"
 #include "simhuman/eval/replay.h"
 #include "simhuman/plan/validate.h"
+#include "simhuman/web/replay_html.h"
 #include "simhuman/world/scene.h"
 
 namespace simhuman::app {
@@ -70,6 +71,25 @@ void PrintProgress(std::ostream& out, const plan::ContactChain& chain,
   out << "step " << i + 1 << "/" << n << " '" << eval::StepText(chain.steps[i]) << "' "
       << (e.completed ? "done" : "not done, time budget used up") << " at t=" << Fixed(e.time_s, 2)
       << " s (distance " << Fixed(e.distance_m, 3) << " m)" << std::endl;
+}
+
+// --html: DIR/replay.html, the run in one web page; false (the error on `err`) on failure
+bool WriteRunPage(const RunFlags& flags, const std::string& scene_name, const world::SimWorld& sim,
+                  const plan::ContactChain& chain, const control::Trajectory& trajectory,
+                  const nlohmann::ordered_json& j, std::ostream& out, std::ostream& err) {
+  web::ReplayHtmlOptions page;
+  page.title = "simhuman run: " + scene_name +
+               (flags.command.empty() ? std::string() : ", \"" + flags.command + "\"");
+  const std::string path = Join(flags.out, "replay.html");
+  absl::Status st =
+      web::WriteReplayHtml(path, sim, chain, trajectory, nlohmann::json::parse(j.dump()), page);
+  if (!st.ok()) {
+    err << "simhuman run: error: writing the replay page failed (the results are in "
+        << Join(flags.out, "result.json") << "): " << st.message() << std::endl;
+    return false;
+  }
+  out << "replay page: " << path << std::endl;
+  return true;
 }
 
 }  // namespace
@@ -193,6 +213,9 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
     err << "simhuman run: warning: the episode ended early: " << result.end_reason << std::endl;
   }
 
+  if (flags.html && !WriteRunPage(flags, scene->name, **sim, *chain, trajectory, j, out, err)) {
+    return kExitInternal;
+  }
   if (flags.video) {
     eval::ReplayOptions replay;
     replay.video_path = Join(out_dir, "video.mp4");

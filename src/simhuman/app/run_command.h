@@ -23,6 +23,7 @@ struct RunFlags {
   std::string config;         ///< MpcConfig JSON file; empty: the preset
   std::string out = "out";    ///< output folder
   bool video = false;
+  bool html = false;      ///< also write DIR/replay.html (web/replay_html.h)
   double settle_s = 1.5;  ///< keep simulating this long after the last step completes
   /// Walking policy for get-close steps; empty: assets/policies/walk.pt when it exists.
   std::string policy;
@@ -34,7 +35,8 @@ struct RunFlags {
 };
 
 /// Runs the command. Writes DIR/result.json, DIR/trajectory.csv, DIR/scene.json and
-/// DIR/plan.json, then with --video DIR/video.mp4 and DIR/contact_sheet.png. Progress and the
+/// DIR/plan.json, then with --html DIR/replay.html and with --video DIR/video.mp4 and
+/// DIR/contact_sheet.png. Progress and the
 /// summary go to `out`, errors (one line each) to `err`. Returns kExitOk when the episode ran
 /// (whether or not the plan succeeded), kExitBadInput for bad input (detected before anything
 /// is simulated or written), kExitInternal for internal and rendering failures (the results

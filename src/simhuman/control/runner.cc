@@ -78,7 +78,7 @@ class EpisodeLoop {
       const bool ticked = ControlTicks(step);
       if (ended()) break;
       if (ticked && (Track(t, step), ended())) break;
-      Record(t, step);
+      if (Record(t, step), ended()) break;
       if (ActuateAndStep(), ended()) break;
     }
     world_.mutable_model()->opt.timestep = base_dt_;
@@ -156,7 +156,7 @@ class EpisodeLoop {
     obs->agent = a;
     obs->world = &world_;
     obs->data = d_;
-    obs->step_index = step;
+    obs->step_index = step + options_.controller_step_offset;
     obs->task = &tasks_[a];
     world_.AllBodyPoints(d_, a, &obs->body_points);
     if (heightmap_) {
@@ -222,12 +222,16 @@ class EpisodeLoop {
     if (options_.progress) options_.progress(e);
   }
 
+  // a frame every 1/record_fps s: recorded, and shown to on_frame (which may interrupt)
   void Record(double t, int step) {
-    if (!trajectory_ || !options_.record || t + 1e-9 < next_frame_) return;
-    trajectory_->time_s.push_back(t);
-    trajectory_->qpos.emplace_back(d_->qpos, d_->qpos + m_->nq);
-    trajectory_->step_index.push_back(step);
+    if (t + 1e-9 < next_frame_) return;
     next_frame_ += 1.0 / options_.record_fps;
+    if (trajectory_ && options_.record) {
+      trajectory_->time_s.push_back(t);
+      trajectory_->qpos.emplace_back(d_->qpos, d_->qpos + m_->nq);
+      trajectory_->step_index.push_back(step);
+    }
+    if (options_.on_frame && !options_.on_frame(t, step)) Finish("interrupted");
   }
 
   // every agent's controller writes its actuator span; one physics step with a health check

@@ -55,6 +55,16 @@ struct RunOptions {
   /// do not change `success`, which is decided by the plan alone.
   double settle_s = 0.0;
   std::function<void(const ProgressEvent&)> progress;  ///< optional
+  /// Optional: called on the simulating thread every 1/record_fps s of simulated time (whether
+  /// or not `record`), between physics steps, with the episode time (s) and the current step
+  /// index; world.data() then holds a consistent state. Returning false ends the episode there
+  /// with end_reason "interrupted", and a later RunEpisode on the same world continues from that
+  /// state (the live server, web/, ends a plan this way when a new command arrives).
+  std::function<bool(double time_s, int step)> on_frame;
+  /// Added to the step index controllers observe (Observation::step_index). Controllers tell a
+  /// new step from the last one by its index, so a caller that runs several episodes on the
+  /// same controllers (the live server) starts each past the steps of the episodes before.
+  int controller_step_offset = 0;
 };
 
 struct EpisodeResult {
@@ -63,7 +73,8 @@ struct EpisodeResult {
   int steps_total = 0;
   double contact_error_m = -1;  ///< Eq. 10; -1 when nothing was recorded
   bool fell = false;
-  std::string end_reason;  ///< "completed", "timeout", "fell", "unstable: ...", "controller: ..."
+  /// "completed", "timeout", "fell", "interrupted" (on_frame), "unstable: ...", "controller: ..."
+  std::string end_reason;
   double sim_time_s = 0;
   double wall_time_s = 0;
   std::vector<double> step_completion_s;

@@ -27,6 +27,7 @@ class HoldController : public Controller {
       : world_(world), agent_(agent), dt_s_(dt_s) {}
   std::string name() const override { return "hold"; }
   absl::Status Act(const Observation& obs) override {
+    last_step_index_ = obs.step_index;
     if (hold_.empty()) {
       const world::AgentIndex& ix = world_->agent(agent_);
       for (int j = 0; j < ix.num_actuators(); ++j) hold_.push_back(obs.data->ctrl[ix.actuator[j]]);
@@ -41,12 +42,14 @@ class HoldController : public Controller {
   double control_period_s() const override { return 0.03; }
   double physics_timestep_s() const override { return dt_s_; }
   const std::set<double>& steps_seen() const { return steps_seen_; }
+  int last_step_index() const { return last_step_index_; }
 
  private:
   const world::SimWorld* world_;
   int agent_;
   double dt_s_;
   std::vector<double> hold_;
+  int last_step_index_ = -1;
   mutable double last_time_s_ = -1;
   mutable std::set<double> steps_seen_;
 };
@@ -127,6 +130,41 @@ TEST(RunnerTest, EachAgentFallsByItsOwnPosture) {
   EXPECT_TRUE(IsFall(Posture::kLieBack, 0.2, 1.0, o));
   // the standing limit scales with the body: a child's head at 0.35 m is above 0.45 x 0.7
   EXPECT_FALSE(IsFall(Posture::kStand, 0.35, 0.7, o));
+}
+
+TEST(RunnerTest, OnFrameInterruptsAndTheNextEpisodeContinuesFromThatState) {
+  Scene s = SitDemo("humanoid", {});
+  HoldController hold(s.world.get(), 0, 0.005);
+  const std::string chair = s.catalog.objects[0].id;
+  plan::ContactChain chain = Ground(
+      "[[[\"" + chair + "\", \"seat surface\", \"pelvis\", \"contact\", \"up\"]]]", s.catalog);
+  RunOptions ro;
+  ro.record = false;
+  std::vector<double> frames_s;
+  ro.on_frame = [&](double t, int step) {
+    EXPECT_EQ(step, 0);
+    frames_s.push_back(t);
+    return t < 0.2;
+  };
+  EpisodeResult first = RunEpisode(*s.world, chain, {&hold}, ro, nullptr);
+  EXPECT_EQ(first.end_reason, "interrupted");
+  // frames every 1/30 s of simulated time, the last one the interrupting one
+  ASSERT_GE(frames_s.size(), 2u);
+  EXPECT_NEAR(frames_s[1] - frames_s[0], 1.0 / ro.record_fps, 0.01);
+  EXPECT_GE(frames_s.back(), 0.2);
+  EXPECT_LT(frames_s.back(), 0.2 + 2.0 / ro.record_fps);
+  const double world_time_s = s.world->data()->time;
+  // the next episode starts at the world's current time, from the state left behind
+  frames_s.clear();
+  EpisodeResult second = RunEpisode(*s.world, chain, {&hold}, ro, nullptr);
+  EXPECT_EQ(second.end_reason, "interrupted");
+  ASSERT_FALSE(frames_s.empty());
+  EXPECT_NEAR(frames_s.front(), 0.0, 1e-9);
+  EXPECT_GT(s.world->data()->time, world_time_s + 0.19);
+  // controllers kept across episodes see the second one's steps as new ones
+  ro.controller_step_offset = 1;
+  EXPECT_EQ(RunEpisode(*s.world, chain, {&hold}, ro, nullptr).end_reason, "interrupted");
+  EXPECT_EQ(hold.last_step_index(), 1);
 }
 
 TEST(RunnerTest, TwoHumansWithDifferentControllersAndPosturesIntegration) {
