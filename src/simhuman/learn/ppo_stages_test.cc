@@ -75,26 +75,33 @@ TEST(EpisodeWindow, KeepsTheLastEpisodesAndAveragesThem) {
   EXPECT_DOUBLE_EQ(m.fall, 0.5);
 }
 
-// a one-step bandit: action 1 earns advantage +1, action -1 earns -1; PPO moves the mean
-// toward +1 and the value toward the returns
-TEST(PpoUpdate, MovesTheMeanTowardPositiveAdvantages) {
-  torch::manual_seed(4);
-  ActorCritic net = MakeActorCritic(3, 2, 1, {16}, {}, 0.5, 1e-2, {1.f});
+// a one-step bandit: action 1 earns advantage +1, action -1 earns -1, returns 3; the rollout
+// policy is `net` as it is now
+PpoBatch BanditBatch(ActorCritic& net) {
   const int64_t n = 64;
   PpoBatch b;
   b.obs = torch::ones({n, 3});
   b.critic_obs = torch::ones({n, 2});
   b.act = torch::cat({torch::ones({n / 2, 1}), -torch::ones({n / 2, 1})});
+  torch::NoGradGuard ng;
+  b.old_logp =
+      GaussianLogProb(b.act, net.actor->forward(b.obs), net.actor->log_std(), net.act_used);
+  b.old_value = net.critic->forward(b.critic_obs).squeeze(-1);
+  b.adv = torch::cat({torch::ones({n / 2}), -torch::ones({n / 2})});
+  b.ret = torch::full({n}, 3.f);
+  return b;
+}
+
+// PPO moves the mean toward +1 and the value toward the returns
+TEST(PpoUpdate, MovesTheMeanTowardPositiveAdvantages) {
+  torch::manual_seed(4);
+  ActorCritic net = MakeActorCritic(3, 2, 1, {16}, {}, 0.5, 1e-2, {1.f});
+  PpoBatch b = BanditBatch(net);
   torch::Tensor mean0;
   {
     torch::NoGradGuard ng;
     mean0 = net.actor->forward(b.obs[0].unsqueeze(0)).squeeze();
-    b.old_logp =
-        GaussianLogProb(b.act, net.actor->forward(b.obs), net.actor->log_std(), net.act_used);
-    b.old_value = net.critic->forward(b.critic_obs).squeeze(-1);
   }
-  b.adv = torch::cat({torch::ones({n / 2}), -torch::ones({n / 2})});
-  b.ret = torch::full({n}, 3.f);
   PpoUpdateOptions o;
   o.epochs = 4;
   core::Rng rng(1);
@@ -113,19 +120,7 @@ TEST(PpoUpdate, TargetKlEndsTheEpochsEarly) {
   for (double target : {1e-7, 1e3}) {
     torch::manual_seed(4);
     ActorCritic net = MakeActorCritic(3, 2, 1, {16}, {}, 0.5, 1e-2, {1.f});
-    const int64_t n = 64;
-    PpoBatch b;
-    b.obs = torch::ones({n, 3});
-    b.critic_obs = torch::ones({n, 2});
-    b.act = torch::cat({torch::ones({n / 2, 1}), -torch::ones({n / 2, 1})});
-    {
-      torch::NoGradGuard ng;
-      b.old_logp =
-          GaussianLogProb(b.act, net.actor->forward(b.obs), net.actor->log_std(), net.act_used);
-      b.old_value = net.critic->forward(b.critic_obs).squeeze(-1);
-    }
-    b.adv = torch::cat({torch::ones({n / 2}), -torch::ones({n / 2})});
-    b.ret = torch::full({n}, 3.f);
+    PpoBatch b = BanditBatch(net);
     PpoUpdateOptions o;
     o.epochs = 4;
     o.target_kl = target;
