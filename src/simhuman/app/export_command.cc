@@ -6,7 +6,7 @@
 #include "simhuman/app/common.h"
 #include "simhuman/core/json_io.h"
 #include "simhuman/eval/replay.h"
-#include "simhuman/eval/run_folder.h"
+#include "simhuman/eval/run_record.h"
 #include "simhuman/plan/validate.h"
 #include "simhuman/render/bvh_export.h"
 #include "simhuman/render/gltf_export.h"
@@ -25,12 +25,14 @@ absl::Status WriteOutput(const std::string& path, const std::string& bytes) {
 render::QposFrames FramesOf(const control::Trajectory& tr) { return {tr.time_s, tr.qpos}; }
 
 // the video and contact sheet of `run`, with its plan's steps as captions
-int RenderRun(const ExportRunFlags& flags, const eval::RunFolder& run, std::ostream& out,
+int RenderRun(const ExportRunFlags& flags, const eval::RunRecord& run, std::ostream& out,
               std::ostream& err) {
-  const std::string plan_path = (std::filesystem::path(run.dir) / "plan.json").string();
-  core::StatusOr<plan::ContactChain> chain =
-      plan::LoadAndGroundFile(plan_path, run.world->catalog());
-  if (!chain.ok()) return ReportError(err, kCommand, core::Annotate(chain.status(), "--video"));
+  if (!run.chain) {
+    return ReportError(err, kCommand,
+                       absl::NotFoundError("--video/--sheet: run folder '" + flags.run_dir +
+                                           "' has no plan.json (its steps are the captions)"));
+  }
+  const plan::ContactChain* chain = &*run.chain;
   eval::ReplayOptions replay;
   replay.video_path = flags.video;
   replay.sheet_path = flags.sheet;
@@ -77,7 +79,7 @@ int ExportRunCommand(const ExportRunFlags& flags, std::ostream& out, std::ostrea
                                                   " is invalid; valid: (0, 1000], or 0 for the "
                                                   "run's rate"));
   }
-  core::StatusOr<eval::RunFolder> run = eval::LoadRunFolder(flags.run_dir);
+  core::StatusOr<eval::RunRecord> run = eval::LoadRunRecord(flags.run_dir);
   if (!run.ok()) return ReportError(err, kCommand, run.status());
   const world::SimWorld& world = *run->world;
   const int humans = world.num_agents();

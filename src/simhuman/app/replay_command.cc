@@ -34,6 +34,12 @@ int ReplayCommand(const ReplayFlags& flags, std::ostream& out, std::ostream& err
   }
   core::StatusOr<eval::RunRecord> run = eval::LoadRunRecord(flags.run_dir);
   if (!run.ok()) return ReportError(err, kCommand, run.status());
+  if (!run->chain) {
+    return ReportError(err, kCommand,
+                       absl::NotFoundError("run folder '" + flags.run_dir +
+                                           "' has no plan.json; a replay page shows the plan's "
+                                           "steps (simhuman run --out DIR writes it)"));
+  }
   web::ReplayHtmlOptions options;
   options.max_fps = flags.max_fps;
   options.title = "simhuman replay: " + run->scene.name;
@@ -41,7 +47,7 @@ int ReplayCommand(const ReplayFlags& flags, std::ostream& out, std::ostream& err
       run->result["command"].is_string()) {
     options.title += ", \"" + run->result["command"].get<std::string>() + "\"";
   }
-  absl::Status st = web::WriteReplayHtml(flags.html, *run->world, run->chain, run->trajectory,
+  absl::Status st = web::WriteReplayHtml(flags.html, *run->world, *run->chain, run->trajectory,
                                          run->result, options);
   if (!st.ok()) return ReportError(err, kCommand, st);
   std::error_code ec;

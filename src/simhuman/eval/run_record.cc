@@ -62,14 +62,21 @@ core::StatusOr<control::Trajectory> ReadTrajectoryCsv(const std::string& path, c
             "column '" + want[c] + "' holds '" + std::string(cells[c]) + "', not a finite number");
       }
     }
+    if (!t.time_s.empty() && row[0] < t.time_s.back()) {
+      return RowError(path, n, "time_s goes backwards");
+    }
     t.time_s.push_back(row[0]);
     t.step_index.push_back(static_cast<int>(row[1]));
     t.qpos.emplace_back(row.begin() + 2, row.end());
   }
   if (t.qpos.empty()) return RowError(path, 2, "the trajectory has no frames");
-  if (t.time_s.size() > 1) {
-    const double span = t.time_s.back() - t.time_s.front();
-    if (span > 0) t.fps = (t.time_s.size() - 1) / span;
+  if (t.time_s.size() >= 3) {
+    const size_t last = t.time_s.size() - 2;
+    const double span = t.time_s[last] - t.time_s[0];
+    if (span > 1e-6) {
+      const double fps = last / span;
+      t.fps = std::abs(fps - std::round(fps)) < 0.05 * fps ? std::round(fps) : fps;
+    }
   }
   return t;
 }
@@ -84,7 +91,7 @@ core::StatusOr<RunRecord> LoadRunRecord(const std::string& dir) {
                                kRunFiles);
   }
   const fs::path d(dir);
-  for (const char* name : {"scene.json", "plan.json", "trajectory.csv"}) {
+  for (const char* name : {"scene.json", "trajectory.csv"}) {
     if (!fs::exists(d / name, ec)) {
       return absl::NotFoundError("run folder '" + dir + "' has no " + name +
                                  "; a run folder holds " + kRunFiles);
@@ -94,8 +101,10 @@ core::StatusOr<RunRecord> LoadRunRecord(const std::string& dir) {
   SH_ASSIGN_OR_RETURN(r.scene, world::LoadScene((d / "scene.json").string()));
   SH_ASSIGN_OR_RETURN(r.catalog, world::BuildCatalog(r.scene));
   SH_ASSIGN_OR_RETURN(r.world, BuildWorld(r.scene, r.catalog));
-  SH_ASSIGN_OR_RETURN(r.chain,
-                      plan::LoadAndGroundFile((d / "plan.json").string(), r.world->catalog()));
+  if (fs::exists(d / "plan.json", ec)) {
+    SH_ASSIGN_OR_RETURN(r.chain,
+                        plan::LoadAndGroundFile((d / "plan.json").string(), r.world->catalog()));
+  }
   SH_ASSIGN_OR_RETURN(r.trajectory,
                       ReadTrajectoryCsv((d / "trajectory.csv").string(), r.world->model()));
   if (fs::exists(d / "result.json", ec)) {
