@@ -11,7 +11,8 @@ namespace {
 
 // actuator (hinge) order of world::HumanoidJointNames() (as in walk_task.cc)
 constexpr int kAbdY = 1, kRShX = 6, kRElbow = 9, kLShX = 10, kLElbow = 13;
-constexpr int kRHipY = 15, kRKnee = 17, kRAnkY = 19, kLHipY = 22, kLKnee = 24, kLAnkY = 26;
+constexpr int kRHipX = 14, kRHipY = 15, kRKnee = 17, kRAnkX = 18, kRAnkY = 19;
+constexpr int kLHipX = 21, kLHipY = 22, kLKnee = 24, kLAnkX = 25, kLAnkY = 26;
 
 // lift: squat and open until kSqueezeStart, squeeze until kRiseStart, then rise; put-down:
 // lower until kLowerEnd, keep pressing until kReleaseStart, open over kReleaseSeconds, rise
@@ -73,10 +74,15 @@ void FeetOnFloor(const mjModel* m, const mjData* d, const CarryIndex& ix, double
 // legs and trunk of a squat of depth alpha in [0, 1] (arms from `base`; ankles set later)
 Pose Squat(const Pose& base, double alpha) {
   Pose q = base;
-  // a lifting squat: hips and trunk flex more than the knees, which stay behind the box
-  q[kRHipY] = q[kLHipY] = 0.12 + 2.0 * alpha;
-  q[kRKnee] = q[kLKnee] = 0.25 + 1.6 * alpha;
-  q[kAbdY] = 0.05 + 0.65 * alpha;
+  // a lifting squat with the trunk fairly upright: knees bend as much as the hips, and the hips
+  // open so the knees pass beside the box instead of folding the trunk over it
+  q[kRHipY] = q[kLHipY] = 0.12 + 1.7 * alpha;
+  q[kRKnee] = q[kLKnee] = 0.25 + 2.0 * alpha;
+  q[kAbdY] = 0.05 + 0.35 * alpha;
+  q[kRHipX] = q[kLHipX] = 0.45 * alpha;
+  // the ankles roll back by the same angle so the soles stay flat (their x axes are mirrored)
+  q[kRAnkX] = 0.45 * alpha;
+  q[kLAnkX] = -0.45 * alpha;
   return q;
 }
 
@@ -160,6 +166,31 @@ double SolveArms(const mjModel* m, mjData* d, const CarryIndex& ix, Placed* p,
   }
   PoseKinematics(m, d, ix, *p);
   return worst;
+}
+
+// SolveArms from the pose's own arms and from arms reaching forward and down (the
+// Gauss-Newton descent stalls in poor minima from hanging arms); keeps the best
+double SolveArmsFromSeeds(const mjModel* m, mjData* d, const CarryIndex& ix, Placed* p,
+                          const Eigen::Vector3d& left, const Eigen::Vector3d& right) {
+  Placed best = *p;
+  double best_e = SolveArms(m, d, ix, &best, left, right);
+  for (double flex : {0.6, 1.2}) {
+    Placed trial = *p;
+    for (int sh : {kRShX, kLShX}) {
+      trial.q[sh] = 0.2;       // abduction
+      trial.q[sh + 1] = flex;  // forward flexion
+      trial.q[sh + 2] = 0.0;   // rotation
+      trial.q[sh + 3] = 0.3;   // elbow
+    }
+    const double e = SolveArms(m, d, ix, &trial, left, right);
+    if (e < best_e) {
+      best_e = e;
+      best = trial;
+    }
+  }
+  *p = best;
+  PoseKinematics(m, d, ix, *p);
+  return best_e;
 }
 
 double HandRadius(const mjModel* m, const CarryIndex& ix) {
@@ -250,7 +281,7 @@ CarryPoses SolveCarryPoses(const CarryParams& p, const mjModel* m, mjData* scrat
   double e1 = 1e9;
   for (double alpha : {0.2, 0.4, 0.55, 0.7, 0.85, 1.0}) {
     Placed trial = BalancedSquat(m, scratch, ix, nominal, alpha);
-    double e = SolveArms(m, scratch, ix, &trial, open_l, open_r);
+    double e = SolveArmsFromSeeds(m, scratch, ix, &trial, open_l, open_r);
     if (e < e1 - 1e-4) {
       e1 = e;
       squat = trial;

@@ -42,9 +42,9 @@ struct CarryParams {
   double stand_gap_m = 0.20;       ///< stand point to the box's near face (pelvis over the feet)
   double hold_gap_m = 0.16;        ///< pelvis to the held box's near face while carrying
   double hold_rise_m = 0.02;       ///< held box centre above the pelvis
-  double open_m = 0.06;            ///< hands outside the side faces before squeezing
+  double open_m = 0.02;            ///< hands outside the side faces before squeezing
   double squeeze_m = 0.04;         ///< hand targets inside the side faces (the press)
-  double grasp_frac = 0.55;        ///< grasp height as a fraction of the box height
+  double grasp_frac = 0.80;        ///< grasp height as a fraction of the box height
   double arrive_radius_m = 0.2;    ///< at a stand point: within this ...
   double arrive_yaw_rad = 0.2;     ///< ... and heading error below this ...
   double arrive_speed_mps = 0.25;  ///< ... and slower than this
