@@ -16,7 +16,6 @@
 
 #include "simhuman/core/rng.h"
 #include "simhuman/eval/episode.h"
-#include "simhuman/eval/episode.h"
 #include "simhuman/learn/bvh.h"
 #include "simhuman/render/bvh_export.h"
 #include "simhuman/world/scene.h"
