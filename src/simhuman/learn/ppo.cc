@@ -70,6 +70,7 @@ nlohmann::json IterationStats::ToJson() const {
     j["allreduce_bytes"] = allreduce_bytes;
     j["allreduce_s"] = allreduce_s;
     j["sync_s"] = sync_s;
+    j["rank_rollout_s"] = rank_rollout_s;
   }
   if (amp) {
     j["amp_disc_loss"] = amp_disc_loss;
@@ -449,15 +450,20 @@ core::StatusOr<IterationStats> PpoTrainer::Iterate() {
   RolloutBuffer rollout = CollectVecRollout(*m.env, m.net, m.norm, m.rng, m.amp.get(), ro,
                                             [&m](const EpisodeStats& e) { m.OnEpisode(e); });
   PpoBatch batch = rollout.Finish(gamma, static_cast<float>(m.cfg.lambda));
+  const double own_rollout_s = std::chrono::duration<double>(Clock::now() - t0).count();
   if (m.comm->size() > 1) {
     // the ranks' rollouts: one normaliser, global episode counts (and so one curriculum)
     SH_RETURN_IF_ERROR(MergeNormalizer(norm_before, &m.norm, *m.comm));
+    // (and, in one slot per rank, each rank's own rollout time: the spread the sync waits for)
     std::vector<double> counts{m.progress.episodes - episodes0, m.curr_count - count0,
                                m.curr_success - success0};
+    counts.resize(3 + m.comm->size(), 0.0);
+    counts[3 + m.rank()] = own_rollout_s;
     SH_RETURN_IF_ERROR(SumCounts(&counts, *m.comm));
     m.progress.episodes = static_cast<int64_t>(episodes0 + counts[0]);
     m.curr_count = static_cast<int>(count0 + counts[1]);
     m.curr_success = static_cast<int>(success0 + counts[2]);
+    st.rank_rollout_s.assign(counts.begin() + 3, counts.end());
   }
   const core::CommStats comm1 = m.comm->stats();
   m.progress.env_steps += n;

@@ -69,6 +69,9 @@ struct IterationStats {
   int ranks = 1;
   int64_t allreduce_calls = 0, allreduce_bytes = 0;
   double allreduce_s = 0, sync_s = 0;
+  /// Every rank's own rollout time (s, before any wait), by rank: their spread is the wait a
+  /// synchronous step costs (the scaling model's input, docs/SCALING.md).
+  std::vector<double> rank_rollout_s;
   nlohmann::json ToJson() const;
 };
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <thread>
 
+#include "simhuman/control/arm_servo.h"
 #include "simhuman/core/rng.h"
 
 namespace simhuman::control {
@@ -68,6 +69,10 @@ absl::StatusOr<std::unique_ptr<MpcController>> MpcController::Create(const world
   c->seed_ = seed;
   c->plan_model_ = mj_copyModel(nullptr, world->model());
   c->plan_model_->opt.timestep = config.plan_dt_s;
+  if (config.plan_solver_iterations > 0) {
+    c->plan_model_->opt.iterations = config.plan_solver_iterations;
+  }
+  if (config.plan_solver_tolerance > 0) c->plan_model_->opt.tolerance = config.plan_solver_tolerance;
   for (int t = 0; t < config.threads; ++t) c->thread_data_.push_back(mj_makeData(c->plan_model_));
   c->scratch_ = mj_makeData(world->model());
   const mjModel* m = world->model();
@@ -81,15 +86,7 @@ absl::StatusOr<std::unique_ptr<MpcController>> MpcController::Create(const world
     bool neck = names[j].find("neck") != std::string::npos;
     c->noise_scale_[j] = arm ? 1.5 : (neck ? 0.5 : 1.0);
   }
-  for (int side = 0; side < 2; ++side) {
-    const std::string s = side == 0 ? "right_" : "left_";
-    int k = 0;
-    for (const char* n : {"shoulder_x", "shoulder_y", "shoulder_z", "elbow"}) {
-      auto it = std::find(names.begin(), names.end(), s + n);
-      if (it == names.end()) return absl::InternalError("mpc: humanoid has no joint " + s + n);
-      c->arm_dofs_[side][k++] = static_cast<int>(it - names.begin());
-    }
-  }
+  SH_ASSIGN_OR_RETURN(c->arm_dofs_, ArmJointIndices());
   return c;
 }
 
@@ -514,7 +511,6 @@ void MpcController::ServoHands(const Observation& obs) {
   const bool arrived = progress_floor_ >= 1.0 || obs.time_s >= ramp_t0_ + ramp_s_;
   if (config_.hand_servo_gain > 0 && arrived && !recovering_) {
     bool kinematics = false;
-    std::vector<mjtNum> jacp(3 * m->nv);
     for (const ContactTerm& t : task_.terms) {
       if (t.type != plan::ContactType::kContact || !IsHand(t.joint)) continue;
       const Eigen::Vector3d& p = obs.body_points[static_cast<int>(t.joint)];
@@ -528,17 +524,8 @@ void MpcController::ServoHands(const Observation& obs) {
         mj_comPos(m, scratch_);
         kinematics = true;
       }
-      mj_jacSite(m, scratch_, jacp.data(), nullptr, a.site[static_cast<int>(t.joint)]);
-      Eigen::Matrix<double, 3, 4> J;
-      for (int r = 0; r < 3; ++r) {
-        for (int k = 0; k < 4; ++k) {
-          J(r, k) = jacp[r * m->nv + a.hinge_qvel[arm_dofs_[side][k]]];
-        }
-      }
-      // damped least squares: the smallest joint change that moves the hand by `miss`
-      constexpr double kDamping = 0.05;
-      Eigen::Matrix3d JJt = J * J.transpose() + kDamping * kDamping * Eigen::Matrix3d::Identity();
-      Eigen::Vector4d dq = J.transpose() * JJt.ldlt().solve(miss);
+      Eigen::Vector4d dq = ArmStepToward(m, scratch_, a, arm_dofs_[side],
+                                         a.site[static_cast<int>(t.joint)], miss);
       for (int k = 0; k < 4; ++k) {
         double& o = servo_[arm_dofs_[side][k]];
         o = std::clamp(o + config_.hand_servo_gain * dq[k], -config_.hand_servo_max_rad,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "simhuman/control/arm_servo.h"
 #include "simhuman/core/geometry.h"
 
 namespace simhuman::control {
@@ -440,6 +441,43 @@ void PoseInLift(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s, C
   mj_forward(m, d);
 }
 
+namespace {
+
+// The grip servo: while the hands should hold, each hand near its held point is driven
+// `squeeze_m` inside its face by an integral offset on its arm's targets; otherwise the
+// offsets fade out.
+void UpdateGrip(const CarryParams& p, const mjModel* m, const mjData* d, const CarryIndex& ix,
+                const CarryBox& box, CarryState* s) {
+  static const std::array<std::array<int, 4>, 2> kArms = *ArmJointIndices();
+  std::array<bool, 2> active = {false, false};
+  if (p.grip_gain > 0 && CarryHandsOnBox(*s)) {
+    Eigen::Vector3d held[2];
+    CarryHeldPoints(*s, box, &held[1], &held[0]);  // [0] right, [1] left
+    const int axis = s->held_axis;
+    const double left_sign = s->held_left_local[axis] >= 0 ? 1.0 : -1.0;
+    const Eigen::Vector3d left_out = left_sign * box.rot.col(axis);
+    const int sites[2] = {ix.right_hand_site, ix.left_hand_site};
+    for (int side = 0; side < 2; ++side) {
+      const Eigen::Vector3d inward = side == 1 ? -left_out : left_out;
+      const Eigen::Vector3d target = held[side] + p.squeeze_m * inward;
+      const Eigen::Vector3d miss = target - Vec(d->site_xpos + 3 * sites[side]);
+      if (miss.norm() > p.grip_reach_m) continue;
+      Eigen::Vector4d dq = ArmStepToward(m, d, ix.walk.agent, kArms[side], sites[side], miss);
+      for (int k = 0; k < 4; ++k) {
+        double& o = s->grip[kArms[side][k]];
+        o = Clamp(o + p.grip_gain * dq[k], -p.grip_max_rad, p.grip_max_rad);
+      }
+      active[side] = true;
+    }
+  }
+  for (int side = 0; side < 2; ++side) {
+    if (active[side]) continue;
+    for (int j : kArms[side]) s->grip[j] *= 0.8;
+  }
+}
+
+}  // namespace
+
 void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
                  const CarryIndex& ix, const CarryBox& box, CarryState* s) {
   s->phase_time_s += kWalkPolicyDt;
@@ -478,6 +516,7 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
       break;
   }
   UpdateWalkCommand(WalkParams(), d, ix.walk, &s->walk);
+  UpdateGrip(p, m, d, ix, box, s);
 }
 
 bool CarryHandsOnBox(const CarryState& s) {
@@ -563,7 +602,8 @@ void CarryTargets(const CarryIndex& ix, const CarryState& s, const float* action
   CarryReference(s, ctrl28);
   for (int j = 0; j < kWalkActDim; ++j) {
     double a = Clamp(static_cast<double>(action[j]), -kWalkActionClip, kWalkActionClip);
-    ctrl28[j] = Clamp(ctrl28[j] + kWalkActionScale * a, ix.walk.ctrl_lo[j], ix.walk.ctrl_hi[j]);
+    ctrl28[j] = Clamp(ctrl28[j] + s.grip[j] + kWalkActionScale * a, ix.walk.ctrl_lo[j],
+                      ix.walk.ctrl_hi[j]);
   }
 }
 

@@ -54,6 +54,13 @@ struct CarryParams {
   /// held points lie at most this far behind the box's near face (deep boxes are held near
   /// their near end, against the body, as people hold them)
   double max_reach_depth_m = 0.30;
+  /// Grip servo (while the hands should be on the box): each policy step adds this fraction of
+  /// the arm joint change that would bring each hand `squeeze_m` inside its held face to an
+  /// offset on that arm's targets (integral action: the hand closes on the face wherever the
+  /// squat has put the body, and presses harder the longer the face blocks it). 0 disables it.
+  double grip_gain = 0.3;
+  double grip_max_rad = 0.5;  ///< largest offset on one arm joint
+  double grip_reach_m = 0.25;  ///< the servo acts on a hand within this of its target
 };
 
 /// The box being carried, in the world (from the simulation or a perception estimate).
@@ -89,6 +96,7 @@ struct CarryState {
   Eigen::Vector3d held_left_local = Eigen::Vector3d::Zero();
   int held_axis = 1;  ///< box axis (0 x, 1 y) normal to the held faces
   CarryPoses poses;
+  std::array<double, kWalkActDim> grip{};  ///< grip servo offsets on the arm targets, rad
 };
 
 /// Indices the task reads: the walking ones plus the hand sites.
@@ -143,8 +151,9 @@ void PoseInLift(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s, C
 /// Seconds into the lift at which the rise starts (the end of PoseInLift's range).
 double LiftRiseStartSeconds();
 
-/// Advances phases and the walking command by one policy step (call before CarryObservation).
-/// Entering the lift solves its keyframes (SolveCarryPoses) on `scratch`.
+/// Advances phases, the walking command and the grip servo by one policy step (call before
+/// CarryObservation). Entering the lift solves its keyframes (SolveCarryPoses) on `scratch`.
+/// `d` must hold the kinematics of its pose (as mj_step leaves them).
 void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,
                  const CarryIndex& ix, const CarryBox& box, CarryState* s);
 
@@ -156,7 +165,8 @@ void CarryObservation(const mjData* d, const CarryIndex& ix, const CarryState& s
 /// The phase's reference pose (28 hinges): walking gait, lift or put-down blend, holding arms.
 void CarryReference(const CarryState& s, double* q28);
 
-/// PD targets: reference + kWalkActionScale * clip(action), clipped to the actuator ranges.
+/// PD targets: reference + grip + kWalkActionScale * clip(action), clipped to the actuator
+/// ranges.
 void CarryTargets(const CarryIndex& ix, const CarryState& s, const float* action, double* ctrl28);
 
 /// Whether the phase expects the hands on the box (the squeeze part of lift and put-down and
