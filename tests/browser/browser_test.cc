@@ -146,7 +146,7 @@ TEST_F(BrowserTest, ReplayPageDrawsTheHumanAndPlays) {
 TEST_F(BrowserTest, LivePageCommandMakesTheHumanMove) {
   world::SceneSpec scene = *world::LoadScene("sit_demo");
   LiveOptions live;
-  live.config = *control::MpcConfig::Preset("live");
+  live.config = *control::MpcConfig::Preset("fast");
   auto session = LiveSession::Start(scene, std::make_unique<language::OfflinePlanner>(), live);
   ASSERT_TRUE(session.ok()) << session.status();
   ServerOptions o;

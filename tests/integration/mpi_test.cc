@@ -17,6 +17,8 @@
 #include <string>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 namespace {
 namespace fs = std::filesystem;
 
@@ -228,6 +230,16 @@ TEST_F(MpiIntegrationTest, TrainRepeatsWithSameSeedAndRanksAndResumesOnOtherRank
   const std::string log = Slurp(Path("a/log.jsonl"));
   EXPECT_NE(log.find("\"ranks\":2"), std::string::npos);
   EXPECT_NE(log.find("\"allreduce_bytes\""), std::string::npos);
+  // and every rank's own rollout time, both positive (the scaling model's spread)
+  {
+    std::istringstream lines(log);
+    std::string first;
+    std::getline(lines, first);
+    nlohmann::json j = nlohmann::json::parse(first);
+    ASSERT_TRUE(j.contains("rank_rollout_s")) << first;
+    ASSERT_EQ(j["rank_rollout_s"].size(), 2u) << first;
+    for (const auto& t : j["rank_rollout_s"]) EXPECT_GT(t.get<double>(), 0.0) << first;
+  }
   // resumed on one rank, then on three
   Result one = Shell(kBin + " train --resume " + Path("a") + " --steps 16k --quiet");
   ASSERT_EQ(one.exit_code, 0) << one.output;

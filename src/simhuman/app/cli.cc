@@ -97,7 +97,7 @@ CLI::App* AddRunCommand(CLI::App& app, RunFlags* run, CLI::Option** preset) {
   run_cmd->add_option("--seed", run->seed, "Random seed of the controllers")
       ->check(SeedValidator())
       ->capture_default_str();
-  *preset = run_cmd->add_option("--preset", run->preset, "MPC preset: fast, quality or live")
+  *preset = run_cmd->add_option("--preset", run->preset, "MPC preset: fast or quality")
                 ->capture_default_str();
   run_cmd->add_option("--config", run->config, "MPC settings JSON file (keys of MpcConfig)");
   run_cmd->add_option("--out", run->out, "Output folder")->capture_default_str();
@@ -127,7 +127,7 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
       ->check(SeedValidator())
       ->capture_default_str();
   eval_cmd->add_option("--out", ev->out, "Output folder (default out/eval_<suite>)");
-  *preset = eval_cmd->add_option("--preset", ev->preset, "MPC preset: fast, quality or live")
+  *preset = eval_cmd->add_option("--preset", ev->preset, "MPC preset: fast or quality")
                 ->capture_default_str();
   eval_cmd->add_option("--config", ev->config, "MPC settings JSON file (keys of MpcConfig)");
   eval_cmd->add_option("--corpus", ev->corpus,

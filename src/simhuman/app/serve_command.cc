@@ -35,7 +35,7 @@ CLI::App* AddServeCommand(CLI::App& app, ServeFlags* flags, CLI::Option** preset
       ->capture_default_str();
   AddLlmFlags(*cmd, flags->llm);
   cmd->add_option("--seed", flags->seed, "Random seed of the controllers")->capture_default_str();
-  *preset = cmd->add_option("--preset", flags->preset, "MPC preset: live (default), fast or quality")
+  *preset = cmd->add_option("--preset", flags->preset, "MPC preset: fast or quality")
                 ->capture_default_str();
   cmd->add_option("--config", flags->config, "MPC settings JSON file (keys of MpcConfig)");
   cmd->add_option("--policy", flags->policy,

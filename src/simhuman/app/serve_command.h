@@ -23,7 +23,7 @@ struct ServeFlags {
   std::string planner = "offline";
   LlmFlags llm;
   uint64_t seed = 1;
-  std::string preset = "live";  ///< real time with the browser on the same cores
+  std::string preset = "fast";
   bool preset_given = false;
   std::string config;
   std::string policy;

@@ -36,6 +36,9 @@ struct Observation {
   std::vector<float> heightmap;
   int heightmap_size = 0;
   double heightmap_cell_m = 0;
+  /// The caller runs against the wall clock and is behind it (RunOptions::behind_real_time):
+  /// a controller may skip optional work this tick (the MPC skips replans, up to a limit).
+  bool behind_real_time = false;
 };
 
 /// A controller of one agent. Not thread-safe; one instance per agent.

@@ -158,6 +158,8 @@ class EpisodeLoop {
     obs->data = d_;
     obs->step_index = step + options_.controller_step_offset;
     obs->task = &tasks_[a];
+    obs->behind_real_time =
+        options_.behind_real_time && options_.behind_real_time(d_->time - t_start_);
     world_.AllBodyPoints(d_, a, &obs->body_points);
     if (heightmap_) {
       perceive::SensorInput in{&world_, d_, &catalog_, a, d_->time};

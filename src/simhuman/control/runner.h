@@ -65,6 +65,11 @@ struct RunOptions {
   /// new step from the last one by its index, so a caller that runs several episodes on the
   /// same controllers (the live server) starts each past the steps of the episodes before.
   int controller_step_offset = 0;
+  /// Optional, for callers paced by the wall clock (the live server): whether the simulation
+  /// at episode time `time_s` is behind real time. Controllers see it in
+  /// Observation::behind_real_time, and the MPC then replans less often (MpcConfig::
+  /// max_replan_s) instead of letting the simulation fall further behind.
+  std::function<bool(double time_s)> behind_real_time;
 };
 
 struct EpisodeResult {

@@ -114,6 +114,45 @@ TEST(CarryTask, SomeLiftsStartPartWayIntoTheSquat) {
   EXPECT_GT(in_squat, 5);
 }
 
+// The grip servo closes both hands on the held faces during the squeeze, whatever the
+// policy does (here: nothing), and presses: both hands on the box at once, each with a normal
+// force of tens of newtons. (Without it, zero action left the hands short of the faces.)
+TEST(CarryTask, GripServoPressesBothHandsOnTheBoxWithZeroAction) {
+  auto t = CarryTask::Create(1);
+  ASSERT_TRUE(t.ok()) << t.status();
+  std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
+  int gripped = 0, lifts = 0;
+  for (uint64_t seed : {13u, 27u}) {
+    (*t)->Reset(0, seed, obs.data());
+    ASSERT_EQ((*t)->state(0).phase, CarryPhase::kLift) << "seed " << seed << " starts elsewhere";
+    ++lifts;
+    bool both = false;
+    for (int step = 0; step < 100 && (*t)->state(0).phase == CarryPhase::kLift; ++step) {
+      StepInfo info;
+      (*t)->Step(0, act.data(), obs.data(), &info);
+      if (info.terminated) break;
+      const mjData* d = (*t)->data(0);
+      double force[2] = {0, 0};  // left, right
+      for (int c = 0; c < d->ncon; ++c) {
+        const mjContact& con = d->contact[c];
+        const int bg = (*t)->box_geom();
+        if (con.geom1 != bg && con.geom2 != bg) continue;
+        const int other = con.geom1 == bg ? con.geom2 : con.geom1;
+        mjtNum f[6];
+        mj_contactForce((*t)->model(0), d, c, f);
+        if (other == (*t)->index().left_hand_geom) force[0] += f[0];
+        if (other == (*t)->index().right_hand_geom) force[1] += f[0];
+      }
+      both = both || (force[0] > 30 && force[1] > 30);
+    }
+    gripped += both;
+    double grip = 0;
+    for (double g : (*t)->state(0).grip) grip += std::abs(g);
+    EXPECT_GT(grip, 0.0) << "seed " << seed << ": no grip offsets";
+  }
+  EXPECT_EQ(gripped, lifts);
+}
+
 TEST(CarryTask, TheStandPointFacesTheNearFace) {
   control::CarryParams p;
   control::CarryBox box;

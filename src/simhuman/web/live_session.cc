@@ -320,6 +320,7 @@ void LiveSession::SimLoop() {
     run.record_fps = options_.frame_hz;
     run.settle_s = std::numeric_limits<double>::infinity();  // hold the last step until told
     run.on_frame = [&](double, int step) { return OnFrame(*chain, step); };
+    run.behind_real_time = [&](double) { return BehindRealTime(); };
     const bool idle = idle_ && chain->steps.size() == 1 && chain->steps[0].label == "stand by";
     run.progress = [&](const control::ProgressEvent& e) {
       if (idle || e.ended) return;
@@ -385,6 +386,13 @@ bool LiveSession::OnFrame(const plan::ContactChain& chain, int step) {
     pace_sim0_ = world_->data()->time;
   }
   return !(stopping_ || pending_ || reset_requested_);
+}
+
+// whether the simulation is behind its pace (the MPC then replans less often); sim thread
+bool LiveSession::BehindRealTime() const {
+  if (options_.speed <= 0) return false;
+  const double due_s = (world_->data()->time - pace_sim0_) / options_.speed;
+  return std::chrono::duration<double>(Clock::now() - pace_wall0_).count() > due_s;
 }
 
 // waits so that simulated time runs at options_.speed x wall time

@@ -103,6 +103,7 @@ class LiveSession {
   void EndOfEpisode(const std::string& reason, bool fell);
   void SetStatus(const std::string& state, const std::string& message);  // mu_ held
   void Pace();
+  bool BehindRealTime() const;
 
   LiveOptions options_;
   world::SceneSpec scene_;

@@ -40,7 +40,7 @@ class ServerFixture {
   explicit ServerFixture(const ServerOptions& base = {}, double speed = 1.0) {
     world::SceneSpec scene = *world::LoadScene("sit_demo");
     LiveOptions live;
-    live.config = *control::MpcConfig::Preset("live");
+    live.config = *control::MpcConfig::Preset("fast");
     live.speed = speed;
     live.max_queued = 2;
     auto s = LiveSession::Start(scene, std::make_unique<SlowPlanner>(), live);
@@ -175,7 +175,7 @@ TEST(LiveServerTest, CommandMakesTheHumanMoveAndStreamsFramesIntegration) {
 TEST(LiveServerTest, ClarifyingQuestionIsAnsweredIntegration) {
   world::SceneSpec scene = *world::LoadScene("tabletop_demo");
   LiveOptions live;
-  live.config = *control::MpcConfig::Preset("live");
+  live.config = *control::MpcConfig::Preset("fast");
   auto session = LiveSession::Start(scene, std::make_unique<language::OfflinePlanner>(), live);
   ASSERT_TRUE(session.ok()) << session.status();
   LiveSession& s = **session;

@@ -9,7 +9,7 @@ using core::NumberRange;
 using F = core::Field<MpcConfig>;
 
 const std::vector<std::string>& PresetNames() {
-  static const std::vector<std::string> kNames = {"fast", "quality", "live"};
+  static const std::vector<std::string> kNames = {"fast", "quality"};
   return kNames;
 }
 
@@ -38,11 +38,8 @@ const core::FieldTable<MpcConfig>& Table() {
        F("max_ramp_s", &MpcConfig::max_ramp_s, "longest reference ramp, s")
            .In(NumberRange::Closed(0, 30)),
        F("threads", &MpcConfig::threads, "rollout threads").In(NumberRange::Closed(1, 64)),
-       F("plan_solver_iterations", &MpcConfig::plan_solver_iterations,
-         "planning model's solver iterations (0: the simulation's)")
-           .In(NumberRange::Closed(0, 1000)),
-       F("plan_solver_tolerance", &MpcConfig::plan_solver_tolerance,
-         "planning model's solver tolerance (0: the simulation's)")
+       F("max_replan_s", &MpcConfig::max_replan_s,
+         "longest interval between replans when behind real time, s")
            .In(NumberRange::Closed(0, 1)),
        F("w_track", &MpcConfig::w_track, "cost weight: reference tracking").In(kWeight),
        F("w_contact", &MpcConfig::w_contact, "cost weight: contact terms").In(kWeight),
@@ -89,15 +86,6 @@ absl::StatusOr<MpcConfig> MpcConfig::Preset(std::string_view name) {
     c.preset = "quality";
     c.samples = 32;
     c.replan_s = 0.02;
-    return c;
-  }
-  if (name == "live") {
-    // `simhuman serve`: real time with a browser on the same two cores (docs/BENCHMARKS.md)
-    c.preset = "live";
-    c.samples = 10;
-    c.horizon_s = 0.5;
-    c.plan_dt_s = 0.015;
-    c.replan_s = 0.05;
     return c;
   }
   return absl::InvalidArgumentError("unknown preset '" + std::string(name) +

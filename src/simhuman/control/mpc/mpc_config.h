@@ -23,11 +23,11 @@ struct MpcConfig {
   double min_ramp_s = 0.8;
   double max_ramp_s = 3.0;
   int threads = 2;
-  /// Constraint solver of the planning model: iterations (0: the simulation model's) and
-  /// tolerance (0: the simulation model's). Fewer iterations make rollouts with many contacts
-  /// (lying) cheaper at the cost of less exact contact forces in the plan.
-  int plan_solver_iterations = 0;
-  double plan_solver_tolerance = 0;
+  /// Longest interval between replans while the caller is behind real time (the live
+  /// server): replans are skipped, the current plan kept, up to this age. 0 (the default, or
+  /// anything <= replan_s): never skipped. Skipping keeps `serve` at real time but lowers
+  /// the quality of heavy steps (lying; docs/BENCHMARKS.md, issue 18).
+  double max_replan_s = 0;
   // cost weights
   double w_track = 4.0;     ///< body points toward the reference pose trajectory
   double w_contact = 30.0;  ///< contact terms (x adaptive weights, Eq. 9)
@@ -63,9 +63,7 @@ struct MpcConfig {
   /// and the valid range. Missing keys keep the preset's value (the preset named by "preset",
   /// default "fast"). Errors start with `where` (a file name; empty: no prefix).
   static absl::StatusOr<MpcConfig> FromJson(const nlohmann::json& j, std::string_view where);
-  /// "fast" (the default of run and eval), "quality" (more samples, finer planning) or "live"
-  /// (fewer, coarser rollouts: real time while a browser draws on the same cores; serve's
-  /// default).
+  /// "fast" (the default) or "quality" (more samples, finer planning).
   static absl::StatusOr<MpcConfig> Preset(std::string_view name);
 };
 

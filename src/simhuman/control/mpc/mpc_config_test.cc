@@ -47,7 +47,7 @@ TEST(MpcConfigTable, ErrorsNameTheFileTheKeyTheValueAndTheRange) {
             "cfg.json: /samples: expected an integer in [-2147483648, 2147483647], got 1e+300");
   EXPECT_EQ(Error(json{{"w_track", "4"}}), "cfg.json: /w_track: expected a number, got string");
   EXPECT_EQ(Error(json{{"preset", "turbo"}}),
-            "cfg.json: /preset: unknown preset 'turbo'; valid presets are: fast, quality, live");
+            "cfg.json: /preset: unknown preset 'turbo'; valid presets are: fast, quality");
   EXPECT_THAT(Error(json{{"min_ramp_s", 2}, {"max_ramp_s", 1}}),
               HasSubstr("min_ramp_s must not exceed max_ramp_s"));
   EXPECT_EQ(Error(json::array()), "cfg.json: /: expected a JSON object, got array");

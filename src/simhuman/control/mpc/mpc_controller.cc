@@ -69,10 +69,6 @@ absl::StatusOr<std::unique_ptr<MpcController>> MpcController::Create(const world
   c->seed_ = seed;
   c->plan_model_ = mj_copyModel(nullptr, world->model());
   c->plan_model_->opt.timestep = config.plan_dt_s;
-  if (config.plan_solver_iterations > 0) {
-    c->plan_model_->opt.iterations = config.plan_solver_iterations;
-  }
-  if (config.plan_solver_tolerance > 0) c->plan_model_->opt.tolerance = config.plan_solver_tolerance;
   for (int t = 0; t < config.threads; ++t) c->thread_data_.push_back(mj_makeData(c->plan_model_));
   c->scratch_ = mj_makeData(world->model());
   const mjModel* m = world->model();
@@ -156,6 +152,7 @@ double MpcController::SegmentSeconds(const ReferencePose& a, const ReferencePose
 void MpcController::SetReference(double now, const std::vector<ReferencePose>& keys,
                                  const mjData* d) {
   const world::AgentIndex& a = world_->agent(agent_);
+  reference_changed_ = true;
   keys_ = keys;
   key_s_.assign(1, 0.0);
   for (size_t i = 1; i < keys_.size(); ++i) {
@@ -410,6 +407,14 @@ absl::Status MpcController::Act(const Observation& obs) {
 
   if (!recovering_) CorrectAim(obs);
   ServoHands(obs);
+
+  // behind real time (the live server): keep the current plan while it is young enough
+  if (obs.behind_real_time && !reference_changed_ && iteration_ > 0 &&
+      now - nominal_t0_ + config_.replan_s <= config_.max_replan_s + 1e-9) {
+    ++skipped_replans_;
+    return absl::OkStatus();
+  }
+  reference_changed_ = false;
 
   // shift the nominal to start now
   const int K = config_.knots;

@@ -39,6 +39,9 @@ class MpcController : public Controller {
   bool recovering() const { return recovering_; }
   /// Cost of the chosen candidate at the last replan.
   double last_cost() const { return last_cost_; }
+  /// Replans done, and replans skipped because the caller was behind real time.
+  long replans() const { return iteration_; }
+  long skipped_replans() const { return skipped_replans_; }
 
  private:
   using Knots = std::vector<std::array<double, world::kHumanoidDofs>>;
@@ -89,6 +92,8 @@ class MpcController : public Controller {
   // plan
   Knots nominal_;
   double nominal_t0_ = 0;
+  bool reference_changed_ = true;  // since the last replan (a skipped replan must not miss it)
+  long skipped_replans_ = 0;
   long iteration_ = 0;
   double last_cost_ = 0;
   std::array<double, world::kHumanoidDofs> lo_{}, hi_{}, noise_scale_{};

@@ -142,6 +142,38 @@ TEST(MpcControllerTest, SameSeedSameTrajectoryWithOneOrTwoThreadsIntegration) {
   for (size_t i = 0; i < one.size(); ++i) EXPECT_DOUBLE_EQ(one[i], two[i]) << "qpos " << i;
 }
 
+// a caller behind real time (the live server) gets fewer replans, never a plan older than
+// max_replan_s; without max_replan_s, or not behind, every control tick replans
+TEST(MpcControllerTest, SkipsReplansOnlyWhenBehindAndAllowedIntegration) {
+  auto replans = [](bool behind, double max_replan_s, long* skipped) {
+    Fixture s = SitDemo();
+    MpcConfig cfg = *MpcConfig::Preset("fast");
+    cfg.threads = 1;
+    cfg.max_replan_s = max_replan_s;
+    auto ctl = MpcController::Create(s.world.get(), 0, cfg, 42);
+    EXPECT_TRUE(ctl.ok()) << ctl.status();
+    plan::ContactChain chain = SitPlan(s.catalog);
+    RunOptions ro;
+    ro.tracker.budget_s_per_step = 0.6;
+    ro.record = false;
+    ro.behind_real_time = [behind](double) { return behind; };
+    RunEpisode(*s.world, chain, {ctl->get()}, ro, nullptr);
+    *skipped = (*ctl)->skipped_replans();
+    return (*ctl)->replans();
+  };
+  long skipped = -1;
+  const long all = replans(false, 0.15, &skipped);
+  EXPECT_EQ(skipped, 0);
+  EXPECT_GE(all, 19);  // 0.6 s at one replan per 0.03 s
+  EXPECT_EQ(replans(true, 0.0, &skipped), all);
+  EXPECT_EQ(skipped, 0);
+  // at most 0.15 s between replans: one tick in five replans
+  const long behind = replans(true, 0.15, &skipped);
+  EXPECT_EQ(behind + skipped, all);
+  EXPECT_LE(behind, all / 5 + 2);
+  EXPECT_GE(behind, all / 5);
+}
+
 TEST(MpcControllerTest, StandsStillForThreeSecondsIntegration) {
   // a get-close step to the side the human already stands at: stay standing
   Fixture s = SitDemo();
