@@ -25,8 +25,8 @@ core::StatusOr<std::array<std::array<int, 4>, 2>> ArmJointIndices() {
 }
 
 Eigen::Vector4d ArmStepToward(const mjModel* m, const mjData* d, const world::AgentIndex& a,
-                              const std::array<int, 4>& arm, int site,
-                              const Eigen::Vector3d& miss, double damping) {
+                              const std::array<int, 4>& arm, int site, const Eigen::Vector3d& miss,
+                              double damping) {
   std::vector<mjtNum> jacp(3 * m->nv);
   mj_jacSite(m, d, jacp.data(), nullptr, site);
   Eigen::Matrix<double, 3, 4> J;

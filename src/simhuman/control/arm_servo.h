@@ -21,7 +21,7 @@ core::StatusOr<std::array<std::array<int, 4>, 2>> ArmJointIndices();
 /// `miss`, damped least squares with damping `damping` (m). `d` must hold the pose's
 /// kinematics and com positions (what mj_step or mj_kinematics + mj_comPos leave).
 Eigen::Vector4d ArmStepToward(const mjModel* m, const mjData* d, const world::AgentIndex& a,
-                              const std::array<int, 4>& arm, int site,
-                              const Eigen::Vector3d& miss, double damping = 0.05);
+                              const std::array<int, 4>& arm, int site, const Eigen::Vector3d& miss,
+                              double damping = 0.05);
 
 }  // namespace simhuman::control

@@ -529,8 +529,8 @@ void MpcController::ServoHands(const Observation& obs) {
         mj_comPos(m, scratch_);
         kinematics = true;
       }
-      Eigen::Vector4d dq = ArmStepToward(m, scratch_, a, arm_dofs_[side],
-                                         a.site[static_cast<int>(t.joint)], miss);
+      Eigen::Vector4d dq =
+          ArmStepToward(m, scratch_, a, arm_dofs_[side], a.site[static_cast<int>(t.joint)], miss);
       for (int k = 0; k < 4; ++k) {
         double& o = servo_[arm_dofs_[side][k]];
         o = std::clamp(o + config_.hand_servo_gain * dq[k], -config_.hand_servo_max_rad,

@@ -602,8 +602,8 @@ void CarryTargets(const CarryIndex& ix, const CarryState& s, const float* action
   CarryReference(s, ctrl28);
   for (int j = 0; j < kWalkActDim; ++j) {
     double a = Clamp(static_cast<double>(action[j]), -kWalkActionClip, kWalkActionClip);
-    ctrl28[j] = Clamp(ctrl28[j] + s.grip[j] + kWalkActionScale * a, ix.walk.ctrl_lo[j],
-                      ix.walk.ctrl_hi[j]);
+    ctrl28[j] =
+        Clamp(ctrl28[j] + s.grip[j] + kWalkActionScale * a, ix.walk.ctrl_lo[j], ix.walk.ctrl_hi[j]);
   }
 }
 

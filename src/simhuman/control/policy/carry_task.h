@@ -59,7 +59,7 @@ struct CarryParams {
   /// offset on that arm's targets (integral action: the hand closes on the face wherever the
   /// squat has put the body, and presses harder the longer the face blocks it). 0 disables it.
   double grip_gain = 0.3;
-  double grip_max_rad = 0.5;  ///< largest offset on one arm joint
+  double grip_max_rad = 0.5;   ///< largest offset on one arm joint
   double grip_reach_m = 0.25;  ///< the servo acts on a hand within this of its target
 };
 
