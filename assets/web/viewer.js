@@ -27,7 +27,14 @@
   // ---- three.js scene --------------------------------------------------------------------
   var container = $('view');
   var renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
-  renderer.setPixelRatio(1);
+  // Adaptive resolution: a software renderer (Chromium's SwiftShader) is bound by the pixels it
+  // fills, so below 30 fps the page draws fewer of them (the canvas is scaled up to the
+  // window) and above 45 fps it draws more again, between 0.5 and 1 (the device's own ratio,
+  // at most 1). ?resolution=full keeps full resolution.
+  var fullRatio = Math.min(1, window.devicePixelRatio || 1);
+  var adaptive = params.get('resolution') !== 'full';
+  var pixelRatio = fullRatio;
+  renderer.setPixelRatio(pixelRatio);
   renderer.setSize(window.innerWidth, window.innerHeight);
   container.appendChild(renderer.domElement);
   var scene = new THREE.Scene();
@@ -212,7 +219,19 @@
     if (now - fpsT0 >= 1000) {
       var fps = fpsCount * 1000 / (now - fpsT0);
       statusEl.dataset.fps = fps.toFixed(1);
-      $('fps').textContent = fps.toFixed(0) + ' fps';
+      $('fps').textContent = fps.toFixed(0) + ' fps' +
+          (pixelRatio < fullRatio ? ' at ' + Math.round(100 * pixelRatio / fullRatio) + ' %' : '');
+      if (adaptive) {
+        var next = pixelRatio;
+        if (fps < 30 && pixelRatio > 0.5 * fullRatio) next = Math.max(0.5 * fullRatio, pixelRatio - 0.125);
+        if (fps > 45 && pixelRatio < fullRatio) next = Math.min(fullRatio, pixelRatio + 0.125);
+        if (next !== pixelRatio) {
+          pixelRatio = next;
+          renderer.setPixelRatio(pixelRatio);
+          renderer.setSize(window.innerWidth, window.innerHeight);
+        }
+        statusEl.dataset.pixelRatio = pixelRatio.toFixed(3);
+      }
       fpsCount = 0; fpsT0 = now;
     }
     requestAnimationFrame(loop);
