@@ -204,17 +204,24 @@ double PhaseDuration(CarryPhase p) {
   return 0;
 }
 
+// at the stand point (not the walk target, which may lie past it), facing its way, slow
 bool Arrived(const CarryParams& p, const mjData* d, const CarryIndex& ix, const CarryState& s) {
-  double dist, yaw_err;
-  WalkErrors(d, ix.walk, s.walk, &dist, &yaw_err);
+  double to_target, yaw_err;
+  WalkErrors(d, ix.walk, s.walk, &to_target, &yaw_err);
+  Eigen::Vector3d pos;
+  double yaw;
+  PelvisPose(d, ix.walk, &pos, &yaw);
+  const double dist = (pos.head<2>() - s.stand_xy).norm();
   const mjtNum* v = d->qvel + ix.walk.agent.root_qvel;
   return dist < p.arrive_radius_m && std::abs(yaw_err) < p.arrive_yaw_rad &&
          std::hypot(v[0], v[1]) < p.arrive_speed_mps;
 }
 
-void SetWalkTarget(CarryState* s, const Eigen::Vector2d& xy, double yaw) {
+// the stand point `xy`; the walker aims `lead` past it (it stops short of its target)
+void SetWalkTarget(CarryState* s, const Eigen::Vector2d& xy, double yaw,
+                   const Eigen::Vector2d& lead = Eigen::Vector2d::Zero()) {
   s->stand_xy = xy;
-  s->walk.target_xy = xy;
+  s->walk.target_xy = xy + lead;
   s->walk.target_yaw_rad = yaw;
 }
 
@@ -393,7 +400,7 @@ void BeginCarry(const CarryParams& p, const CarryIndex& ix, const mjData* d, con
   s->dest_xy = dest_xy;
   s->poses = CarryPoses();
   Enter(s, CarryPhase::kApproach);
-  SetWalkTarget(s, stand + p.approach_lead_m * dir, FaceYaw(*s));
+  SetWalkTarget(s, stand, FaceYaw(*s), p.approach_lead_m * dir);
 }
 
 void StartLift(const CarryParams& p, const mjModel* m, mjData* scratch, const mjData* d,

@@ -49,8 +49,9 @@ struct CarryParams {
   double arrive_yaw_rad = 0.2;     ///< ... and heading error below this ...
   double arrive_speed_mps = 0.25;  ///< ... and slower than this
   double retreat_m = 0.6;          ///< step back this far after putting down
-  /// the approach aims this far past the stand point: the walker stops short of its target
-  double approach_lead_m = 0.12;
+  /// the approach aims this far past the stand point (arrival is judged at the stand point):
+  /// the walker stops about 0.3 m short of its target
+  double approach_lead_m = 0.30;
   /// held points lie at most this far behind the box's near face (deep boxes are held near
   /// their near end, against the body, as people hold them)
   double max_reach_depth_m = 0.30;
