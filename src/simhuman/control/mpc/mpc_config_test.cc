@@ -26,7 +26,7 @@ TEST(MpcConfigTable, PresetsGiveTheMissingKeysAndToJsonWritesEveryKey) {
   ASSERT_TRUE(fast.ok()) << fast.status();
   EXPECT_EQ(fast->ToJson(), MpcConfig().ToJson());
   json j = quality->ToJson();
-  EXPECT_EQ(j.size(), 25u);  // "preset" and the 24 settings
+  EXPECT_EQ(j.size(), 26u);  // "preset" and the 25 settings
   EXPECT_EQ(j["preset"], "quality");
   EXPECT_TRUE(j["samples"].is_number_integer());
   auto back = MpcConfig::FromJson(json::parse(j.dump()), "cfg.json");
