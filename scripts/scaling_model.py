@@ -39,10 +39,11 @@ def main():
     ap.add_argument('--beta-gbps', type=float, default=1.0)
     a = ap.parse_args()
     rows = [json.loads(l) for l in open(a.log)]
-    rows = [r for r in rows if r['iteration'] >= a.skip]
-    if not rows or 'rank_rollout_s' not in rows[0] or len(rows[0]['rank_rollout_s']) < 2:
-        raise SystemExit(a.log + ': needs a run of 2 or more ranks that logs rank_rollout_s '
-                         '(mpirun -n 2 simhuman train ...), after iteration %d' % a.skip)
+    # the iterations run on 2 or more ranks (a run may have resumed on another rank count)
+    rows = [r for r in rows if r['iteration'] >= a.skip and len(r.get('rank_rollout_s', [])) >= 2]
+    if not rows:
+        raise SystemExit(a.log + ': no iteration after iteration %d ran on 2 or more ranks with '
+                         'rank_rollout_s logged (mpirun -n 2 simhuman train ...)' % a.skip)
     alpha, beta = a.alpha_us * 1e-6, a.beta_gbps * 1e9
     calls = statistics.mean(r['allreduce_calls'] for r in rows)
     size = statistics.mean(r['allreduce_bytes'] for r in rows)
