@@ -389,10 +389,12 @@ bool LiveSession::OnFrame(const plan::ContactChain& chain, int step) {
 }
 
 // whether the simulation is behind its pace (the MPC then replans less often); sim thread
-bool LiveSession::BehindRealTime() const {
-  if (options_.speed <= 0) return false;
+bool LiveSession::BehindRealTime() const { return options_.speed > 0 && BehindS(Clock::now()) > 0; }
+
+// seconds the simulation is behind its pace (negative: ahead), at wall time `now`
+double LiveSession::BehindS(std::chrono::steady_clock::time_point now) const {
   const double due_s = (world_->data()->time - pace_sim0_) / options_.speed;
-  return std::chrono::duration<double>(Clock::now() - pace_wall0_).count() > due_s;
+  return std::chrono::duration<double>(now - pace_wall0_).count() - due_s;
 }
 
 // waits so that simulated time runs at options_.speed x wall time
@@ -407,8 +409,7 @@ void LiveSession::Pace() {
     rtf_sim0_ = sim;
   }
   if (options_.speed <= 0) return;
-  const double due_s = (sim - pace_sim0_) / options_.speed;
-  const double behind_s = std::chrono::duration<double>(now - pace_wall0_).count() - due_s;
+  const double behind_s = BehindS(now);
   if (behind_s > kMaxLagS) {
     pace_wall0_ = now;
     pace_sim0_ = sim;

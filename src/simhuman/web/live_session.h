@@ -104,6 +104,7 @@ class LiveSession {
   void SetStatus(const std::string& state, const std::string& message);  // mu_ held
   void Pace();
   bool BehindRealTime() const;
+  double BehindS(std::chrono::steady_clock::time_point now) const;
 
   LiveOptions options_;
   world::SceneSpec scene_;
