@@ -26,6 +26,7 @@ Eigen::Vector2d CellCentre(const NavGrid& g, int x, int y) {
 
 // cost per metre of a cell with clearance `c`
 double CellCost(double c, const NavConfig& cfg) {
+  if (c < cfg.inside_m) return cfg.inside_cost;
   if (c < cfg.body_radius_m) return cfg.blocked_cost;
   if (c >= cfg.comfort_m) return 1.0;
   double u = (cfg.comfort_m - c) / (cfg.comfort_m - cfg.body_radius_m);
@@ -62,6 +63,10 @@ absl::Status NavConfig::Validate() const {
     return absl::InvalidArgumentError(
         "navigation: need soft_cost >= 0 and blocked_cost >= 1 + soft_cost");
   }
+  if (!(inside_m >= 0 && inside_m <= body_radius_m && inside_cost >= blocked_cost)) {
+    return absl::InvalidArgumentError(
+        "navigation: need 0 <= inside_m <= body_radius_m and inside_cost >= blocked_cost");
+  }
   if (!(margin_m >= 0 && max_extent_m > 0 && max_height_m > min_height_m)) {
     return absl::InvalidArgumentError(
         "navigation: need margin_m >= 0, max_extent_m > 0 and max_height_m > min_height_m");
@@ -78,26 +83,21 @@ double NavGrid::ClearanceAt(const Eigen::Vector2d& p) const {
   return Clearance(c.x, c.y);
 }
 
-core::StatusOr<NavGrid> BuildNavGrid(const core::SceneCatalog& scene,
-                                     const std::vector<Eigen::Vector2d>& extra,
-                                     const NavConfig& cfg) {
-  SH_RETURN_IF_ERROR(cfg.Validate());
-  // the solids that can block a walker, with a bounding circle each for a quick reject
-  struct Solid {
-    const core::Shape* shape;
-    const core::Pose* pose;
-    Eigen::Vector2d centre;
-    double radius;
-    double z_lo, z_hi;
-  };
+namespace {
+
+// a solid that can block a walker, with a bounding circle for a quick reject
+struct Solid {
+  const core::Shape* shape;
+  const core::Pose* pose;
+  Eigen::Vector2d centre;
+  double radius;
+  double z_lo, z_hi;
+};
+
+// the colliding solids between the config's heights; `lo`/`hi` grow to their footprints
+std::vector<Solid> CollectSolids(const core::SceneCatalog& scene, const NavConfig& cfg,
+                                 Eigen::Vector2d* lo, Eigen::Vector2d* hi) {
   std::vector<Solid> solids;
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector2d hi = -lo;
-  for (const Eigen::Vector2d& p : extra) {
-    if (!p.allFinite()) return absl::InvalidArgumentError("navigation: a non-finite point");
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
   for (const core::CatalogObject& o : scene.objects) {
     if (!o.collides) continue;
     for (const core::Shape& s : o.shapes) {
@@ -120,10 +120,41 @@ core::StatusOr<NavGrid> BuildNavGrid(const core::SceneCatalog& scene,
                 std::max(wlo.z(), cfg.min_height_m),
                 std::min(whi.z(), cfg.max_height_m)};
       solids.push_back(sol);
-      lo = lo.cwiseMin(wlo.head<2>());
-      hi = hi.cwiseMax(whi.head<2>());
+      *lo = lo->cwiseMin(wlo.head<2>());
+      *hi = hi->cwiseMax(whi.head<2>());
     }
   }
+  return solids;
+}
+
+// horizontal distance from `p` to the solid, probed at a few heights over the span it covers
+// (boxes exactly, round solids within a few cm)
+double SolidClearance(const Solid& s, const Eigen::Vector2d& p) {
+  int n_h = std::max(2, static_cast<int>(std::ceil((s.z_hi - s.z_lo) / 0.25)) + 1);
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < n_h; ++k) {
+    double z = s.z_lo + (s.z_hi - s.z_lo) * k / (n_h - 1);
+    Eigen::Vector3d q(p.x(), p.y(), z);
+    Eigen::Vector3d np = core::NearestPointOnShape(*s.shape, *s.pose, q);
+    best = std::min(best, (np - q).head<2>().norm());
+  }
+  return best;
+}
+
+}  // namespace
+
+core::StatusOr<NavGrid> BuildNavGrid(const core::SceneCatalog& scene,
+                                     const std::vector<Eigen::Vector2d>& extra,
+                                     const NavConfig& cfg) {
+  SH_RETURN_IF_ERROR(cfg.Validate());
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  for (const Eigen::Vector2d& p : extra) {
+    if (!p.allFinite()) return absl::InvalidArgumentError("navigation: a non-finite point");
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const std::vector<Solid> solids = CollectSolids(scene, cfg, &lo, &hi);
   if (!lo.allFinite()) lo = hi = Eigen::Vector2d::Zero();
   lo -= Eigen::Vector2d::Constant(cfg.margin_m);
   hi += Eigen::Vector2d::Constant(cfg.margin_m);
@@ -139,11 +170,8 @@ core::StatusOr<NavGrid> BuildNavGrid(const core::SceneCatalog& scene,
   g.nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / cfg.cell_m)) + 1;
   g.ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / cfg.cell_m)) + 1;
   g.clearance_m.assign(static_cast<size_t>(g.nx) * g.ny, std::numeric_limits<float>::infinity());
-  // probes at a few heights: the horizontal offset to a solid's nearest point at the height it
-  // spans is the distance to its footprint (boxes exactly, round solids within a few cm)
   const double reach = cfg.comfort_m + 2 * cfg.cell_m;
   for (const Solid& s : solids) {
-    int n_h = std::max(2, static_cast<int>(std::ceil((s.z_hi - s.z_lo) / 0.25)) + 1);
     Cell c0 = ToCell(g, s.centre - Eigen::Vector2d::Constant(s.radius + reach));
     Cell c1 = ToCell(g, s.centre + Eigen::Vector2d::Constant(s.radius + reach));
     for (int x = c0.x; x <= c1.x; ++x) {
@@ -151,12 +179,7 @@ core::StatusOr<NavGrid> BuildNavGrid(const core::SceneCatalog& scene,
         Eigen::Vector2d p = CellCentre(g, x, y);
         if ((p - s.centre).norm() > s.radius + reach) continue;
         float& out = g.clearance_m[static_cast<size_t>(x) * g.ny + y];
-        for (int k = 0; k < n_h; ++k) {
-          double z = s.z_lo + (s.z_hi - s.z_lo) * k / (n_h - 1);
-          Eigen::Vector3d q(p.x(), p.y(), z);
-          Eigen::Vector3d np = core::NearestPointOnShape(*s.shape, *s.pose, q);
-          out = std::min(out, static_cast<float>((np - q).head<2>().norm()));
-        }
+        out = std::min(out, static_cast<float>(SolidClearance(s, p)));
       }
     }
   }
@@ -255,6 +278,52 @@ core::StatusOr<NavPath> PlanRoute(const core::SceneCatalog& scene, const Eigen::
                                   const Eigen::Vector2d& goal, const NavConfig& config) {
   SH_ASSIGN_OR_RETURN(NavGrid grid, BuildNavGrid(scene, {start, goal}, config));
   return PlanRoute(grid, start, goal, config);
+}
+
+double PointClearance(const core::SceneCatalog& scene, const Eigen::Vector2d& p,
+                      const NavConfig& cfg) {
+  Eigen::Vector2d lo = p, hi = p;
+  double best = std::numeric_limits<double>::infinity();
+  for (const Solid& s : CollectSolids(scene, cfg, &lo, &hi)) {
+    if ((p - s.centre).norm() - s.radius > best) continue;
+    best = std::min(best, SolidClearance(s, p));
+  }
+  return best;
+}
+
+Eigen::Vector2d ClearStandingSpot(const core::SceneCatalog& scene, const Eigen::Vector2d& point,
+                                  const Eigen::Vector2d& centre, double radius_m,
+                                  double min_clearance_m, const NavConfig& cfg) {
+  Eigen::Vector2d lo = point, hi = point;
+  const std::vector<Solid> solids = CollectSolids(scene, cfg, &lo, &hi);
+  // clearance capped at min_clearance_m: more room than asked for is not better
+  auto room = [&](const Eigen::Vector2d& p) {
+    double best = min_clearance_m;
+    for (const Solid& s : solids) {
+      if ((p - s.centre).norm() - s.radius >= best) continue;
+      best = std::min(best, SolidClearance(s, p));
+    }
+    return best;
+  };
+  double best_room = room(point);
+  if (best_room >= min_clearance_m) return point;
+  Eigen::Vector2d best = point;
+  double best_dist = 0;
+  const double step = kSpotSearchStepM;
+  const int n = static_cast<int>(std::ceil(radius_m / step));
+  for (int i = -n; i <= n; ++i) {
+    for (int j = -n; j <= n; ++j) {
+      Eigen::Vector2d p = centre + step * Eigen::Vector2d(i, j);
+      if ((p - centre).norm() > radius_m) continue;
+      double r = room(p), dist = (p - point).norm();
+      if (r > best_room + 1e-6 || (r > best_room - 1e-6 && dist < best_dist)) {
+        best = p;
+        best_room = r;
+        best_dist = dist;
+      }
+    }
+  }
+  return best;
 }
 
 RouteFollower::RouteFollower(NavPath path, double lookahead_m)

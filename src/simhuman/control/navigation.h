@@ -5,8 +5,9 @@
 ///
 /// Cost model: a cell's clearance is the horizontal distance from its centre to the nearest
 /// solid that stands between `min_height_m` and `max_height_m` above the floor. Cells with
-/// less clearance than `body_radius_m` cost `blocked_cost` per metre (finite, so a route
-/// always exists: the start or the stand point may lie close to furniture); cells between
+/// less clearance than `body_radius_m` cost `blocked_cost` per metre, and `inside_cost` below
+/// `inside_m` (finite, so a route always exists: the start or the stand point may lie close to
+/// furniture); cells between
 /// `body_radius_m` and `comfort_m` cost more the closer they are; free cells cost 1 per metre.
 ///
 /// Thread-safety: pure functions and plain values.
@@ -27,6 +28,11 @@ struct NavConfig {
   double comfort_m = 0.6;      ///< cells nearer than this cost more
   double soft_cost = 4.0;      ///< extra cost per metre at body_radius_m (falls to 0 at comfort_m)
   double blocked_cost = 60.0;  ///< cost per metre through a blocked cell
+  /// cells nearer than this to a solid are inside furniture (under a table top, between a
+  /// chair's legs) and cost `inside_cost` per metre: a squeeze past a chair beats a walk through
+  /// a table
+  double inside_m = 0.1;
+  double inside_cost = 1000.0;
   double margin_m = 1.5;       ///< the grid reaches this far beyond the objects, start and goal
   double min_height_m = 0.08;  ///< lower solids (rugs, mats) are stepped over
   double max_height_m = 1.8;   ///< higher solids are walked under
@@ -71,6 +77,23 @@ core::StatusOr<NavPath> PlanRoute(const NavGrid& grid, const Eigen::Vector2d& st
 /// BuildNavGrid + PlanRoute.
 core::StatusOr<NavPath> PlanRoute(const core::SceneCatalog& scene, const Eigen::Vector2d& start,
                                   const Eigen::Vector2d& goal, const NavConfig& config = {});
+
+/// Horizontal clearance (m) from `p` to the nearest solid the walker could bump (colliding
+/// objects between the config's heights); infinity in an empty scene.
+double PointClearance(const core::SceneCatalog& scene, const Eigen::Vector2d& p,
+                      const NavConfig& config = {});
+
+/// Grid step (m) of ClearStandingSpot()'s search.
+inline constexpr double kSpotSearchStepM = 0.025;
+
+/// A spot to stand at near `point`: `point` itself when it has at least `min_clearance_m` of
+/// room (PointClearance), else the spot within `radius_m` of `centre` (searched on a
+/// kSpotSearchStepM grid) with the most room up to `min_clearance_m`, the nearest to `point`
+/// among equals. E.g. a chair pushed under a table leaves its stand point inside the table:
+/// the human stands in the gap instead.
+Eigen::Vector2d ClearStandingSpot(const core::SceneCatalog& scene, const Eigen::Vector2d& point,
+                                  const Eigen::Vector2d& centre, double radius_m,
+                                  double min_clearance_m, const NavConfig& config = {});
 
 /// Pure pursuit along a route: the point `lookahead_m` further along the route than the
 /// walker's projection on it. Progress only moves forward.

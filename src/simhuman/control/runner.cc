@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "simhuman/control/navigation.h"
 #include "simhuman/perceive/heightmap.h"
 
 namespace simhuman::control {
@@ -34,6 +35,11 @@ double CommonTimestep(const std::vector<Controller*>& controllers, double world_
 }
 
 namespace {
+
+// a walk point keeps this much room (m, times the human's scale) from furniture when the get-close
+// radius leaves space for it, and stays this far inside that radius
+constexpr double kStandRoomM = 0.2;
+constexpr double kStandSpotMarginM = 0.05;
 
 // one episode's loop state; RunEpisode drives it step by step
 class EpisodeLoop {
@@ -126,6 +132,13 @@ class EpisodeLoop {
       if (tasks_[a].get_close && step + 1 < res_.steps_total) {
         StepTask next = BuildStepTask(chain_.steps[step + 1], catalog_, a, scale, options_.pair);
         RefineApproach(next, scale, &tasks_[a]);
+      }
+      if (tasks_[a].get_close) {
+        // a stand point inside furniture (a chair pushed under a table): stand in the gap
+        const StepTask& t = tasks_[a];
+        tasks_[a].walk_point.head<2>() = ClearStandingSpot(
+            catalog_, t.walk_point.head<2>(), t.stand_point.head<2>(),
+            options_.pair.get_close_radius_m - kStandSpotMarginM, kStandRoomM * scale);
       }
     }
     task_step_ = step;

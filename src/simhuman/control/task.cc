@@ -26,7 +26,7 @@ double BodyPointClearance(core::BodyJoint j) {
     case BodyJoint::kPelvis:
       return 0.03;
     case BodyJoint::kTorso:
-      return 0.10;
+      return 0.06;
     case BodyJoint::kHead:
       return 0.10;
     case BodyJoint::kLeftHand:

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "simhuman/core/geometry.h"
+#include "simhuman/plan/metrics.h"
 
 namespace simhuman::eval {
 namespace {
@@ -35,11 +36,41 @@ double HorizontalDistance(const core::CatalogObject& object, const core::Catalog
   return (nearest - probe).head<2>().norm();
 }
 
+// where a step leaves agent `a` (horizontal): at the stand point of its get-close pair, or on
+// the part its pelvis contacts (a seat, a mattress: the part's point nearest to where it was);
+// elsewhere where it was (hands reach from the spot)
+Eigen::Vector2d WhereStepLeaves(const plan::ContactStep& step, const core::SceneCatalog& scene,
+                                int a, const Eigen::Vector2d& before) {
+  for (const plan::ContactPair& pair : step.pairs) {
+    if (pair.agent != a) continue;
+    const core::CatalogObject* object = scene.Find(pair.object);
+    if (object == nullptr || object->shapes.empty()) continue;
+    if (pair.IsGetClose() && plan::IsSideDirection(pair.direction)) {
+      return plan::StandPoint(*object, pair.direction, plan::PairParams{}.stand_off_m).head<2>();
+    }
+  }
+  for (const plan::ContactPair& pair : step.pairs) {
+    if (pair.agent != a || pair.type != plan::ContactType::kContact) continue;
+    if (pair.joint != core::BodyJoint::kPelvis || pair.part_joint || pair.IsObjectPair()) continue;
+    const core::CatalogObject* object = scene.Find(pair.object);
+    const core::CatalogPart* part = object ? object->FindPart(pair.part) : nullptr;
+    if (part == nullptr || part->shapes.empty()) continue;
+    auto [lo, hi] = core::ShapesBounds(part->shapes);
+    Eigen::Vector3d mid = object->pose.Apply(0.5 * (lo + hi));
+    Eigen::Vector3d nearest = core::NearestPointOnShapes(
+        part->shapes, object->pose, Eigen::Vector3d(before.x(), before.y(), mid.z()));
+    return nearest.head<2>();
+  }
+  return before;
+}
+
 }  // namespace
 
 absl::Status CheckWithinReach(const plan::ContactChain& chain, const core::SceneCatalog& scene,
                               const std::vector<world::HumanSpec>& humans, double max_reach_m) {
   std::set<std::pair<int, std::string>> approached;  // (agent, object id)
+  std::vector<Eigen::Vector2d> where_now;              // where each agent stands or sits
+  for (const world::HumanSpec& h : humans) where_now.push_back(h.pos_xy);
   for (size_t s = 0; s < chain.steps.size(); ++s) {
     const plan::ContactStep& step = chain.steps[s];
     // nearest checked part per (agent, object) in this step
@@ -70,7 +101,7 @@ absl::Status CheckWithinReach(const plan::ContactChain& chain, const core::Scene
                                           pair.where + " (object '" + pair.object + "', part '" +
                                           pair.part + "')");
       }
-      double d = HorizontalDistance(*object, *part, humans[pair.agent].pos_xy);
+      double d = HorizontalDistance(*object, *part, where_now[pair.agent]);
       auto it =
           std::find_if(checks.begin(), checks.end(), [&](const auto& c) { return c.first == key; });
       if (it == checks.end()) {
@@ -86,16 +117,28 @@ absl::Status CheckWithinReach(const plan::ContactChain& chain, const core::Scene
         std::string n = std::to_string(s + 1);
         std::string where = step.where.empty() ? "/steps/" + std::to_string(s) : step.where;
         std::string prefix = chain.source.empty() ? std::string() : chain.source + ": ";
+        std::string from = s == 0 ? "where human " + std::to_string(key.first) + " starts"
+                                  : "where step " + std::to_string(s) + " leaves human " +
+                                        std::to_string(key.first);
         return absl::InvalidArgumentError(
             prefix + "step " + n + " (" + where + "): object '" + key.second + "' (part '" +
-            nearest.part + "') is " + Metres(nearest.distance_m) + " m from human " +
-            std::to_string(key.first) + " and no get-close step precedes step " + n +
-            "; walking is not implemented yet: start the human within " + Metres(limit) +
-            " m of it, or add a get-close step for '" + key.second + "' before step " + n);
+            nearest.part + "') is " + Metres(nearest.distance_m) + " m from " + from +
+            ", beyond the " + Metres(limit) + " m a human reaches without walking; add a " +
+            "get-close step for '" + key.second + "' before step " + n +
+            " (the human then walks there)");
       }
     }
     for (const auto& c : checks) approached.insert(c.first);
+    // walking to an object leaves every other object behind
+    for (const auto& key : closing) {
+      for (auto it = approached.begin(); it != approached.end();) {
+        it = it->first == key.first ? approached.erase(it) : std::next(it);
+      }
+    }
     approached.insert(closing.begin(), closing.end());
+    for (size_t a = 0; a < where_now.size(); ++a) {
+      where_now[a] = WhereStepLeaves(step, scene, static_cast<int>(a), where_now[a]);
+    }
   }
   return absl::OkStatus();
 }

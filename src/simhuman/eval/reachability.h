@@ -1,7 +1,8 @@
 #pragma once
-/// A pre-flight check of a plan against where the humans start. Walking is not implemented yet,
-/// so a plan whose first contact with an object needs the human to cross the room cannot
-/// succeed; it is rejected up front with a message that says what to change.
+/// A pre-flight check of a plan against where the humans start and where its steps take them.
+/// Humans walk only in get-close steps, so a contact step on an object out of reach of where the
+/// previous steps leave the human cannot succeed; it is rejected up front with a message that
+/// says what to change.
 
 #include <vector>
 
@@ -16,22 +17,25 @@ namespace simhuman::eval {
 /// walking.
 inline constexpr double kMaxReachM = 1.0;
 
-/// Checks that every object a human first touches is within reach of its start.
+/// Checks that every object a human touches is within reach of where it is at that step.
 ///
-/// Going through the steps in order, an object counts as "approached" by agent a once a step
-/// holds a get-close pair of a for it, or a contact pair of a on it that passed this check.
-/// For every other step with contact pairs of agent a on an object it has not approached, the
-/// step passes when at least one of those pairs' parts is within `max_reach_m` x the human's
-/// scale (horizontal distance from the human's start position to the part's nearest point).
-/// Not-contact and not-care pairs, and pairs whose target is a body joint, are not checked.
-/// Carry steps are not checked (a carry walks its carriers to the object), and count as an
-/// approach.
+/// The check follows each agent through the steps: it starts where the human starts; a step
+/// with a get-close pair of the agent leaves it at that pair's plan::StandPoint(); otherwise a
+/// step whose pelvis contacts a part (a seat, a mattress) leaves it on that part (its point
+/// nearest to where it was); other steps leave it where it was. An object counts as
+/// "approached" by agent a once a step holds a get-close pair of a for it (which leaves every
+/// other object behind), or a contact pair of a on it that passed this check. For every other
+/// step with contact pairs of agent a on an object it has not approached, the step passes when
+/// at least one of those pairs' parts is within `max_reach_m` x the human's scale (horizontal
+/// distance from where the agent is to the part's nearest point). Not-contact and not-care
+/// pairs, and pairs whose target is a body joint, are not checked. Carry steps are not checked
+/// (a carry walks its carriers to the object), and count as an approach.
 ///
 /// `chain` must be grounded against `scene` (plan::ValidateAndGround) and `humans` must hold a
 /// human for every agent the plan names (scene.num_agents()). Error (InvalidArgument):
-///   "<source>: step 2 (/steps/1): object 'bed000' (part 'mattress') is 3.2 m from human 0 and
-///   no get-close step precedes step 2; walking is not implemented yet: start the human within
-///   1.0 m of it, or add a get-close step for 'bed000' before step 2"
+///   "<source>: step 4 (/steps/3): object 'bed000' (part 'mattress') is 3.2 m from where step 3
+///   leaves human 0, beyond the 1.0 m a human reaches without walking; add a get-close step for
+///   'bed000' before step 4 (the human then walks there)"
 absl::Status CheckWithinReach(const plan::ContactChain& chain, const core::SceneCatalog& scene,
                               const std::vector<world::HumanSpec>& humans,
                               double max_reach_m = kMaxReachM);

@@ -70,11 +70,11 @@ class Parser {
         chain_.form = ChainForm::kSimhuman;
         SH_RETURN_IF_ERROR(ParseObjectForm(j));
       } else if (j.contains(std::string(kChainOfContactsKey))) {
-        chain_.form = ChainForm::kTuple;
-        SH_RETURN_IF_ERROR(
-            Wrap(core::CheckKeys(j, {std::string(kChainOfContactsKey), "obj"}, Display(""))));
-        const std::string key(kChainOfContactsKey);
-        SH_RETURN_IF_ERROR(ParseTupleSteps(j.at(key), Join("", key)));
+        SH_RETURN_IF_ERROR(ParseScenePlanEntry(j, ""));
+      } else if (j.size() == 1 && j.begin().value().is_object() &&
+                 j.begin().value().contains(std::string(kChainOfContactsKey))) {
+        // a ScenePlan entry wrapped in its key, as UniHSI's files write it ({"0000": {...}})
+        SH_RETURN_IF_ERROR(ParseScenePlanEntry(j.begin().value(), Join("", j.begin().key())));
       } else {
         return Error("",
                      "expected key 'steps' (simhuman form) or 'chain of contacts' (UniHSI "
@@ -97,6 +97,15 @@ class Parser {
   absl::StatusOr<T> Wrap(absl::StatusOr<T> value) const {
     if (!value.ok()) return core::Annotate(value.status(), source_);
     return value;
+  }
+
+  // a UniHSI ScenePlan entry {"obj": {...}, "chain of contacts": [...]} at `where`
+  absl::Status ParseScenePlanEntry(const nlohmann::json& j, const std::string& where) {
+    chain_.form = ChainForm::kTuple;
+    SH_RETURN_IF_ERROR(
+        Wrap(core::CheckKeys(j, {std::string(kChainOfContactsKey), "obj"}, Display(where))));
+    const std::string key(kChainOfContactsKey);
+    return ParseTupleSteps(j.at(key), Join(where, key));
   }
 
   // ---- simhuman object form ----

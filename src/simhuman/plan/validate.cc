@@ -116,6 +116,22 @@ absl::Status GroundJoint(ContactChain& chain, int s, int p, const core::BodyPoin
   return absl::OkStatus();
 }
 
+// of several parts a generic name matched ("arm sofa style44": both arms), the one on the side
+// of a sided joint ("left hand" -> "left arm", as UniHSI's Table 8 pairs them); all of them
+// when the joint has no side or no part has it
+std::vector<const core::CatalogPart*> SameSideParts(
+    const std::vector<const core::CatalogPart*>& parts, const std::string& joint_name) {
+  for (const char* side : {"left ", "right "}) {
+    if (joint_name.rfind(side, 0) != 0) continue;
+    std::vector<const core::CatalogPart*> same;
+    for (const core::CatalogPart* part : parts) {
+      if (part->name.rfind(side, 0) == 0) same.push_back(part);
+    }
+    if (same.size() == 1) return same;
+  }
+  return parts;
+}
+
 absl::Status GroundPair(ContactChain& chain, int s, int p, const core::SceneCatalog& scene) {
   SH_RETURN_IF_ERROR(CheckPairShape(chain, s, p));
   ContactPair& pair = chain.steps[s].pairs[p];
@@ -140,6 +156,7 @@ absl::Status GroundPair(ContactChain& chain, int s, int p, const core::SceneCata
   SH_RETURN_IF_ERROR(GroundJoint(chain, s, p, points));
 
   std::vector<const core::CatalogPart*> parts = LookupPart(*object, pair.part);
+  if (parts.size() > 1) parts = SameSideParts(parts, pair.joint_name);
   if (parts.size() > 1) {
     std::vector<std::string> names;
     for (const core::CatalogPart* part : parts) names.push_back(part->name);

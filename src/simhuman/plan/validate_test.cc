@@ -128,12 +128,24 @@ TEST(PlanValidateTest, MalformedAmbiguousPart) {
 }
 
 TEST(PlanValidateTest, AmbiguousAfterDroppingDigits) {
-  // "arm sofa style" matches no name exactly, and both arms once digits are dropped
+  // "arm sofa style" matches no name exactly, and both arms once digits are dropped; a joint
+  // without a side does not pick one
   absl::StatusOr<ContactChain> chain =
-      ParseAndGround(R"([[["chair000", "arm sofa style", "left hand", "contact", "up"]]])",
+      ParseAndGround(R"([[["chair000", "arm sofa style", "torso", "contact", "up"]]])",
                      "<string>", MakeTestScene());
   ASSERT_FALSE(chain.ok());
   EXPECT_THAT(std::string(chain.status().message()), HasSubstr("ambiguous part"));
+}
+
+TEST(PlanValidateTest, ASidedJointPicksTheArmOnItsSide) {
+  // UniHSI's Table 6 writes "arm sofa style44"/"48" for the two arms; the hand names the side
+  absl::StatusOr<ContactChain> chain = ParseAndGround(
+      R"([[["chair000", "arm sofa style", "right hand", "contact", "up"],
+           ["chair000", "armrest", "left elbow", "contact", "up"]]])",
+      "<string>", MakeTestScene());
+  ASSERT_TRUE(chain.ok()) << chain.status();
+  EXPECT_EQ(chain->steps[0].pairs[0].part, "right arm");
+  EXPECT_EQ(chain->steps[0].pairs[1].part, "left arm");
 }
 
 TEST(PlanValidateTest, MalformedAgentOutOfRange) {

@@ -238,6 +238,25 @@ core::StatusOr<double> PlanRotationZ(const json& rotate, const std::string& wher
 // in UniHSI's sceneplan files (docs/FORMATS.md).
 double PlanYawOffset(const std::string& type) { return type == "bed" ? M_PI : M_PI / 2; }
 
+// true when the entry's contact pairs name an arm part ("arm sofa style44", "left armrest") of
+// object `id`
+bool ChainNamesArmOf(const json& entry, const std::string& id) {
+  for (const char* key : {"chain of contacts", "contact_pairs"}) {
+    if (!entry.contains(key) || !entry.at(key).is_array()) continue;
+    for (const json& step : entry.at(key)) {
+      if (!step.is_array()) continue;
+      for (const json& pair : step) {
+        if (!pair.is_array() || pair.size() < 2 || !pair[0].is_string() || !pair[1].is_string())
+          continue;
+        if (pair[0].get<std::string>() != id) continue;
+        std::string part = core::NormalizeName(pair[1].get<std::string>());
+        if (part.find("arm") != std::string::npos) return true;
+      }
+    }
+  }
+  return false;
+}
+
 core::StatusOr<SceneSpec> ParsePlanForm(const json& j, const std::string& where,
                                         const std::string& name, std::vector<std::string>* ptrs) {
   SH_RETURN_IF_ERROR(core::CheckKeys(j, kPlanKeys, where));
@@ -272,6 +291,8 @@ core::StatusOr<SceneSpec> ParsePlanForm(const json& j, const std::string& where,
     ObjectSpec spec_o;
     spec_o.type = match->second;
     spec_o.id = plan_name + it.key();
+    // PartNet's chairs include armchairs: a chair whose arms the plan touches is one
+    if (spec_o.type == "chair" && ChainNamesArmOf(j, spec_o.id)) spec_o.type = "armchair";
     SH_ASSIGN_OR_RETURN(
         std::vector<double> t,
         core::ReadNumbers(o.at("transfer"), core::JsonPointer(w, "transfer"), 3, 3));

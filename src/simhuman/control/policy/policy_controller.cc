@@ -24,10 +24,40 @@ struct WalkPolicyController::Impl {
   Eigen::Vector2d route_goal = Eigen::Vector2d::Constant(1e9);
   std::string route_error;
   bool final_turn = false;  ///< close enough to turn to the walk point's heading
+  // leaving a cramped start (stood up between a chair and a table): a short step, heading kept,
+  // to the first point of the route with room to turn
+  bool exiting = false;
+  Eigen::Vector2d exit_point = Eigen::Vector2d::Zero();
+  double exit_yaw_rad = 0;
+
+  // starts an exit step when `here` is cramped and the route leaves the cramped spot
+  void PlanExit(const Observation& obs, const Eigen::Vector2d& here);
 
   // the target the policy steers to this step: the stand point, or the carrot on the route
   void SteerTo(const Observation& obs);
 };
+
+void WalkPolicyController::Impl::PlanExit(const Observation& obs, const Eigen::Vector2d& here) {
+  exiting = false;
+  const core::SceneCatalog& scene = obs.world->catalog();
+  if (PointClearance(scene, here, nav) >= kExitRoomM || follower.empty()) return;
+  const std::vector<Eigen::Vector2d>& pts = follower.path().points;
+  double travelled = 0;
+  for (size_t k = 1; k < pts.size() && travelled < kMaxExitM; ++k) {
+    const Eigen::Vector2d a = pts[k - 1], b = pts[k];
+    const double len = (b - a).norm();
+    for (double u = 0; u < len && travelled + u < kMaxExitM; u += kExitProbeM) {
+      const Eigen::Vector2d p = a + (b - a) * (u / len);
+      if (PointClearance(scene, p, nav) < kExitRoomM) continue;
+      Eigen::Vector3d pos;
+      PelvisPose(obs.data, ix, &pos, &exit_yaw_rad);
+      exit_point = p;
+      exiting = true;
+      return;
+    }
+    travelled += len;
+  }
+}
 
 void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
   const Eigen::Vector2d goal = obs.task->walk_point.head<2>();
@@ -54,6 +84,7 @@ void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
         route_error.clear();
         follower = RouteFollower(*std::move(path), kRouteLookaheadM);
         carrot = follower.Update(here);
+        PlanExit(obs, here);
       } else {
         // no route (e.g. a huge scene): steer straight at the walk point
         route_error = std::string(path.status().message());
@@ -61,6 +92,12 @@ void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
         carrot.final = true;
       }
     }
+    if (exiting && (here - exit_point).norm() > kExitDoneM) {
+      state.target_xy = exit_point;
+      state.target_yaw_rad = exit_yaw_rad;
+      return;
+    }
+    exiting = false;
     if (!carrot.final) {
       state.target_xy = carrot.point;
       state.target_yaw_rad = carrot.heading_rad;
@@ -115,6 +152,7 @@ void WalkPolicyController::Restart() {
   impl_->follower = RouteFollower();
   impl_->route_goal = Eigen::Vector2d::Constant(1e9);
   impl_->final_turn = false;
+  impl_->exiting = false;
 }
 
 void WalkPolicyController::set_navigation(bool on) { impl_->navigate = on; }

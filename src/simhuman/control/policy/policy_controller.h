@@ -59,6 +59,14 @@ class WalkPolicyController : public Controller {
   static constexpr double kFinalTurnM = 0.35;
   static constexpr double kRouteLookaheadM = 1.2;
   static constexpr double kReplanOffRouteM = 0.8;
+  /// A route that starts with less than kExitRoomM of room (PointClearance: stood up between a
+  /// chair and a table) begins with a short step, heading kept (sideways or back), to its first
+  /// point with that room, searched every kExitProbeM within kMaxExitM; the step ends within
+  /// kExitDoneM of it.
+  static constexpr double kExitRoomM = 0.25;
+  static constexpr double kExitProbeM = 0.05;
+  static constexpr double kMaxExitM = 1.2;
+  static constexpr double kExitDoneM = 0.12;
 
   struct Impl;
 
