@@ -6,6 +6,8 @@
 
 #include "simhuman/core/geometry.h"
 #include "simhuman/core/rng.h"
+#include "simhuman/eval/plan_json.h"
+#include "simhuman/eval/sceneplan_levels.h"
 #include "simhuman/world/objects.h"
 
 namespace simhuman::eval {
@@ -43,25 +45,6 @@ constexpr double kApproachYawJitterDeg = 20.0;
 // sit-far: distance from the seat's front face and bearing off its front direction
 constexpr double kSitFarLoM = 1.0, kSitFarHiM = 6.0, kSitFarBearingDeg = 60.0;
 
-json Pair(const std::string& object, const std::string& part, const std::string& joint,
-          const std::string& contact, const std::string& direction) {
-  return {{"object", object},
-          {"part", part},
-          {"joint", joint},
-          {"contact", contact},
-          {"direction", direction}};
-}
-
-json GetClose(const std::string& object, const std::string& side) {
-  return {{"object", object}, {"part", "none"}, {"joint", "none"}, {"direction", side}};
-}
-
-json Step(const std::string& label, std::vector<json> pairs) {
-  return {{"label", label}, {"pairs", pairs}};
-}
-
-json Plan(std::vector<json> steps) { return {{"steps", steps}}; }
-
 // world xy of a point given in the frame of an object at `pos` turned by `yaw`
 Eigen::Vector2d LocalToWorld(const Eigen::Vector3d& pos, double yaw, double x, double y) {
   return pos.head<2>() + Eigen::Vector2d(std::cos(yaw) * x - std::sin(yaw) * y,
@@ -92,7 +75,7 @@ double PartCentreY(const core::CatalogObject& obj, const std::string& part) {
 }
 
 json SitStep(const std::string& id) {
-  return Step("sit on " + id, {Pair(id, "seat surface", "pelvis", "contact", "up")});
+  return PlanStep("sit on " + id, {PlanPair(id, "seat surface", "pelvis", "contact", "up")});
 }
 
 // sit: back to the seat, 0.30-0.50 m in front of its front face
@@ -113,16 +96,16 @@ core::Status MakeSit(core::Rng& rng, EpisodeSpec* out) {
   out->object_id = o.id;
   out->scene.objects = {o};
   out->scene.humans = {h};
-  out->plan = Plan({SitStep(o.id)});
+  out->plan = PlanOf({SitStep(o.id)});
   return absl::OkStatus();
 }
 
 void LieSteps(const std::string& id, std::vector<json>* steps) {
   steps->push_back(
-      Step("sit on the edge of " + id, {Pair(id, "mattress", "pelvis", "contact", "up"),
-                                        Pair(id, "pillow", "head", "not contact", "up")}));
-  steps->push_back(Step("lie down on " + id, {Pair(id, "mattress", "pelvis", "contact", "up"),
-                                              Pair(id, "pillow", "head", "contact", "up")}));
+      PlanStep("sit on the edge of " + id, {PlanPair(id, "mattress", "pelvis", "contact", "up"),
+                                        PlanPair(id, "pillow", "head", "not contact", "up")}));
+  steps->push_back(PlanStep("lie down on " + id, {PlanPair(id, "mattress", "pelvis", "contact", "up"),
+                                              PlanPair(id, "pillow", "head", "contact", "up")}));
 }
 
 // lie: back to the bed's long side (its front), at the spot where sitting down and lying back
@@ -149,7 +132,7 @@ core::Status MakeLie(core::Rng& rng, EpisodeSpec* out, bool mid_bed = false) {
   out->scene.humans = {h};
   std::vector<json> steps;
   LieSteps(o.id, &steps);
-  out->plan = Plan(steps);
+  out->plan = PlanOf(steps);
   return absl::OkStatus();
 }
 
@@ -174,8 +157,8 @@ core::Status MakeReach(core::Rng& rng, EpisodeSpec* out) {
   out->joint = left ? core::BodyJoint::kLeftHand : core::BodyJoint::kRightHand;
   out->scene.objects = {m};
   out->scene.humans = {h};
-  out->plan = Plan({Step("touch " + m.id + " with the " + hand,
-                         {Pair(m.id, kMarkerPart, hand, "contact", "none")})});
+  out->plan = PlanOf({PlanStep("touch " + m.id + " with the " + hand,
+                         {PlanPair(m.id, kMarkerPart, hand, "contact", "none")})});
   return absl::OkStatus();
 }
 
@@ -202,7 +185,7 @@ core::Status MakeScenePlanSimple(core::Rng& rng, EpisodeSpec* out) {
   out->object_id = o.id;
   out->scene.objects = {o};
   out->scene.humans = {h};
-  out->plan = Plan({Step("get close to " + o.id, {GetClose(o.id, "front")}), SitStep(o.id)});
+  out->plan = PlanOf({PlanStep("get close to " + o.id, {PlanGetClose(o.id, "front")}), SitStep(o.id)});
   return absl::OkStatus();
 }
 
@@ -230,7 +213,7 @@ core::Status MakeSitFar(core::Rng& rng, EpisodeSpec* out) {
   out->object_id = o.id;
   out->scene.objects = {o};
   out->scene.humans = {FarStart(rng, o, built)};
-  out->plan = Plan({Step("walk to " + o.id, {GetClose(o.id, "front")}), SitStep(o.id)});
+  out->plan = PlanOf({PlanStep("walk to " + o.id, {PlanGetClose(o.id, "front")}), SitStep(o.id)});
   return absl::OkStatus();
 }
 
@@ -243,9 +226,9 @@ core::Status MakeLieFar(core::Rng& rng, EpisodeSpec* out) {
   out->object_id = o.id;
   out->scene.objects = {o};
   out->scene.humans = {FarStart(rng, o, built)};
-  std::vector<json> steps = {Step("walk to " + o.id, {GetClose(o.id, "front")})};
+  std::vector<json> steps = {PlanStep("walk to " + o.id, {PlanGetClose(o.id, "front")})};
   LieSteps(o.id, &steps);
-  out->plan = Plan(steps);
+  out->plan = PlanOf(steps);
   return absl::OkStatus();
 }
 
@@ -270,9 +253,9 @@ core::Status MakeReachFar(core::Rng& rng, EpisodeSpec* out) {
   out->joint = left ? core::BodyJoint::kLeftHand : core::BodyJoint::kRightHand;
   out->scene.objects = {m};
   out->scene.humans = {FarStart(rng, m, *built)};
-  out->plan = Plan({Step("walk to " + m.id, {GetClose(m.id, "front")}),
-                    Step("touch " + m.id + " with the " + hand,
-                         {Pair(m.id, kMarkerPart, hand, "contact", "none")})});
+  out->plan = PlanOf({PlanStep("walk to " + m.id, {PlanGetClose(m.id, "front")}),
+                    PlanStep("touch " + m.id + " with the " + hand,
+                         {PlanPair(m.id, kMarkerPart, hand, "contact", "none")})});
   return absl::OkStatus();
 }
 
@@ -289,6 +272,10 @@ const std::vector<SuiteDef>& Suites() {
       {"reach", C::kMpc, X::kHandAtPoint, MakeReach, "touch a point with one hand"},
       {"sceneplan-simple", C::kMpc, X::kNone, MakeScenePlanSimple,
        "UniHSI's simple ScenePlan level (<= 3 steps, one object)"},
+      {"sceneplan-mid", C::kMpc, X::kNone, MakeScenePlanMid,
+       "UniHSI's medium ScenePlan level (> 3 steps, one object) in a furnished room"},
+      {"sceneplan-hard", C::kMpc, X::kNone, MakeScenePlanHard,
+       "UniHSI's hard ScenePlan level (> 3 steps, several objects) in a furnished room"},
       {"sit-far", C::kMpc, X::kNone, MakeSitFar, "walk 1-6 m to a seat, then sit"},
       {"lie-far", C::kMpc, X::kLieAlongBed, MakeLieFar, "walk 1-6 m to a bed, then lie"},
       {"reach-far", C::kMpc, X::kHandAtPoint, MakeReachFar, "walk 1-6 m, then touch a point"},
