@@ -167,6 +167,7 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
 
   control::RunOptions options;
   options.settle_s = flags.settle_s;
+  options.fall_head_height_m = config->fall_head_height_m;
   options.record = true;
   options.progress = [&](const control::ProgressEvent& e) { PrintProgress(out, *chain, e); };
   control::Trajectory trajectory;

@@ -34,6 +34,11 @@ struct ProgressEvent {
   std::string label;
 };
 
+/// The one fall rule of every suite (docs/EVAL_PROTOCOLS.md): a human has fallen when its head
+/// point is below kFallHeadHeightM x its scale, or below kLyingFallHeadHeightM while its step
+/// asks it to lie. The walk suite applies the same rule to its standing walker.
+inline constexpr double kFallHeadHeightM = 0.5;
+
 struct RunOptions {
   plan::PairParams pair;
   /// Our default asks a step to hold for 0.5 s before it counts (UniHSI counts the first
@@ -49,7 +54,7 @@ struct RunOptions {
   int heightmap_size = 16;
   double heightmap_cell_m = 0.1;
   bool record = true;
-  double fall_head_height_m = 0.45;  ///< head below this (x scale) while not lying: a fall
+  double fall_head_height_m = kFallHeadHeightM;  ///< head below this (x scale) while not lying
   /// After the last step completes, keep simulating (controllers keep the last step) for this
   /// long, so a video shows the final pose held. Falls in this span are reported (`fell`) but
   /// do not change `success`, which is decided by the plan alone.

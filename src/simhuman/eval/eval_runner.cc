@@ -161,6 +161,7 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   run.record = render;
   // after the plan completes the episode goes on for kEvalSettleS: the final pose must hold
   run.settle_s = kEvalSettleS;
+  run.fall_head_height_m = options.config.fall_head_height_m;
   control::Trajectory trajectory;
   EpisodeRecord rec;
   rec.index = index;

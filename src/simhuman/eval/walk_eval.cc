@@ -5,6 +5,7 @@
 
 #include "simhuman/control/policy/policy_controller.h"
 #include "simhuman/control/policy/walk_task.h"
+#include "simhuman/control/runner.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/replay.h"
@@ -13,6 +14,13 @@
 namespace simhuman::eval {
 
 namespace {
+
+// the height of human 0's head point (the fall rule's point, control/runner.h)
+double HeadPointZ(const world::SimWorld& world, const mjData* d) {
+  std::vector<Eigen::Vector3d> pts;
+  world.AllBodyPoints(d, 0, &pts);
+  return pts[static_cast<int>(core::BodyJoint::kHead)].z();
+}
 
 // an episode's target pose for the walker (world frame; m, rad)
 struct WalkTarget {
@@ -193,7 +201,7 @@ core::StatusOr<WalkEpisode> RunWalkEpisode(const WalkEvalOptions& options, int i
       tally.arm_raise += HigherArmRaise(d, ids) * 180 / M_PI;
       ++tally.arm_n;
     }
-    if (!h.ok() || d->xpos[3 * ix.head_body + 2] < 0.8) {
+    if (!h.ok() || HeadPointZ(*world, d) < control::kFallHeadHeightM * world->agent(0).scale) {
       ep.fell = true;
       break;
     }

@@ -82,6 +82,7 @@ std::shared_ptr<Episode> Run(const std::shared_ptr<Plan>& plan, uint64_t seed,
 
   control::RunOptions options;
   options.settle_s = settle_s;
+  options.fall_head_height_m = mpc.fall_head_height_m;
   options.record = true;
   // an exception of the callback is kept and raised after the episode (not through the runner)
   std::unique_ptr<py::error_already_set> callback_error;
