@@ -96,8 +96,9 @@ TEST(OfflinePlannerTest, SitVariantsFollowTable8) {
             sit + ", chair000|back surface|torso|not contact|none");
   // both hands (elbows) on the knees or armrests: direction none; one hand: up (Table 8)
   EXPECT_EQ(PlanText("sit_demo", "sit down with your hands on your knees"),
-            sit + ", chair000|left knee|left hand|contact|none, "
-                  "chair000|right knee|right hand|contact|none");
+            sit +
+                ", chair000|left knee|left hand|contact|none, "
+                "chair000|right knee|right hand|contact|none");
   EXPECT_EQ(PlanText("sit_demo", "sit down with your left hand on your left knee"),
             sit + ", chair000|left knee|left hand|contact|up");
   EXPECT_EQ(PlanText("sit_demo", "sit down, left hand on your stomach"),
@@ -163,8 +164,8 @@ TEST(OfflinePlannerTest, WrappersAndFillersAreStripped) {
 
 TEST(OfflinePlannerTest, Idioms) {
   const std::string lie = "bed003|mattress|pelvis|contact|up, bed003|pillow|head|contact|up";
-  for (const char* c : {"hop into bed", "hit the hay", "get some sleep",
-                        "lie down with your head on the pillow"}) {
+  for (const char* c :
+       {"hop into bed", "hit the hay", "get some sleep", "lie down with your head on the pillow"}) {
     EXPECT_EQ(PlanText("living_room", c), lie) << c;
   }
   EXPECT_EQ(PlanText("bedroom", "go to bed"),
@@ -205,8 +206,9 @@ TEST(OfflinePlannerTest, PosesInPrepositionalPhrases) {
 }
 
 TEST(OfflinePlannerTest, SynonymsAndTypos) {
-  const std::string arm = "armchair004|none|none|none|front / "
-                          "armchair004|seat surface|pelvis|contact|up";
+  const std::string arm =
+      "armchair004|none|none|none|front / "
+      "armchair004|seat surface|pelvis|contact|up";
   EXPECT_EQ(PlanText("living_room", "sit in the red chair"), arm);  // the only red seat
   EXPECT_EQ(PlanText("living_room", "sit in the armchiar"), arm);
   EXPECT_EQ(PlanText("living_room", "lay down on teh bed"),

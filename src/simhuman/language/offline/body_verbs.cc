@@ -169,11 +169,10 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c, bool in_pose)
     if (side.empty()) side = t[hand] == "hands" ? "both" : "right";
   }
   // object words: everything after the last verb/preposition that is not the hand phrase
-  static const std::set<std::string> kLead = {"touch", "reach", "grab",  "put",    "rest",  "on",
-                                              "flat",
-                                              "onto",  "to",    "at",    "for",    "with",  "your",
-                                              "left",  "right", "both",  "hand",   "hands", "lie",
-                                              "in",    "keep",  "using", "either", "each"};
+  static const std::set<std::string> kLead = {"touch", "reach", "grab",  "put",   "rest",   "on",
+                                              "flat",  "onto",  "to",    "at",    "for",    "with",
+                                              "your",  "left",  "right", "both",  "hand",   "hands",
+                                              "lie",   "in",    "keep",  "using", "either", "each"};
   // the object is the span that follows the first preposition after the verb, up to "with"
   size_t b = 0;
   while (b < t.size() && kLead.count(t[b])) {
@@ -226,8 +225,8 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c, bool in_pose)
   // sitting, a reach within arm's length keeps the seat; anything else stands up first
   if (posture_ != Posture::kStand && on_ != o && FootprintDistance(*o, pos_) > kNearEnoughM) {
     if (in_pose) {
-      return Invalid("\"" + c + "\": " + Describe(*o) + " is out of reach from " +
-                     Describe(*on_) + "; sit closer to it first");
+      return Invalid("\"" + c + "\": " + Describe(*o) + " is out of reach from " + Describe(*on_) +
+                     "; sit closer to it first");
     }
     EnsureFree(nullptr);
   }

@@ -127,8 +127,8 @@ absl::Status Session::Clause(const Tokens& words) {
   const std::string& v = t[i];
   // "hands on your knees", "with your left elbow on the armrest": a pose stated, not ordered
   static const std::set<std::string> kPoseVerbs = {
-      "put",  "place", "rest", "lean",   "cross", "raise", "turn", "keep", "move",
-      "sit",  "lie",   "type", "recline", "touch", "reach", "grab", "stack"};
+      "put", "place", "rest", "lean",    "cross", "raise", "turn", "keep", "move",
+      "sit", "lie",   "type", "recline", "touch", "reach", "grab", "stack"};
   attributive_ = kPoseVerbs.count(v) == 0;
   auto next = [&](size_t k) { return k < t.size() ? t[k] : std::string(); };
   // "put your hands", "put left hand", "rest both elbows": a body part follows the verb

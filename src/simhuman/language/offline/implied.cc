@@ -75,9 +75,9 @@ void Session::AddSeatedReach(const CatalogObject& o, const std::string& part,
     hands.push_back(Pair(o, part, SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
                          ContactType::kContact, Direction::kNone));
   }
-  const std::string what = (sides.size() == 2 ? std::string("both hands on the ")
-                                              : sides[0] + " hand on the ") +
-                           part + " of " + Describe(o);
+  const std::string what =
+      (sides.size() == 2 ? std::string("both hands on the ") : sides[0] + " hand on the ") + part +
+      " of " + Describe(o);
   StepDraft* last = steps_.empty() ? nullptr : &steps_.back();
   if (in_pose && last != nullptr && last->object == on_ && last->clause == clause_ &&
       (last->kind == StepDraft::kSit || last->kind == StepDraft::kLie)) {
@@ -191,12 +191,11 @@ absl::Status Session::Type(const Tokens& t, size_t b, const std::string& c) {
     o = fit[0];
   }
   if (!HasPart(*o, "keyboard")) {
-    return Invalid("\"" + c + "\": " + Describe(*o) + " has no keyboard; objects with one: " +
-                   ObjectsWith(scene_, "keyboard"));
+    return Invalid("\"" + c + "\": " + Describe(*o) +
+                   " has no keyboard; objects with one: " + ObjectsWith(scene_, "keyboard"));
   }
   focus_ = o;
-  if (posture_ != Posture::kSit || on_ == nullptr ||
-      FootprintDistance(*o, pos_) > kNearEnoughM) {
+  if (posture_ != Posture::kSit || on_ == nullptr || FootprintDistance(*o, pos_) > kNearEnoughM) {
     // typing is done seated: the seat at the laptop first
     SH_ASSIGN_OR_RETURN(const CatalogObject* seat, SeatAt(*o, c));
     if (!(on_ == seat && posture_ == Posture::kSit)) {

@@ -90,7 +90,8 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
       {{"plop", "down"}, {"sit"}},
       {{"plonk", "down"}, {"sit"}},
       {{"sit", "back"}, {"recline"}},
-      {{"leaning"}, {"with", "lean"}},  // a participle states a pose ("sit, leaning back")
+      {{"leaning"}, {"with", "lean"}},
+      {{"reclining"}, {"recline"}},  // a participle states a pose ("sit, leaning back")
       {{"lie", "back"}, {"lie"}},
       {{"lay", "back"}, {"lie"}},
       {{"hop", "into"}, {"rest", "in"}},
@@ -198,7 +199,7 @@ const std::map<std::string, std::string>& Synonyms() {
       {"tap", "touch"},       {"touches", "touch"},    {"reaches", "reach"},
       {"reaching", "reach"},  {"grasp", "grab"},       {"hold", "grab"},
       {"take", "grab"},       {"place", "put"},        {"set", "put"},
-      {"rest", "rest"},       {"leaned", "lean"},     {"onto", "onto"},
+      {"rest", "rest"},       {"leaned", "lean"},      {"onto", "onto"},
       {"upon", "on"},         {"atop", "onto"},        {"palm", "hand"},
       {"palms", "hands"},     {"belly", "stomach"},    {"tummy", "stomach"},
       {"abdomen", "stomach"}, {"tummy", "stomach"},    {"backwards", "back"},
@@ -215,7 +216,7 @@ const std::map<std::string, std::string>& Synonyms() {
       {"lug", "carry"},       {"drop", "put"},         {"perch", "sit"},
       {"plop", "sit"},        {"plonk", "sit"},        {"resting", "with"},
       {"typing", "type"},     {"pls", "please"},       {"plz", "please"},
-      {"but", "and"},         {"reclining", "recline"}, {"flattest", "flat"},
+      {"but", "and"},         {"flattest", "flat"},
   };
   return *words;
 }
@@ -223,13 +224,13 @@ const std::map<std::string, std::string>& Synonyms() {
 // words dropped everywhere: fillers and determiners (relations and "your" are kept)
 const std::set<std::string>& Fillers() {
   static const auto* words = new std::set<std::string>{
-      "the",      "a",         "an",      "please",   "now",      "just",   "first",  "slowly",
-      "gently",   "carefully", "quickly", "also",     "again",    "down",   "over",   "kindly",
-      "could",    "you",       "can",     "should",   "i",        "want",   "would",  "like",
-      "to_",      "for",       "this",    "my",       "both_",    "along",  "there_", "comfortably",
-      "straight", "located",   "placed",  "standing", "sitting_", "lying_", "one_",   "ok",
-      "okay",     "so",        "u",       "thanks",   "thank",    "thx",    "some",   "yeah",
-      "alright"};
+      "the",      "a",        "an",        "please",      "now",      "just",    "first",
+      "slowly",   "gently",   "carefully", "quickly",     "also",     "again",   "down",
+      "over",     "kindly",   "could",     "you",         "can",      "should",  "i",
+      "want",     "would",    "like",      "to_",         "for",      "this",    "my",
+      "both_",    "along",    "there_",    "comfortably", "straight", "located", "placed",
+      "standing", "sitting_", "lying_",    "one_",        "ok",       "okay",    "so",
+      "u",        "thanks",   "thank",     "thx",         "some",     "yeah",    "alright"};
   return *words;
 }
 
@@ -294,18 +295,18 @@ const std::set<std::string>& Relations() {
 
 const std::set<std::string>& OtherWords() {
   static const auto* words = new std::set<std::string>{
-      "then",    "and",     "sit",     "lie",      "rest",       "stand",   "up",     "go",
-      "move",    "touch",   "reach",   "grab",     "put",        "stack",   "cross",  "lean",
-      "raise",   "turn",    "keep",    "with",     "while",      "your",    "hand",   "hands",
-      "elbow",   "elbows",  "knee",    "knees",    "other_knee", "foot",    "feet",   "leg",
-      "legs",    "stomach", "head",    "shoulder", "side",       "left",    "right",  "both",
-      "forward", "front",   "in",      "at",       "to",         "of",      "it",     "them",
-      "that",    "which",   "is",      "are",      "its",        "away",    "from",   "off",
-      "big",     "small",   "tall",    "short",    "far",        "nearby",  "middle", "centre",
-      "center",  "there",   "yours",   "own",      "one",        "edge",    "each",   "against",
-      "dont",    "lean",    "place",   "using",    "either",     "s",       "geton",  "carry",
-      "here",    "team2",   "team3",   "team4",    "teamall",    "teamany", "door",   "doors",
-      "doorway", "exit",    "entrance", "recline", "type",   "flat"};
+      "then",    "and",     "sit",      "lie",      "rest",       "stand",   "up",     "go",
+      "move",    "touch",   "reach",    "grab",     "put",        "stack",   "cross",  "lean",
+      "raise",   "turn",    "keep",     "with",     "while",      "your",    "hand",   "hands",
+      "elbow",   "elbows",  "knee",     "knees",    "other_knee", "foot",    "feet",   "leg",
+      "legs",    "stomach", "head",     "shoulder", "side",       "left",    "right",  "both",
+      "forward", "front",   "in",       "at",       "to",         "of",      "it",     "them",
+      "that",    "which",   "is",       "are",      "its",        "away",    "from",   "off",
+      "big",     "small",   "tall",     "short",    "far",        "nearby",  "middle", "centre",
+      "center",  "there",   "yours",    "own",      "one",        "edge",    "each",   "against",
+      "dont",    "lean",    "place",    "using",    "either",     "s",       "geton",  "carry",
+      "here",    "team2",   "team3",    "team4",    "teamall",    "teamany", "door",   "doors",
+      "doorway", "exit",    "entrance", "recline",  "type",       "flat"};
   return *words;
 }
 

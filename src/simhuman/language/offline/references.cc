@@ -106,8 +106,8 @@ core::StatusOr<std::vector<const CatalogObject*>> Session::Candidates(const Noun
       }
       return 0.0;
     };
-    const bool volume = np.select == Select::kBig || np.select == Select::kSmall ||
-                        np.select == Select::kFlat;
+    const bool volume =
+        np.select == Select::kBig || np.select == Select::kSmall || np.select == Select::kFlat;
     double best = 1e300;
     for (const CatalogObject* o : c) best = std::min(best, key(o));
     std::vector<const CatalogObject*> top;

@@ -26,9 +26,9 @@ const std::set<std::string>& Vocabulary() {
 // the words a slip is corrected to: objects, parts, colours, body words, function words
 const std::set<std::string>& Targets() {
   static const auto* words = [] {
-    auto* w = new std::set<std::string>{"the",   "your",  "with",  "then",  "and",
+    auto* w = new std::set<std::string>{"the",   "your",  "with",  "then",   "and",
                                         "hand",  "hands", "elbow", "elbows", "knee",
-                                        "knees", "foot",  "feet",  "legs",  "stomach"};
+                                        "knees", "foot",  "feet",  "legs",   "stomach"};
     for (const auto& [from, to] : TypeWords()) {
       if (!to.empty()) w->insert(from);
     }
@@ -105,8 +105,8 @@ void JoinClauses(std::vector<ClauseWords>& clauses) {
     const bool put = b.size() >= 3 && (b[0] == "put" || b[0] == "move" || b[0] == "stack") &&
                      b[1] == "it" && RelFromWord(b[2]).has_value();
     if (a.size() < 2 || a[0] != "grab" || !put) continue;
-    const size_t with = static_cast<size_t>(
-        std::find(a.begin(), a.end(), std::string("with")) - a.begin());
+    const size_t with =
+        static_cast<size_t>(std::find(a.begin(), a.end(), std::string("with")) - a.begin());
     Tokens joined = {"put"};
     joined.insert(joined.end(), a.begin() + 1, a.begin() + static_cast<long>(with));
     joined.insert(joined.end(), b.begin() + 2, b.end());

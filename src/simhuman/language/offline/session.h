@@ -188,10 +188,10 @@ class Session {
   std::vector<plan::Carrier> held_by_;         // who holds it
   std::optional<core::SceneCatalog> planned_;  // the scene as the carry steps so far leave it
   std::vector<StepDraft> steps_;
-  int clause_ = 0;         // index of the clause being read
-  bool sequenced_ = true;  // whether it followed "then" (see NextClause)
+  int clause_ = 0;            // index of the clause being read
+  bool sequenced_ = true;     // whether it followed "then" (see NextClause)
   bool attributive_ = false;  // the clause states a pose without a verb ("hands on knees")
-  bool left_seat_ = false;     // the last step stood up from a seat or bed
+  bool left_seat_ = false;    // the last step stood up from a seat or bed
 };
 
 }  // namespace simhuman::language::offline
