@@ -6,6 +6,7 @@
 #include "simhuman/language/offline/clauses.h"
 #include "simhuman/language/offline/lexicon.h"
 #include "simhuman/language/offline/objects.h"
+#include "simhuman/language/offline/rewrite.h"
 #include "simhuman/language/offline/session.h"
 
 namespace simhuman::language {
@@ -24,10 +25,15 @@ core::StatusOr<PlanResult> OfflinePlanner::Plan(std::string_view command,
                                                 const PlanContext& context) {
   if (context.scene == nullptr) return offline::Invalid("no scene given to the planner");
   SH_ASSIGN_OR_RETURN(offline::Tokens raw, offline::Tokenize(command));
-  offline::Tokens tokens = offline::Normalize(raw);
-  SH_ASSIGN_OR_RETURN(std::vector<offline::Tokens> clauses, offline::SplitClauses(tokens));
+  offline::Tokens tokens = offline::Normalize(offline::CorrectTypos(raw));
+  SH_ASSIGN_OR_RETURN(std::vector<offline::ClauseWords> clauses,
+                      offline::SplitMarkedClauses(tokens));
+  offline::JoinClauses(clauses);
   offline::Session session(*context.scene, context);
-  for (const offline::Tokens& clause : clauses) SH_RETURN_IF_ERROR(session.Clause(clause));
+  for (const offline::ClauseWords& clause : clauses) {
+    session.NextClause(clause.sequenced);
+    SH_RETURN_IF_ERROR(session.Clause(clause.words));
+  }
   return session.Finish();
 }
 

@@ -6,12 +6,17 @@
 #include <string>
 #include <vector>
 
+#include "simhuman/language/offline/rewrite.h"
 #include "simhuman/world/scene.h"
 
 namespace simhuman::language {
 namespace {
 
 using ::testing::HasSubstr;
+
+int EditDistanceForTest(const std::string& a, const std::string& b) {
+  return offline::EditDistance(a, b);
+}
 
 struct Fixture {
   world::SceneSpec spec;
@@ -89,16 +94,23 @@ TEST(OfflinePlannerTest, SitVariantsFollowTable8) {
             sit + ", chair000|back surface|torso|contact|none");
   EXPECT_EQ(PlanText("sit_demo", "sit on the chair leaning forward"),
             sit + ", chair000|back surface|torso|not contact|none");
-  EXPECT_EQ(
-      PlanText("sit_demo", "sit down with your hands on your knees"),
-      sit + ", chair000|left knee|left hand|contact|up, chair000|right knee|right hand|contact|up");
+  // both hands (elbows) on the knees or armrests: direction none; one hand: up (Table 8)
+  EXPECT_EQ(PlanText("sit_demo", "sit down with your hands on your knees"),
+            sit +
+                ", chair000|left knee|left hand|contact|none, "
+                "chair000|right knee|right hand|contact|none");
+  EXPECT_EQ(PlanText("sit_demo", "sit down with your left hand on your left knee"),
+            sit + ", chair000|left knee|left hand|contact|up");
   EXPECT_EQ(PlanText("sit_demo", "sit down, left hand on your stomach"),
             sit + ", chair000|pelvis|left hand|contact|none");
-  EXPECT_EQ(PlanText("sit_demo", "sit down, then cross your right foot over your left knee"),
+  EXPECT_EQ(PlanText("sit_demo", "sit down and cross your right foot over your left knee"),
             sit + ", chair000|left knee|right foot|contact|none");
   EXPECT_EQ(PlanText("living_room", "sit on the sofa with your elbows on the armrests"),
             "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up, "
-            "sofa005|left arm|left elbow|contact|up, sofa005|right arm|right elbow|contact|up");
+            "sofa005|left arm|left elbow|contact|none, sofa005|right arm|right elbow|contact|none");
+  EXPECT_EQ(PlanText("living_room", "sit on the sofa with your left hand on the armrest"),
+            "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up, "
+            "sofa005|left arm|left hand|contact|up");
   EXPECT_EQ(PlanText("living_room", "sit on the sofa and keep your right hand off the armrest"),
             "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up, "
             "sofa005|right arm|right hand|not contact|none");
@@ -108,6 +120,103 @@ TEST(OfflinePlannerTest, AConflictingPoseStartsANewStep) {
   EXPECT_EQ(PlanText("sit_demo", "sit down and lean forward, then lean back"),
             "chair000|seat surface|pelvis|contact|up, chair000|back surface|torso|not contact|none"
             " / chair000|seat surface|pelvis|contact|up, chair000|back surface|torso|contact|none");
+}
+
+TEST(OfflinePlannerTest, APoseOrderedLaterIsAStepOfItsOwn) {
+  const std::string sit = "chair000|seat surface|pelvis|contact|up";
+  const std::string back = "chair000|back surface|torso|contact|none";
+  EXPECT_EQ(PlanText("sit_demo", "sit down, then lean back"), sit + " / " + sit + ", " + back);
+  EXPECT_EQ(PlanText("sit_demo", "sit down and then lean back"), sit + " / " + sit + ", " + back);
+  // said with the sit, after a bare "and", or stated without a verb: the same step
+  EXPECT_EQ(PlanText("sit_demo", "sit down and lean back"), sit + ", " + back);
+  EXPECT_EQ(PlanText("sit_demo", "sit down, leaning back"), sit + ", " + back);
+  EXPECT_EQ(PlanText("sit_demo", "sit down, right hand on your right knee"),
+            sit + ", chair000|right knee|right hand|contact|up");
+}
+
+TEST(OfflinePlannerTest, TypingIsBothHandsOnTheKeyboardWhileSeated) {
+  const std::string sit = "chair002|seat surface|pelvis|contact|up";
+  const std::string keys =
+      "laptop001|keyboard|left hand|contact|none, laptop001|keyboard|right hand|contact|none";
+  EXPECT_EQ(PlanText("office", "sit at the desk and type"), sit + " / " + sit + ", " + keys);
+  EXPECT_EQ(PlanText("office", "sit at the desk with your hands on the keyboard"),
+            sit + ", " + keys);
+  EXPECT_EQ(PlanText("office", "use the computer"), sit + " / " + sit + ", " + keys);
+  // a bare "sit down" (chair or bar stool) is settled by the typing that follows
+  EXPECT_EQ(PlanText("office", "sit down, then start typing"), sit + " / " + sit + ", " + keys);
+}
+
+TEST(OfflinePlannerTest, WrappersAndFillersAreStripped) {
+  const std::string sofa = "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up";
+  for (const char* c : {"ok so just sit on the couch for me", "I'd like you to sit on the sofa",
+                        "would you mind sitting on the couch?", "can u sit on the sofa pls",
+                        "go ahead and sit on the couch real quick, thanks",
+                        "could you sit on the couch for a bit"}) {
+    EXPECT_EQ(PlanText("living_room", c), sofa) << c;
+  }
+  EXPECT_EQ(PlanText("living_room", "sit on the couch for a while, and once you're done, get up"),
+            sofa + " / sofa005|none|none|none|front");
+  // an unknown action word still says what is understood
+  core::Status st = PlanStatus("living_room", "do a little dance");
+  EXPECT_TRUE(absl::IsInvalidArgument(st)) << st;
+  EXPECT_THAT(st.message(), HasSubstr("I understand: sit, lie"));
+}
+
+TEST(OfflinePlannerTest, Idioms) {
+  const std::string lie = "bed003|mattress|pelvis|contact|up, bed003|pillow|head|contact|up";
+  for (const char* c :
+       {"hop into bed", "hit the hay", "get some sleep", "lie down with your head on the pillow"}) {
+    EXPECT_EQ(PlanText("living_room", c), lie) << c;
+  }
+  EXPECT_EQ(PlanText("bedroom", "go to bed"),
+            "bed000|none|none|none|front / bed000|mattress|pelvis|contact|up, "
+            "bed000|pillow|head|contact|up");
+  EXPECT_EQ(PlanText("sit_demo", "take a load off"), "chair000|seat surface|pelvis|contact|up");
+  EXPECT_EQ(PlanText("office", "pull up a chair"), "chair002|seat surface|pelvis|contact|up");
+  EXPECT_EQ(PlanText("living_room", "recline in the armchair"),
+            "armchair004|none|none|none|front / armchair004|seat surface|pelvis|contact|up, "
+            "armchair004|back surface|torso|contact|none");
+  EXPECT_EQ(PlanText("living_room", "recline on the bed"), lie);
+}
+
+TEST(OfflinePlannerTest, APoseImpliesItsBase) {
+  EXPECT_EQ(PlanText("living_room", "lean back in the armchair"),
+            "armchair004|none|none|none|front / armchair004|seat surface|pelvis|contact|up, "
+            "armchair004|back surface|torso|contact|none");
+  // one seat in the scene: sit on it; several: a question listing them
+  EXPECT_EQ(PlanText("sit_demo", "cross your legs"),
+            "chair000|seat surface|pelvis|contact|up, chair000|left knee|right foot|contact|none");
+  core::Status st = PlanStatus("living_room", "lean back");
+  EXPECT_TRUE(absl::IsFailedPrecondition(st)) << st;
+  EXPECT_THAT(st.message(), HasSubstr("chair000"));
+  EXPECT_THAT(st.message(), HasSubstr("armchair004"));
+  EXPECT_THAT(st.message(), HasSubstr("sofa005"));
+  EXPECT_EQ(st.message().back(), '?');
+  // the stool has no backrest
+  EXPECT_TRUE(absl::IsInvalidArgument(PlanStatus("office", "lean back on the bar stool")));
+}
+
+TEST(OfflinePlannerTest, PosesInPrepositionalPhrases) {
+  EXPECT_EQ(PlanText("living_room", "sit on the sofa, resting your right elbow on the armrest"),
+            "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up, "
+            "sofa005|right arm|right elbow|contact|up");
+  EXPECT_EQ(PlanText("living_room", "sit in the armchair with one leg crossed over the other"),
+            "armchair004|none|none|none|front / armchair004|seat surface|pelvis|contact|up, "
+            "armchair004|left knee|right foot|contact|none");
+}
+
+TEST(OfflinePlannerTest, SynonymsAndTypos) {
+  const std::string arm =
+      "armchair004|none|none|none|front / "
+      "armchair004|seat surface|pelvis|contact|up";
+  EXPECT_EQ(PlanText("living_room", "sit in the red chair"), arm);  // the only red seat
+  EXPECT_EQ(PlanText("living_room", "sit in the armchiar"), arm);
+  EXPECT_EQ(PlanText("living_room", "lay down on teh bed"),
+            "bed003|mattress|pelvis|contact|up, bed003|pillow|head|contact|up");
+  EXPECT_EQ(EditDistanceForTest("armchiar", "armchair"), 1);
+  EXPECT_EQ(PlanText("tabletop_demo", "pick up the flat box and set it down beside the ball"),
+            "box004|body|right hand|contact|none / box004|body|right hand|contact|none, "
+            "sphere006|body|@box004:body|contact|none");
 }
 
 TEST(OfflinePlannerTest, LieVariantsFollowTable9) {
@@ -139,9 +248,11 @@ TEST(OfflinePlannerTest, ImpliedGetCloseAndStandUp) {
             "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up / "
             "sofa005|none|none|none|front / bed003|none|none|none|front / "
             "bed003|mattress|pelvis|contact|up, bed003|pillow|head|contact|up");
-  // the laptop is within reach of the chair's seat: no standing up to touch it
+  // the laptop is within reach of the chair's seat: no standing up to touch it; the seat pair
+  // stays in the step and the hand has direction none (UniHSI Table 7)
   EXPECT_EQ(PlanText("office", "sit on the chair, then touch the laptop"),
-            "chair002|seat surface|pelvis|contact|up / laptop001|keyboard|right hand|contact|up");
+            "chair002|seat surface|pelvis|contact|up / chair002|seat surface|pelvis|contact|up, "
+            "laptop001|keyboard|right hand|contact|none");
 }
 
 TEST(OfflinePlannerTest, Pronouns) {

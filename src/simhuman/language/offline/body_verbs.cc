@@ -36,8 +36,7 @@ Direction PartDirection(const std::string& part) {
 
 }  // namespace
 
-absl::Status Session::SitOrLie(const Tokens& t, size_t b, bool lie, bool rest,
-                               const std::string& c) {
+absl::Status Session::SitOrLie(const Tokens& t, size_t b, SitMode mode, const std::string& c) {
   // [on|in|at|onto] NP [with|while|your ...variant]
   size_t i = b;
   while (i < t.size() && (t[i] == "on" || t[i] == "onto" || t[i] == "in" || t[i] == "at" ||
@@ -51,58 +50,26 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, bool lie, bool rest,
   // "lie on the bed on your left side": a trailing "on" before "your" belongs to the pose
   size_t np_end = j;
   while (np_end > i && (t[np_end - 1] == "on" || t[np_end - 1] == "in")) --np_end;
+  bool lie = mode == SitMode::kLie;
   const std::string part = lie ? "mattress" : "seat surface";
   const CatalogObject* o = nullptr;
   if (np_end > i) {
     SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, np_end, 0, c));
     SH_ASSIGN_OR_RETURN(o, Resolve(np, c, part));
+  } else if (mode == SitMode::kRecline) {
+    SH_ASSIGN_OR_RETURN(o, OnlyObjectWith({"seat surface", "back surface"}, "recline", c));
   } else if (on_ != nullptr && (HasPart(*on_, part) || (!lie && HasPart(*on_, "mattress")))) {
     o = on_;
-  } else if (focus_ != nullptr &&
-             (HasPart(*focus_, part) || (!lie && HasPart(*focus_, "mattress")))) {
-    o = focus_;
   } else {
-    std::vector<const CatalogObject*> fit;
-    for (const CatalogObject& x : scene_.objects) {
-      if (HasPart(x, part)) fit.push_back(&x);
-    }
-    if (fit.empty()) {
-      return Invalid("\"" + c + "\": nothing in this scene to " + (lie ? "lie" : "sit") +
-                     " on; the scene has: " + DescribeSceneObjects(scene_));
-    }
-    if (fit.size() > 1) {
-      std::vector<std::string> names;
-      for (const CatalogObject* x : fit) names.push_back(Describe(*x));
-      return Question(std::string(lie ? "Lie" : "Sit") + " on which: " + core::JoinNames(names) +
-                      "?");
-    }
-    o = fit[0];
+    SH_ASSIGN_OR_RETURN(o, OnlyObjectWith({part}, lie ? "lie" : "sit", c));
   }
   if (!lie && !HasPart(*o, "seat surface") && !HasPart(*o, "mattress") && i > b &&
       t[i - 1] == "at") {
-    // "sit at the table": the seat nearest to it
-    const CatalogObject* best = nullptr;
-    double best_d = 1e300;
-    bool tie = false;
-    for (const CatalogObject& x : scene_.objects) {
-      if (!HasPart(x, "seat surface")) continue;
-      const double d = CentreDistance(x, *o);
-      if (d < best_d - kTieM) {
-        tie = false;
-        best = &x;
-        best_d = d;
-      } else if (d <= best_d + kTieM) {
-        tie = true;
-      }
-    }
-    if (best == nullptr) {
-      return Invalid("\"" + c + "\": there is no seat to sit at " + Describe(*o) +
-                     "; the scene has: " + DescribeSceneObjects(scene_));
-    }
-    if (tie) return Question("Which seat at " + Describe(*o) + " should I sit on?");
-    o = best;
+    SH_ASSIGN_OR_RETURN(o, SeatAt(*o, c));  // "sit at the table": the seat nearest to it
   }
-  if (rest) lie = !HasPart(*o, "seat surface") && HasPart(*o, "mattress");
+  if (mode == SitMode::kRest || mode == SitMode::kRecline) {
+    lie = !HasPart(*o, "seat surface") && HasPart(*o, "mattress");
+  }
   focus_ = o;
   if (!(on_ == o && posture_ != Posture::kStand)) {
     EnsureFree(o);
@@ -114,19 +81,27 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, bool lie, bool rest,
                steps_.back().kind == StepDraft::kSit && steps_.back().object == o)) {
     SH_RETURN_IF_ERROR(AddSit(*o));
   }
-  if (j < t.size()) {
-    size_t vb = j;
-    while (vb < t.size() && (t[vb] == "with" || t[vb] == "while" || t[vb] == "and")) ++vb;
-    SH_ASSIGN_OR_RETURN(std::optional<Variant> v, ParseVariant(t, vb, t.size(), c));
-    if (!v) {
-      return Invalid("did not understand '" + Join(t, j, t.size()) + "' in \"" + c +
-                     "\"; poses I know: hands/elbows on the arms, hands on the knees or stomach, "
-                     "foot on the other knee, lean forward/back, knees up, hands on the pillow, "
-                     "on the left/right side, head up");
-    }
-    SH_RETURN_IF_ERROR(AddVariant(*v, c));
+  if (mode == SitMode::kRecline && !lie) {
+    SH_RETURN_IF_ERROR(AddVariant({VariantKind::kLeanBack, "both", ""}, c));
   }
+  if (j < t.size()) return SitPose(t, j, c);
   return absl::OkStatus();
+}
+
+// the pose said with a sit or lie, t[j, ...): "with your hands on your knees", "leaning back",
+// "with both hands on the laptop keyboard" (a seated reach joining the sit step)
+absl::Status Session::SitPose(const Tokens& t, size_t j, const std::string& c) {
+  size_t vb = j;
+  while (vb < t.size() && (t[vb] == "with" || t[vb] == "while" || t[vb] == "and")) ++vb;
+  SH_ASSIGN_OR_RETURN(std::optional<Variant> v, ParseVariant(t, vb, t.size(), c));
+  if (v) return AddVariant(*v, c);
+  if (posture_ == Posture::kSit && Find(t, vb, t.size(), {"hand", "hands"}) < t.size()) {
+    return Reach(Tokens(t.begin() + static_cast<long>(vb), t.end()), c, true);
+  }
+  return Invalid("did not understand '" + Join(t, j, t.size()) + "' in \"" + c +
+                 "\"; poses I know: hands/elbows on the arms, hands on the knees or stomach, "
+                 "foot on the other knee, lean forward/back, knees up, hands on the pillow, "
+                 "on the left/right side, head up");
 }
 
 absl::Status Session::Go(const Tokens& t, size_t b, const std::string& c) {
@@ -184,7 +159,7 @@ absl::Status Session::StandUp(const std::string& c) {
   return absl::OkStatus();
 }
 
-absl::Status Session::Reach(const Tokens& t, const std::string& c) {
+absl::Status Session::Reach(const Tokens& t, const std::string& c, bool in_pose) {
   // find the hand words and the verb; the object follows the verb's preposition
   static const std::set<std::string> kHand = {"hand", "hands"};
   size_t hand = Find(t, 0, t.size(), kHand);
@@ -194,10 +169,10 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c) {
     if (side.empty()) side = t[hand] == "hands" ? "both" : "right";
   }
   // object words: everything after the last verb/preposition that is not the hand phrase
-  static const std::set<std::string> kLead = {"touch", "reach", "grab",  "put",    "rest",  "on",
-                                              "onto",  "to",    "at",    "for",    "with",  "your",
-                                              "left",  "right", "both",  "hand",   "hands", "lie",
-                                              "in",    "keep",  "using", "either", "each"};
+  static const std::set<std::string> kLead = {"touch", "reach", "grab",  "put",   "rest",   "on",
+                                              "flat",  "onto",  "to",    "at",    "for",    "with",
+                                              "your",  "left",  "right", "both",  "hand",   "hands",
+                                              "lie",   "in",    "keep",  "using", "either", "each"};
   // the object is the span that follows the first preposition after the verb, up to "with"
   size_t b = 0;
   while (b < t.size() && kLead.count(t[b])) {
@@ -249,7 +224,15 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c) {
   focus_ = o;
   // sitting, a reach within arm's length keeps the seat; anything else stands up first
   if (posture_ != Posture::kStand && on_ != o && FootprintDistance(*o, pos_) > kNearEnoughM) {
+    if (in_pose) {
+      return Invalid("\"" + c + "\": " + Describe(*o) + " is out of reach from " + Describe(*on_) +
+                     "; sit closer to it first");
+    }
     EnsureFree(nullptr);
+  }
+  if (posture_ != Posture::kStand && on_ != nullptr) {
+    AddSeatedReach(*o, part, Sides(side), in_pose);
+    return absl::OkStatus();
   }
   EnsureNear(*o);
   StepDraft d;

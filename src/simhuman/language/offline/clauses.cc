@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cstdio>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -51,21 +52,33 @@ core::StatusOr<Tokens> Tokenize(std::string_view command) {
   return out;
 }
 
-core::StatusOr<std::vector<Tokens>> SplitClauses(const Tokens& tokens) {
-  std::vector<Tokens> clauses(1);
+core::StatusOr<std::vector<ClauseWords>> SplitMarkedClauses(const Tokens& tokens) {
+  std::vector<ClauseWords> clauses(1);
+  bool then = false;  // a "then" since the last clause's words
   for (const std::string& w : tokens) {
     if (w == "then" || w == "and") {
-      if (!clauses.back().empty()) clauses.emplace_back();
+      then = then || w == "then";
+      if (!clauses.back().words.empty()) clauses.emplace_back();
+      clauses.back().sequenced = then;
       if (static_cast<int>(clauses.size()) > kMaxClauses) {
         return Invalid("the command has more than " + std::to_string(kMaxClauses) +
                        " clauses; split it into several commands");
       }
       continue;
     }
-    clauses.back().push_back(w);
+    if (clauses.back().words.empty()) clauses.back().sequenced = then;
+    then = false;
+    clauses.back().words.push_back(w);
   }
-  if (clauses.back().empty()) clauses.pop_back();
+  if (clauses.back().words.empty()) clauses.pop_back();
   return clauses;
+}
+
+core::StatusOr<std::vector<Tokens>> SplitClauses(const Tokens& tokens) {
+  SH_ASSIGN_OR_RETURN(std::vector<ClauseWords> marked, SplitMarkedClauses(tokens));
+  std::vector<Tokens> out;
+  for (ClauseWords& c : marked) out.push_back(std::move(c.words));
+  return out;
 }
 
 absl::Status Session::Clause(const Tokens& words) {
@@ -112,22 +125,39 @@ absl::Status Session::Clause(const Tokens& words) {
   while (i < t.size() && (t[i] == "your" || t[i] == "then" || t[i] == "and")) ++i;
   if (i >= t.size()) return absl::OkStatus();
   const std::string& v = t[i];
+  // "hands on your knees", "with your left elbow on the armrest": a pose stated, not ordered
+  static const std::set<std::string> kPoseVerbs = {
+      "put", "place", "rest", "lean",    "cross", "raise", "turn", "keep", "move",
+      "sit", "lie",   "type", "recline", "touch", "reach", "grab", "stack"};
+  attributive_ = kPoseVerbs.count(v) == 0;
   auto next = [&](size_t k) { return k < t.size() ? t[k] : std::string(); };
-  if (v == "rest" && (IsBodyWord(next(i + 1)) || next(i + 1) == "left" || next(i + 1) == "right" ||
-                      next(i + 1) == "both")) {
+  // "put your hands", "put left hand", "rest both elbows": a body part follows the verb
+  auto body_next = [&] {
+    const std::string& w = next(i + 1);
+    return IsBodyWord(w) ||
+           ((w == "left" || w == "right" || w == "both") && IsBodyWord(next(i + 2)));
+  };
+  if (v == "rest" && body_next()) {
     SH_ASSIGN_OR_RETURN(std::optional<Variant> var, ParseVariant(t, i, t.size(), c));
-    if (var) return AddVariant(*var, c);
-    return Reach(t, c);
+    if (!var) return Reach(t, c);
+    SH_RETURN_IF_ERROR(ImpliedBase(*var, t, i, t.size(), c));
+    return AddVariant(*var, c);
   }
   // "go lie on the bed", "go and sit down": the going is implied by the interaction
   if (v == "go" && (next(i + 1) == "sit" || next(i + 1) == "lie" || next(i + 1) == "rest" ||
-                    next(i + 1) == "touch" || next(i + 1) == "put")) {
+                    next(i + 1) == "touch" || next(i + 1) == "put" || next(i + 1) == "stand" ||
+                    next(i + 1) == "recline" || next(i + 1) == "type")) {
     return Clause(Tokens(t.begin() + static_cast<long>(i) + 1, t.end()));
   }
   if (v == "go" && i + 1 == t.size()) return absl::OkStatus();
-  if (v == "sit" || v == "lie" || v == "rest") {
-    return SitOrLie(t, i + 1, v == "lie", v == "rest", c);
+  if (v == "sit" || v == "lie" || v == "rest" || v == "recline") {
+    const SitMode mode = v == "sit"    ? SitMode::kSit
+                         : v == "lie"  ? SitMode::kLie
+                         : v == "rest" ? SitMode::kRest
+                                       : SitMode::kRecline;
+    return SitOrLie(t, i + 1, mode, c);
   }
+  if (v == "type") return Type(t, i + 1, c);
   if (v == "stand" && next(i + 1) == "up") {
     if (i + 2 < t.size() && t[i + 2] != "then") {
       return Invalid("did not understand '" + Join(t, i + 2, t.size()) +
@@ -151,11 +181,11 @@ absl::Status Session::Clause(const Tokens& words) {
     return Go(t, i + 1, c);
   }
   if (v == "put" || v == "stack" || v == "move" || v == "rest" || v == "keep" || v == "place") {
-    if (IsBodyWord(next(i + 1)) || next(i + 1) == "left" || next(i + 1) == "right" ||
-        next(i + 1) == "both") {
+    if (body_next()) {
       SH_ASSIGN_OR_RETURN(std::optional<Variant> var, ParseVariant(t, i, t.size(), c));
-      if (var) return AddVariant(*var, c);
-      return Reach(t, c);
+      if (!var) return Reach(t, c);
+      SH_RETURN_IF_ERROR(ImpliedBase(*var, t, i, t.size(), c));
+      return AddVariant(*var, c);
     }
     if (v == "keep") {
       return Invalid("did not understand \"" + c + "\"");
@@ -178,7 +208,10 @@ absl::Status Session::Clause(const Tokens& words) {
   }
   // a pose: "cross your right foot over your left knee", "lean back", "knees up", "with ..."
   SH_ASSIGN_OR_RETURN(std::optional<Variant> var, ParseVariant(t, i, t.size(), c));
-  if (var) return AddVariant(*var, c);
+  if (var) {
+    SH_RETURN_IF_ERROR(ImpliedBase(*var, t, i, t.size(), c));
+    return AddVariant(*var, c);
+  }
   if (Has(t, i, t.size(), "touch") || Has(t, i, t.size(), "reach")) return Reach(t, c);
   return Invalid("did not understand \"" + c +
                  "\"; commands start with sit, lie, rest, stand up, go to, walk to, approach, "

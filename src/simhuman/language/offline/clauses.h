@@ -17,8 +17,16 @@ namespace simhuman::language::offline {
 /// than kMaxCommandBytes or any other byte (the message names it and its offset).
 core::StatusOr<Tokens> Tokenize(std::string_view command);
 
+/// One clause and how it was joined to the one before.
+struct ClauseWords {
+  Tokens words;
+  bool sequenced = true;  // after "then", a comma or a full stop; false after a bare "and"
+};
+
 /// Splits normalised words into clauses at "then" and "and" (dropping empty clauses).
 /// kInvalidArgument when there are more than kMaxClauses.
+core::StatusOr<std::vector<ClauseWords>> SplitMarkedClauses(const Tokens& tokens);
+/// SplitMarkedClauses() without the joins.
 core::StatusOr<std::vector<Tokens>> SplitClauses(const Tokens& tokens);
 
 }  // namespace simhuman::language::offline

@@ -80,6 +80,8 @@ core::StatusOr<NounPhrase> ParseNounPhrase(const Tokens& t, size_t b, size_t e, 
       np.select = Select::kBig;
     } else if (w == "small" || w == "short") {
       np.select = Select::kSmall;
+    } else if (w == "flat" || w == "flattest" || w == "flatter") {
+      np.select = Select::kFlat;
     } else if (w == "nearest" || w == "nearby") {
       if (i + 1 < e && !TypeWords().count(t[i + 1]) && !PartWords().count(t[i + 1]) &&
           !Colors().count(t[i + 1])) {

@@ -17,8 +17,8 @@ namespace simhuman::language::offline {
 inline constexpr int kMaxNesting = 3;
 
 /// A selection among several matching objects ("the left chair", "the big box", "the nearest
-/// sofa"); kNone when the words give none.
-enum class Select { kNone, kLeft, kRight, kBig, kSmall, kNear, kFar };
+/// sofa", "the flat box": the lowest); kNone when the words give none.
+enum class Select { kNone, kLeft, kRight, kBig, kSmall, kNear, kFar, kFlat };
 
 /// A parsed description of one object (or one part of one object).
 struct NounPhrase {

@@ -39,6 +39,8 @@ std::string VariantText(const Variant& v) {
       return "on the " + v.side + " side";
     case VariantKind::kHeadUp:
       return "head up";
+    case VariantKind::kHeadOnPillow:
+      return "head on the pillow";
   }
   return "";
 }
@@ -47,7 +49,8 @@ std::string VariantText(const Variant& v) {
 
 absl::Status Session::AddVariant(const Variant& v, const std::string& clause) {
   const bool lie_only = v.kind == VariantKind::kKneesUp || v.kind == VariantKind::kHandsOnPillow ||
-                        v.kind == VariantKind::kOnSide || v.kind == VariantKind::kHeadUp;
+                        v.kind == VariantKind::kOnSide || v.kind == VariantKind::kHeadUp ||
+                        v.kind == VariantKind::kHeadOnPillow;
   const bool sit_only = v.kind == VariantKind::kHandsOnArms ||
                         v.kind == VariantKind::kHandsOffArms ||
                         v.kind == VariantKind::kElbowsOnArms ||
@@ -83,6 +86,8 @@ core::StatusOr<std::vector<ContactPair>> Session::VariantPairs(const Variant& v,
                    PartsText(o) + "); objects with a " + part + ": " + ObjectsWith(scene_, part));
   };
   const bool lying = posture_ == Posture::kLie;
+  // UniHSI Table 8: one hand (elbow) on its armrest or knee points up, both hands none
+  const Direction both = v.side == "both" ? Direction::kNone : Direction::kUp;
   switch (v.kind) {
     case VariantKind::kHandsOnArms:
     case VariantKind::kHandsOffArms:
@@ -95,7 +100,7 @@ core::StatusOr<std::vector<ContactPair>> Session::VariantPairs(const Variant& v,
         if (v.kind == VariantKind::kHandsOffArms) {
           pairs.push_back(Pair(o, s + " arm", j, ContactType::kNotContact, Direction::kNone));
         } else {
-          pairs.push_back(Pair(o, s + " arm", j, ContactType::kContact, Direction::kUp));
+          pairs.push_back(Pair(o, s + " arm", j, ContactType::kContact, both));
         }
       }
       break;
@@ -103,7 +108,7 @@ core::StatusOr<std::vector<ContactPair>> Session::VariantPairs(const Variant& v,
       for (const std::string& s : Sides(v.side)) {
         pairs.push_back(Pair(o, s + " knee",
                              SideJoint(s, BodyJoint::kLeftHand, BodyJoint::kRightHand),
-                             ContactType::kContact, Direction::kUp));
+                             ContactType::kContact, both));
       }
       break;
     case VariantKind::kHandsOnStomach:
@@ -148,6 +153,9 @@ core::StatusOr<std::vector<ContactPair>> Session::VariantPairs(const Variant& v,
       pairs.push_back(
           Pair(o, "pillow", BodyJoint::kHead, ContactType::kNotContact, Direction::kNone));
       break;
+    case VariantKind::kHeadOnPillow:
+      pairs.push_back(Pair(o, "pillow", BodyJoint::kHead, ContactType::kContact, Direction::kUp));
+      break;
   }
   return pairs;
 }
@@ -158,7 +166,11 @@ void Session::MergeIntoPoseStep(const std::vector<ContactPair>& pairs, const std
   // merge into the current sit/lie step unless it already poses one of these joints
   StepDraft* last = steps_.empty() ? nullptr : &steps_.back();
   const StepDraft::Kind kind = lying ? StepDraft::kLie : StepDraft::kSit;
-  bool merge = last != nullptr && last->kind == kind && last->object == &o;
+  // a pose ordered in a later clause ("sit down, then lean back") is a step of its own; one
+  // said with the sit, after "and", or stated without a verb ("..., hands on your knees")
+  // joins it
+  bool merge = last != nullptr && last->kind == kind && last->object == &o &&
+               (last->clause == clause_ || !sequenced_ || attributive_);
   if (merge) {
     for (size_t k = last->base_pairs; k < last->step.pairs.size(); ++k) {
       for (const ContactPair& p : pairs) {
@@ -167,28 +179,8 @@ void Session::MergeIntoPoseStep(const std::vector<ContactPair>& pairs, const std
     }
   }
   if (!merge) {
-    StepDraft d;
-    d.kind = kind;
-    d.object = &o;
-    if (lying) {
-      d.step.pairs.push_back(
-          Pair(o, "mattress", BodyJoint::kPelvis, ContactType::kContact, Direction::kUp));
-      d.step.pairs.push_back(
-          Pair(o, "pillow", BodyJoint::kHead, ContactType::kContact, Direction::kUp));
-      d.text = "lie on " + Describe(o);
-    } else if (HasPart(o, "seat surface")) {
-      d.step.pairs.push_back(
-          Pair(o, "seat surface", BodyJoint::kPelvis, ContactType::kContact, Direction::kUp));
-      d.text = "sit on " + Describe(o);
-    } else {
-      d.step.pairs.push_back(
-          Pair(o, "mattress", BodyJoint::kPelvis, ContactType::kContact, Direction::kUp));
-      d.step.pairs.push_back(
-          Pair(o, "pillow", BodyJoint::kHead, ContactType::kNotContact, Direction::kUp));
-      d.text = "sit on the edge of " + Describe(o);
-    }
-    d.base_pairs = d.step.pairs.size();
-    Push(std::move(d));
+    Push(PostureDraft());
+    steps_.back().kind = kind;
     last = &steps_.back();
   }
   for (const ContactPair& p : pairs) {
@@ -304,6 +296,10 @@ core::StatusOr<std::optional<Variant>> Session::ParseVariant(const Tokens& t, si
   }
   if (Has(t, b, e, "head") && (Has(t, b, e, "up") || Has(t, b, e, "raise"))) {
     v.kind = VariantKind::kHeadUp;
+    return std::optional<Variant>(v);
+  }
+  if (Has(t, b, e, "head") && Has(t, b, e, "pillow")) {
+    v.kind = VariantKind::kHeadOnPillow;
     return std::optional<Variant>(v);
   }
   return std::optional<Variant>();

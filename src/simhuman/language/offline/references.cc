@@ -31,15 +31,20 @@ core::StatusOr<std::vector<const CatalogObject*>> Session::Candidates(const Noun
     }
     c.push_back(o);
   } else {
-    for (const CatalogObject& o : scene_.objects) {
-      // a high stool is a stool too
-      if (!np.type.empty() && o.type != np.type &&
-          !(np.type == "stool" && o.type == "high_stool")) {
-        continue;
+    // a high stool is a stool too; an armchair is a chair when no plain chair fits ("the red
+    // chair" for the only red seat, an armchair)
+    for (bool wide : {false, true}) {
+      for (const CatalogObject& o : scene_.objects) {
+        if (!np.type.empty() && o.type != np.type &&
+            !(np.type == "stool" && o.type == "high_stool") &&
+            !(wide && np.type == "chair" && o.type == "armchair")) {
+          continue;
+        }
+        if (!np.color.empty() && o.color != np.color) continue;
+        if (np.type.empty() && !np.part.empty() && PartsNamed(o, np.part).empty()) continue;
+        c.push_back(&o);
       }
-      if (!np.color.empty() && o.color != np.color) continue;
-      if (np.type.empty() && !np.part.empty() && PartsNamed(o, np.part).empty()) continue;
-      c.push_back(&o);
+      if (!c.empty() || np.type != "chair") break;
     }
     if (c.empty()) {
       return Invalid("there is no " + NounOf(np) + " in this scene (\"" + clause +
@@ -90,6 +95,8 @@ core::StatusOr<std::vector<const CatalogObject*>> Session::Candidates(const Noun
           return -Volume(*o);
         case Select::kSmall:
           return Volume(*o);
+        case Select::kFlat:
+          return Height(*o);
         case Select::kNear:
           return FootprintDistance(*o, pos_);
         case Select::kFar:
@@ -99,7 +106,8 @@ core::StatusOr<std::vector<const CatalogObject*>> Session::Candidates(const Noun
       }
       return 0.0;
     };
-    const bool volume = np.select == Select::kBig || np.select == Select::kSmall;
+    const bool volume =
+        np.select == Select::kBig || np.select == Select::kSmall || np.select == Select::kFlat;
     double best = 1e300;
     for (const CatalogObject* o : c) best = std::min(best, key(o));
     std::vector<const CatalogObject*> top;

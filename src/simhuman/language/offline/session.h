@@ -44,7 +44,12 @@ enum class VariantKind {
   kHandsOnPillow,
   kOnSide,
   kHeadUp,
+  kHeadOnPillow,  // the default lying pose said out loud ("with your head on the pillow")
 };
+
+/// How a sit-like verb treats its object: sit, lie, rest (sit on a seat, lie on a bed) or
+/// recline (sit and lean back on a seat, lie on a bed).
+enum class SitMode { kSit, kLie, kRest, kRecline };
 
 /// One pose and the limbs it uses.
 struct Variant {
@@ -61,6 +66,7 @@ struct StepDraft {
   enum Kind { kMove, kSit, kLie, kOther } kind = kOther;
   const CatalogObject* object = nullptr;
   size_t base_pairs = 0;                   // pairs of the sit/lie itself; poses come after
+  int clause = -1;                         // the clause that made the step
   std::vector<std::string> variant_texts;  // the poses in words, appended to the text
 };
 
@@ -90,6 +96,13 @@ class Session {
   /// steps. Errors follow Planner's status codes and quote the clause.
   absl::Status Clause(const Tokens& t);
 
+  /// Says how the next clause was joined to the one before: `sequenced` after "then", a comma
+  /// or a full stop (a pose said there starts a new step), false after a bare "and".
+  void NextClause(bool sequenced) {
+    sequenced_ = sequenced;
+    ++clause_;
+  }
+
   /// The grounded plan of all clauses so far. kInvalidArgument when no clause asked for
   /// anything; kInternal when the plan fails plan::ValidateAndGround() (a bug).
   core::StatusOr<PlanResult> Finish();
@@ -110,21 +123,45 @@ class Session {
   void AddGetClose(const CatalogObject& o, Direction side, const std::string& text);
   absl::Status AddSit(const CatalogObject& o);
   absl::Status AddLie(const CatalogObject& o);
-  void Push(StepDraft d) { steps_.push_back(std::move(d)); }
+  void Push(StepDraft d) {
+    d.clause = clause_;
+    left_seat_ = false;
+    steps_.push_back(std::move(d));
+  }
 
   // ---- poses (poses.cc)
   absl::Status AddVariant(const Variant& v, const std::string& clause);
   core::StatusOr<std::vector<ContactPair>> VariantPairs(const Variant& v,
                                                         const std::string& clause) const;
   void MergeIntoPoseStep(const std::vector<ContactPair>& pairs, const std::string& what);
+  /// A draft holding only the pairs of the current sit or lie (the seat pair repeated).
+  StepDraft PostureDraft() const;
+  /// Sits or lies first when a pose is asked while standing ("lean back in the armchair",
+  /// "cross your legs" with one seat in the scene); t[b, e) is the pose clause.
+  absl::Status ImpliedBase(const Variant& v, const Tokens& t, size_t b, size_t e,
+                           const std::string& c);
+  /// The one object of the scene with all of `parts` (the one sat/lain on or last referred to
+  /// first); a question listing them when several fit.
+  core::StatusOr<const CatalogObject*> OnlyObjectWith(const std::vector<std::string>& parts,
+                                                      const std::string& verb,
+                                                      const std::string& c) const;
   core::StatusOr<std::optional<Variant>> ParseVariant(const Tokens& t, size_t b, size_t e,
                                                       const std::string& c) const;
 
   // ---- clause kinds (body_verbs.cc, tabletop.cc)
-  absl::Status SitOrLie(const Tokens& t, size_t b, bool lie, bool rest, const std::string& c);
+  absl::Status SitOrLie(const Tokens& t, size_t b, SitMode mode, const std::string& c);
+  core::StatusOr<const CatalogObject*> SeatAt(const CatalogObject& o, const std::string& c) const;
+  absl::Status SitPose(const Tokens& t, size_t j, const std::string& c);
+  absl::Status Type(const Tokens& t, size_t b, const std::string& c);
   absl::Status Go(const Tokens& t, size_t b, const std::string& c);
   absl::Status StandUp(const std::string& c);
-  absl::Status Reach(const Tokens& t, const std::string& c);
+  /// `in_pose`: the reach is a pose of the sit said in the same clause ("sit at the desk with
+  /// your hands on the keyboard"): it joins that step.
+  absl::Status Reach(const Tokens& t, const std::string& c, bool in_pose = false);
+  /// Hands of `sides` touch `part` of `o` while seated (UniHSI Table 7): the seat pairs stay in
+  /// the step and the hand pairs have direction none.
+  void AddSeatedReach(const CatalogObject& o, const std::string& part,
+                      const std::vector<std::string>& sides, bool in_pose);
   absl::Status Tabletop(const Tokens& t, size_t b, const std::string& c);
 
   // ---- carrying (carry.cc)
@@ -151,6 +188,10 @@ class Session {
   std::vector<plan::Carrier> held_by_;         // who holds it
   std::optional<core::SceneCatalog> planned_;  // the scene as the carry steps so far leave it
   std::vector<StepDraft> steps_;
+  int clause_ = 0;            // index of the clause being read
+  bool sequenced_ = true;     // whether it followed "then" (see NextClause)
+  bool attributive_ = false;  // the clause states a pose without a verb ("hands on knees")
+  bool left_seat_ = false;    // the last step stood up from a seat or bed
 };
 
 }  // namespace simhuman::language::offline

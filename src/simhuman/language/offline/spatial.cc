@@ -24,6 +24,12 @@ double Volume(const CatalogObject& o) {
   return d.x() * d.y() * d.z();
 }
 
+double Height(const CatalogObject& o) {
+  if (o.shapes.empty()) return 0.0;
+  const auto [lo, hi] = o.LocalBounds();
+  return hi.z() - lo.z();
+}
+
 plan::Direction ViewerSide(Rel r, const CatalogObject& ref, const Viewer& v) {
   const double c = std::cos(v.yaw), s = std::sin(v.yaw);
   double wx = 0, wy = 0;

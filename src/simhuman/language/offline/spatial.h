@@ -29,6 +29,8 @@ double FootprintDistance(const CatalogObject& o, Point2 p);
 double CentreDistance(const CatalogObject& a, const CatalogObject& b);
 /// Volume (m^3) of the object's local bounding box; 0 without shapes.
 double Volume(const CatalogObject& o);
+/// Height (m) of the object's local bounding box; 0 without shapes.
+double Height(const CatalogObject& o);
 
 /// The viewer's frame: where the human starts and which way it faces.
 struct Viewer {

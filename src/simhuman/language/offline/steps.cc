@@ -75,12 +75,14 @@ void Session::EnsureFree(const CatalogObject* target) {
   if (posture_ == Posture::kStand || on_ == nullptr || on_ == target) return;
   const CatalogObject& from = *on_;
   AddGetClose(from, Direction::kFront, "stand up in front of " + Describe(from));
+  left_seat_ = true;
 }
 
 // getting close is implied before touching something out of reach
 void Session::EnsureNear(const CatalogObject& target) {
   if (posture_ != Posture::kStand) return;
-  if (FootprintDistance(target, pos_) <= kNearEnoughM) return;
+  // moving from one object to another always walks to the next one (even a near one)
+  if (!left_seat_ && FootprintDistance(target, pos_) <= kNearEnoughM) return;
   AddGetClose(target, Direction::kFront, "get close to " + Describe(target) + " (front)");
 }
 
