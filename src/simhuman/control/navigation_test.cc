@@ -97,6 +97,41 @@ TEST(Navigation, StandPointNextToFurnitureIsStillReached) {
   EXPECT_NEAR(path->length_m, 2.55, 0.05);
 }
 
+TEST(Navigation, AGoalInAGapIsReachedAroundTheTableNotThroughIt) {
+  // Table 7's desk: a chair block at x in [-0.25, 0.25], a table at [0.6, 1.4], y in [-0.6, 0.6];
+  // the goal is in the 0.35 m gap between them, the start behind the table
+  core::SceneCatalog scene;
+  scene.objects.push_back(Block("chair000", 0, 0, 0.25, 0.25, 0.45));
+  scene.objects.push_back(Block("table001", 1.0, 0, 0.4, 0.6, 0.38));
+  auto path = PlanRoute(scene, {2.0, 0}, {0.42, 0});
+  ASSERT_TRUE(path.ok()) << path.status();
+  for (size_t k = 1; k < path->points.size(); ++k) {
+    // no leg of the route crosses the table's footprint
+    for (double u = 0; u <= 1.0; u += 0.02) {
+      Eigen::Vector2d p = path->points[k - 1] + u * (path->points[k] - path->points[k - 1]);
+      EXPECT_FALSE(p.x() > 0.62 && p.x() < 1.38 && std::abs(p.y()) < 0.58)
+          << "through the table at " << p.transpose();
+    }
+  }
+}
+
+TEST(Navigation, StandingSpotMovesOutOfFurnitureWithinTheRadius) {
+  core::SceneCatalog scene;
+  scene.objects.push_back(Block("chair000", 0, 0, 0.25, 0.25, 0.45));
+  scene.objects.push_back(Block("table001", 1.0, 0, 0.4, 0.6, 0.38));
+  // a stand point 0.45 m in front of the chair lies 0.05 m inside the table
+  const Eigen::Vector2d stand(0.7, 0);
+  EXPECT_LT(PointClearance(scene, stand), 1e-9);
+  Eigen::Vector2d spot = ClearStandingSpot(scene, stand, stand, 0.25, 0.2);
+  EXPECT_LE((spot - stand).norm(), 0.25 + 1e-9);
+  // the most room the gap offers: its middle, 0.175 m from both
+  EXPECT_NEAR(spot.x(), 0.425, kSpotSearchStepM);
+  EXPECT_GT(PointClearance(scene, spot), 0.15);
+  // a point with room stays
+  const Eigen::Vector2d open(-1.0, 0);
+  EXPECT_EQ(ClearStandingSpot(scene, open, open, 0.25, 0.2), open);
+}
+
 TEST(Navigation, BadInputIsAnError) {
   core::SceneCatalog scene;
   NavConfig cfg;

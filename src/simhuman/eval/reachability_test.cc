@@ -60,8 +60,9 @@ TEST(ReachabilityTest, FarObjectNamesObjectDistanceAndStep) {
   ASSERT_FALSE(st.ok());
   EXPECT_EQ(st.code(), absl::StatusCode::kInvalidArgument);
   EXPECT_THAT(st.message(), HasSubstr("plan.json: step 1 (/0): object 'bed000' (part 'mattress') "
-                                      "is 3.2 m from human 0 and no get-close step precedes "
-                                      "step 1; walking is not implemented yet"));
+                                      "is 3.2 m from where human 0 starts, beyond the 1.0 m a "
+                                      "human reaches without walking; add a get-close step for "
+                                      "'bed000' before step 1"));
 }
 
 TEST(ReachabilityTest, LaterFirstContactIsReportedWithItsStep) {
@@ -73,7 +74,7 @@ TEST(ReachabilityTest, LaterFirstContactIsReportedWithItsStep) {
   absl::Status st = Check(BedScene(2.0 + kHalfWidth), plan);
   ASSERT_FALSE(st.ok());
   EXPECT_THAT(st.message(), HasSubstr("step 2 (/steps/1)"));
-  EXPECT_THAT(st.message(), HasSubstr("is 2.0 m from human 0"));
+  EXPECT_THAT(st.message(), HasSubstr("is 2.0 m from where step 1 leaves human 0"));
 }
 
 TEST(ReachabilityTest, GetCloseStepBeforeAllowsFarObjects) {
@@ -109,7 +110,62 @@ TEST(ReachabilityTest, LimitScalesWithTheHuman) {
   EXPECT_TRUE(Check(BedScene(0.9 + kHalfWidth), kLie).ok());
   absl::Status child = Check(BedScene(0.9 + kHalfWidth, 0.7), kLie);
   ASSERT_FALSE(child.ok());
-  EXPECT_THAT(child.message(), HasSubstr("within 0.7 m"));
+  EXPECT_THAT(child.message(), HasSubstr("beyond the 0.7 m a human reaches"));
+}
+
+// the living room's desk as UniHSI's Table 7 has it: a chair at (0, 0) facing +x, a table at
+// (1, 0) with a laptop at its near edge, a bed at (0, -3.5) facing +x; the human 3 m away
+Setup DeskScene() {
+  Setup s;
+  auto add = [&](const char* id, const char* type, double x, double y, double yaw, double z) {
+    world::ObjectSpec o;
+    o.id = id;
+    o.type = type;
+    o.pos = Eigen::Vector3d(x, y, z);
+    o.yaw_rad = yaw;
+    s.spec.objects.push_back(o);
+  };
+  add("chair000", "chair", 0, 0, 0, 0);
+  add("table001", "table", 1.0, 0, M_PI, 0);
+  add("laptop002", "laptop", 0.8, 0, M_PI, 0.75);
+  add("bed003", "bed", 0, -3.5, 0, 0);
+  world::HumanSpec h;
+  h.pos_xy = Eigen::Vector2d(3.0, 0);
+  s.spec.humans = {h};
+  core::StatusOr<core::SceneCatalog> c = world::BuildCatalog(s.spec);
+  EXPECT_TRUE(c.ok()) << c.status();
+  if (c.ok()) s.catalog = *c;
+  return s;
+}
+
+TEST(ReachabilityTest, FollowsWhereEarlierStepsLeaveTheHuman) {
+  // Table 7: walk to the chair, sit, both hands on the laptop: within reach of the seat
+  const char desk[] = R"([
+    [["chair000", "none", "none", "none", "front"]],
+    [["chair000", "seat surface", "pelvis", "contact", "up"]],
+    [["chair000", "seat surface", "pelvis", "contact", "up"],
+     ["laptop002", "keyboard", "left hand", "contact", "none"],
+     ["laptop002", "keyboard", "right hand", "contact", "none"]]
+  ])";
+  EXPECT_TRUE(Check(DeskScene(), desk).ok());
+  // the bed's pillow from that seat is out of reach, though the human started nowhere near it
+  const char pillow[] = R"([
+    [["chair000", "none", "none", "none", "front"]],
+    [["chair000", "seat surface", "pelvis", "contact", "up"]],
+    [["bed003", "pillow", "right hand", "contact", "up"]]
+  ])";
+  absl::Status st = Check(DeskScene(), pillow);
+  ASSERT_FALSE(st.ok());
+  EXPECT_THAT(st.message(), HasSubstr("step 3 (/2): object 'bed003' (part 'pillow') is"));
+  EXPECT_THAT(st.message(), HasSubstr("m from where step 2 leaves human 0"));
+  // walking to the bed leaves the laptop behind
+  const char back[] = R"([
+    [["bed003", "none", "none", "none", "front"]],
+    [["laptop002", "keyboard", "right hand", "contact", "up"]]
+  ])";
+  st = Check(DeskScene(), back);
+  ASSERT_FALSE(st.ok());
+  EXPECT_THAT(st.message(), HasSubstr("from where step 1 leaves human 0"));
 }
 
 }  // namespace
