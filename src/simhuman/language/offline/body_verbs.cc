@@ -225,7 +225,9 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c, bool in_pose)
   }
   std::string part;
   Direction dir = Direction::kNone;
-  if (np.part.empty()) {
+  if (np.part.empty() && o->movable && HasPart(*o, "body") && Find(t, 0, b, {"grab"}) < b) {
+    part = "body";  // "pick up the red box": a grasp, as in the grasp step of a put (TAB)
+  } else if (np.part.empty()) {
     std::tie(part, dir) = ReachPart(*o);
   } else {
     SH_ASSIGN_OR_RETURN(part, ResolvePart(*o, np, side, c));
