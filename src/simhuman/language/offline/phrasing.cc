@@ -127,6 +127,11 @@ Tokens Reword(const Tokens& raw) {
       }
     }
     if (w == "chill" && at(i + 1) == "out") ++i;
+    // "and then standing back up" (a bare "standing" is a filler)
+    if (w == "standing" && (at(i + 1) == "up" || (at(i + 1) == "back" && at(i + 2) == "up"))) {
+      out.push_back("stand");
+      continue;
+    }
     auto form = VerbForms().find(w);
     out.push_back(form != VerbForms().end() ? form->second : w);
   }
