@@ -65,6 +65,8 @@ TEST(OfflineRewordTest, SubjectsVerbFormsChatAndParticiples) {
               ElementsAre("raise", "it", "then", "x"));
   EXPECT_THAT(Reword({"press", "a", "key", "on", "the", "laptop"}),
               ElementsAre("touch", "a", "laptop", "keyboard"));
+  EXPECT_THAT(Reword({"her", "left", "knee", "on", "its", "left", "arm"}),
+              ElementsAre("your", "left", "knee", "on", "its", "left", "arm"));
   // "its arm" is the object's arm, "ok so" is not a purpose clause
   EXPECT_THAT(Reword({"its", "arm", "ok", "so", "the"}),
               ElementsAre("its", "arm", "ok", "so", "the"));

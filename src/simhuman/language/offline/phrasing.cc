@@ -42,11 +42,13 @@ const std::map<std::string, std::string>& VerbForms() {
   return *words;
 }
 
-bool IsLimb(const std::string& w) {
+// a limb of the character, after an optional side ("hands", "left knee"; not "left arm", an
+// armrest)
+bool IsLimbAt(const Tokens& raw, size_t k) {
   static const std::set<std::string> kLimbs = {"hand", "hands", "elbow", "elbows", "knee", "knees",
-                                               "foot", "feet",  "leg",   "legs",   "head", "arm",
-                                               "arms", "left",  "right", "both"};
-  return kLimbs.count(w) > 0;
+                                               "foot", "feet",  "leg",   "legs",   "head"};
+  if (k < raw.size() && (raw[k] == "left" || raw[k] == "right" || raw[k] == "both")) ++k;
+  return k < raw.size() && kLimbs.count(raw[k]) > 0;
 }
 
 // "high_stool003" split at its '_': the type "high_stool" and the rest of the id
@@ -73,8 +75,7 @@ Tokens Reword(const Tokens& raw) {
       continue;
     }
     // "its hands", "his left knee": the character's own body is "your"
-    if ((w == "its" || w == "his" || w == "her" || w == "their") && IsLimb(at(i + 1)) &&
-        !(at(i + 1) == "arm" || at(i + 1) == "arms")) {
+    if ((w == "its" || w == "his" || w == "her" || w == "their") && IsLimbAt(raw, i + 1)) {
       out.push_back("your");
       continue;
     }
@@ -107,7 +108,8 @@ Tokens Reword(const Tokens& raw) {
       }
     }
     // "knees bent up", "head raised off the pillow": the limb is up
-    if ((w == "bent" || w == "raised" || w == "lifted") && !out.empty() && IsLimb(out.back())) {
+    if ((w == "bent" || w == "raised" || w == "lifted") && !out.empty() &&
+        IsLimbAt(out, out.size() - 1)) {
       out.push_back("up");
       if (at(i + 1) == "up") ++i;
       if (at(i + 1) == "off") {
