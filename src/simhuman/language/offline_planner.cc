@@ -25,10 +25,11 @@ core::StatusOr<PlanResult> OfflinePlanner::Plan(std::string_view command,
                                                 const PlanContext& context) {
   if (context.scene == nullptr) return offline::Invalid("no scene given to the planner");
   SH_ASSIGN_OR_RETURN(offline::Tokens raw, offline::Tokenize(command));
-  offline::Tokens tokens = offline::Normalize(offline::CorrectTypos(raw));
+  offline::Tokens tokens = offline::Normalize(offline::CorrectTypos(offline::Reword(raw)));
   SH_ASSIGN_OR_RETURN(std::vector<offline::ClauseWords> clauses,
                       offline::SplitMarkedClauses(tokens));
   offline::JoinClauses(clauses);
+  offline::JoinParticipleBase(raw, clauses);
   offline::Session session(*context.scene, context);
   for (const offline::ClauseWords& clause : clauses) {
     session.NextClause(clause.sequenced);

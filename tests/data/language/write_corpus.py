@@ -385,7 +385,9 @@ add(TT, TAB("box004", "box002", "top", "up"), "put the yellow box on top of the 
 add(TT, TAB("box003", "box001", "top", "up"), "stack the blue box on top of the red box")
 add(TT, TAB("box001", "box003", "top", "up"), "set the red box on the blue box")
 add(TT, TAB("cylinder005", "box001", "body", "none"), "place the blue cylinder next to the red box")
-add(TT, [REACH("box001", "top", "right", "up")], "touch the red box", "pick up the red box")
+add(TT, [REACH("box001", "top", "right", "up")], "touch the red box")
+# picking up is the grasp of a put (TAB's first step: the body, direction none), not a touch
+add(TT, [["box001|body|right hand|contact|none"]], "pick up the red box")
 add(TT, [REACH("table000", "board", "right", "up")], "touch the table")
 add(TT, [REACH("sphere006", "body", "left", "none")], "touch the green sphere with your left hand")
 ambiguous(TT, "put the red box on the blue one", "put the box on the cylinder",

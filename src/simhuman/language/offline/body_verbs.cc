@@ -93,6 +93,16 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, SitMode mode, const st
 absl::Status Session::SitPose(const Tokens& t, size_t j, const std::string& c) {
   size_t vb = j;
   while (vb < t.size() && (t[vb] == "with" || t[vb] == "while" || t[vb] == "and")) ++vb;
+  // "on your left side on the bed with your left hand on the pillow": two poses, both kept
+  const size_t with = Find(t, vb, t.size(), {"with"});
+  if (with < t.size()) {
+    SH_ASSIGN_OR_RETURN(std::optional<Variant> first, ParseVariant(t, vb, with, c));
+    SH_ASSIGN_OR_RETURN(std::optional<Variant> second, ParseVariant(t, with + 1, t.size(), c));
+    if (first && second) {
+      SH_RETURN_IF_ERROR(AddVariant(*first, c));
+      return AddVariant(*second, c);
+    }
+  }
   SH_ASSIGN_OR_RETURN(std::optional<Variant> v, ParseVariant(t, vb, t.size(), c));
   if (v) return AddVariant(*v, c);
   if (posture_ == Posture::kSit && Find(t, vb, t.size(), {"hand", "hands"}) < t.size()) {
@@ -215,7 +225,9 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c, bool in_pose)
   }
   std::string part;
   Direction dir = Direction::kNone;
-  if (np.part.empty()) {
+  if (np.part.empty() && o->movable && HasPart(*o, "body") && Find(t, 0, b, {"grab"}) < b) {
+    part = "body";  // "pick up the red box": a grasp, as in the grasp step of a put (TAB)
+  } else if (np.part.empty()) {
     std::tie(part, dir) = ReachPart(*o);
   } else {
     SH_ASSIGN_OR_RETURN(part, ResolvePart(*o, np, side, c));

@@ -34,7 +34,8 @@ core::StatusOr<Tokens> Tokenize(std::string_view command) {
     } else if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '-' || c == '_' ||
                c == '/') {
       flush();
-    } else if (c == ',' || c == '.' || c == ';' || c == '!' || c == '?' || c == ':') {
+    } else if (c == ',' || c == '.' || c == ';' || c == '!' || c == '?' || c == ':' ||
+               c == '>') {  // "sit chair002 -> type on laptop001": an arrow sequences
       flush();
       out.push_back("then");
     } else {

@@ -13,8 +13,8 @@ namespace simhuman::language::offline {
 
 /// Splits a command into lower-case words. Letters and digits form words; apostrophes are
 /// dropped ("don't" -> "dont"); spaces, tabs, newlines, '-', '_' and '/' separate words; each
-/// of , . ; ! ? : becomes the clause separator "then". kInvalidArgument for a command longer
-/// than kMaxCommandBytes or any other byte (the message names it and its offset).
+/// of , . ; ! ? : > (an arrow "->") becomes the clause separator "then". kInvalidArgument for a
+/// command longer than kMaxCommandBytes or any other byte (the message names it and its offset).
 core::StatusOr<Tokens> Tokenize(std::string_view command);
 
 /// One clause and how it was joined to the one before.

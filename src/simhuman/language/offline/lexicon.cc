@@ -216,7 +216,7 @@ const std::map<std::string, std::string>& Synonyms() {
       {"lug", "carry"},       {"drop", "put"},         {"perch", "sit"},
       {"plop", "sit"},        {"plonk", "sit"},        {"resting", "with"},
       {"typing", "type"},     {"pls", "please"},       {"plz", "please"},
-      {"but", "and"},         {"flattest", "flat"},
+      {"but", "and"},         {"flattest", "flat"},    {"pick", "grab"},
   };
   return *words;
 }
@@ -281,9 +281,10 @@ const std::map<std::string, std::string>& PartWords() {
       {"armrest", "arm"},       {"armrests", "arm"},      {"pillow", "pillow"},
       {"pillows", "pillow"},    {"mattress", "mattress"}, {"top", "top"},
       {"tabletop", "top"},      {"surface", "surface"},   {"board", "board"},
-      {"keyboard", "keyboard"}, {"keys", "keyboard"},     {"screen", "screen"},
-      {"display", "screen"},    {"monitor", "screen"},    {"lid", "lid"},
-      {"edge", "edge"},         {"body", "body"},         {"point", "point"}};
+      {"keyboard", "keyboard"}, {"keys", "keyboard"},     {"key", "keyboard"},
+      {"screen", "screen"},     {"display", "screen"},    {"monitor", "screen"},
+      {"lid", "lid"},           {"edge", "edge"},         {"body", "body"},
+      {"point", "point"}};
   return *words;
 }
 

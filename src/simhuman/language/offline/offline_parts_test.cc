@@ -9,6 +9,7 @@
 #include "simhuman/language/offline/clauses.h"
 #include "simhuman/language/offline/lexicon.h"
 #include "simhuman/language/offline/noun_phrase.h"
+#include "simhuman/language/offline/rewrite.h"
 #include "simhuman/language/offline/spatial.h"
 #include "simhuman/language/offline_planner.h"
 
@@ -49,6 +50,29 @@ TEST(OfflineLexiconTest, LongestPhraseWinsThenSynonymsThenFillers) {
   EXPECT_FALSE(Known("banana"));
   EXPECT_TRUE(IsBodyWord("other_knee"));
   EXPECT_FALSE(IsBodyWord("chair"));
+}
+
+TEST(OfflineRewordTest, SubjectsVerbFormsChatAndParticiples) {
+  EXPECT_THAT(Reword({"npc", "walks", "to", "it", "then", "he", "rests", "its", "hands"}),
+              ElementsAre("walk", "to", "it", "then", "rest", "your", "hands"));
+  EXPECT_THAT(Reword({"goto", "high", "stool003", "and", "chill", "on", "ur", "bed"}),
+              ElementsAre("go", "to", "high_stool003", "and", "rest", "on", "your", "bed"));
+  EXPECT_THAT(Reword({"knees", "bent", "up", "head", "raised", "off", "the", "pillow"}),
+              ElementsAre("knees", "up", "head", "up"));
+  EXPECT_THAT(Reword({"sit", "without", "touching", "the", "backrest"}),
+              ElementsAre("sit", "leaning", "forward"));
+  EXPECT_THAT(Reword({"raise", "it", "so", "the", "foot", "stays", "flat", "then", "x"}),
+              ElementsAre("raise", "it", "then", "x"));
+  EXPECT_THAT(Reword({"press", "a", "key", "on", "the", "laptop"}),
+              ElementsAre("touch", "a", "laptop", "keyboard"));
+  EXPECT_THAT(Reword({"her", "left", "knee", "on", "its", "left", "arm"}),
+              ElementsAre("your", "left", "knee", "on", "its", "left", "arm"));
+  // "its arm" is the object's arm, "ok so" is not a purpose clause
+  EXPECT_THAT(Reword({"its", "arm", "ok", "so", "the"}),
+              ElementsAre("its", "arm", "ok", "so", "the"));
+  core::StatusOr<Tokens> t = Tokenize("sit -> type");
+  ASSERT_TRUE(t.ok());
+  EXPECT_THAT(*t, ElementsAre("sit", "then", "type"));
 }
 
 TEST(OfflineClausesTest, SplitsOnThenAndAndDropsEmptyClauses) {

@@ -93,7 +93,75 @@ Tokens CorrectTypos(const Tokens& raw) {
   return out;
 }
 
+namespace {
+
+bool Contains(const Tokens& t, const std::string& w) {
+  return std::find(t.begin(), t.end(), w) != t.end();
+}
+
+// "with your left hand" / "using both hands" and nothing else
+bool IsInstrument(const Tokens& a) {
+  if (a.empty() || (a[0] != "with" && a[0] != "using")) return false;
+  for (size_t k = 1; k < a.size(); ++k) {
+    if (a[k] != "your" && a[k] != "left" && a[k] != "right" && a[k] != "both" && a[k] != "hand" &&
+        a[k] != "hands") {
+      return false;
+    }
+  }
+  return a.back() == "hand" || a.back() == "hands";
+}
+
+// an object named first ("red box on ...", "box002 on ..."): a clause without its verb
+bool StartsWithObject(const Tokens& b) {
+  if (b.empty()) return false;
+  const std::string& w = b[0];
+  auto type = TypeWords().find(w);
+  return Colors().count(w) > 0 || (type != TypeWords().end() && !type->second.empty()) ||
+         std::any_of(w.begin(), w.end(), [](char c) { return std::isdigit(c) != 0; });
+}
+
+// "lift them off" after "... your hands on the armrests": "raise your hands off armrests"
+bool TakeThemOff(const std::vector<ClauseWords>& clauses, size_t k, Tokens& b) {
+  if (b.size() != 3 || b[1] != "them" || b[2] != "off" ||
+      (b[0] != "raise" && b[0] != "grab" && b[0] != "move")) {
+    return false;
+  }
+  for (size_t p = k + 1; p-- > 0;) {
+    const Tokens& a = clauses[p].words;
+    for (size_t h = 0; h < a.size(); ++h) {
+      if (a[h] != "hands" && a[h] != "hand") continue;
+      const size_t on = static_cast<size_t>(
+          std::find(a.begin() + static_cast<long>(h), a.end(), "on") - a.begin());
+      if (on >= a.size()) continue;
+      size_t from = h;
+      while (from > 0 && (a[from - 1] == "your" || a[from - 1] == "left" ||
+                          a[from - 1] == "right" || a[from - 1] == "both")) {
+        --from;
+      }
+      Tokens joined = {"raise"};
+      joined.insert(joined.end(), a.begin() + static_cast<long>(from),
+                    a.begin() + static_cast<long>(on));
+      joined.push_back("off");
+      joined.insert(joined.end(), a.begin() + static_cast<long>(on) + 1, a.end());
+      b = std::move(joined);
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 void JoinClauses(std::vector<ClauseWords>& clauses) {
+  for (size_t k = 0; k < clauses.size(); ++k) {
+    Tokens& a = clauses[k].words;
+    // "sit with your hands on the keyboard": the seat at the laptop
+    if (a.size() > 2 && a[0] == "sit" && a[1] == "with" &&
+        (Contains(a, "keyboard") || Contains(a, "laptop"))) {
+      a.insert(a.begin() + 1, {"at", "keyboard"});
+    }
+    if (k + 1 < clauses.size()) TakeThemOff(clauses, k, clauses[k + 1].words);
+  }
   for (size_t k = 0; k + 1 < clauses.size(); ++k) {
     Tokens& a = clauses[k].words;
     Tokens& b = clauses[k + 1].words;
@@ -101,19 +169,43 @@ void JoinClauses(std::vector<ClauseWords>& clauses) {
       a = {"sit", "at", "keyboard"};
       continue;
     }
-    // "grab A [with your H hand]" + "put it REL B" -> "put A REL B [with your H hand]"
-    const bool put = b.size() >= 3 && (b[0] == "put" || b[0] == "move" || b[0] == "stack") &&
-                     b[1] == "it" && RelFromWord(b[2]).has_value();
+    // "with your left hand, put the red box on the cylinder": the hand ends the next clause
+    if (IsInstrument(a)) {
+      b.insert(b.end(), a.begin(), a.end());
+      clauses[k + 1].sequenced = clauses[k].sequenced;
+      clauses.erase(clauses.begin() + static_cast<long>(k));
+      --k;
+      continue;
+    }
+    // "put the ball on the cylinder, then the red box on the yellow one": the verb is kept
+    const bool placing = !a.empty() && (a[0] == "put" || a[0] == "stack" || a[0] == "move");
+    if (placing && StartsWithObject(b) &&
+        std::any_of(b.begin(), b.end(), [](const std::string& w) { return RelFromWord(w); })) {
+      b.insert(b.begin(), a[0]);
+    }
+    // "grab A [with your H hand]" + "put it REL B" (or "place REL B") -> "put A REL B [...]"
+    const bool put = b.size() >= 2 && (b[0] == "put" || b[0] == "move" || b[0] == "stack") &&
+                     ((b.size() >= 3 && b[1] == "it" && RelFromWord(b[2]).has_value()) ||
+                      RelFromWord(b[1]).has_value());
     if (a.size() < 2 || a[0] != "grab" || !put) continue;
+    const size_t skip = b[1] == "it" ? 2 : 1;
     const size_t with =
         static_cast<size_t>(std::find(a.begin(), a.end(), std::string("with")) - a.begin());
     Tokens joined = {"put"};
     joined.insert(joined.end(), a.begin() + 1, a.begin() + static_cast<long>(with));
-    joined.insert(joined.end(), b.begin() + 2, b.end());
+    joined.insert(joined.end(), b.begin() + static_cast<long>(skip), b.end());
     joined.insert(joined.end(), a.begin() + static_cast<long>(with), a.end());
     clauses[k].words = std::move(joined);
     clauses.erase(clauses.begin() + static_cast<long>(k) + 1);
   }
+}
+
+void JoinParticipleBase(const Tokens& raw, std::vector<ClauseWords>& clauses) {
+  if (raw.empty() || clauses.size() < 2) return;
+  if (raw[0] != "seated" && raw[0] != "sitting" && raw[0] != "lying") return;
+  const Tokens& base = clauses[0].words;
+  if (base.empty() || (base[0] != "sit" && base[0] != "lie")) return;
+  clauses[1].sequenced = false;
 }
 
 }  // namespace simhuman::language::offline

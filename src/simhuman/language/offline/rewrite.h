@@ -12,6 +12,17 @@
 
 namespace simhuman::language::offline {
 
+/// Rewords raw words (before CorrectTypos and Normalize, phrasing.cc): drops a scripted subject
+/// at a clause start ("NPC sits", "then he gets up"), reads third-person and -ing verb forms and
+/// chat spellings ("ur", "goto", "chill"), "its/his/her hands" as "your hands", "knees bent up"
+/// and "head raised off the pillow" as "... up", "without touching the backrest" as "leaning
+/// forward", and drops a trailing purpose clause ("so the foot stays flat").
+Tokens Reword(const Tokens& raw);
+
+/// A command that opens with a participle base ("Seated in the chair, place your right hand on
+/// your right knee"): the pose in the next clause joins the sit/lie step.
+void JoinParticipleBase(const Tokens& raw, std::vector<ClauseWords>& clauses);
+
 /// Optimal string alignment distance (insertions, deletions, substitutions and transpositions
 /// of neighbours each cost 1).
 int EditDistance(const std::string& a, const std::string& b);
@@ -23,8 +34,11 @@ int EditDistance(const std::string& a, const std::string& b);
 Tokens CorrectTypos(const Tokens& raw);
 
 /// Joins "grab/pick up A [with your H hand]" and a following "put it REL B" into one "put A REL
-/// B with your H hand"; a bare "sit" before "type" becomes "sit at the keyboard" (the seat at
-/// the laptop).
+/// B with your H hand" (also with the object left out: "pick A, place right of B"); a bare "sit"
+/// before "type", or a sit whose pose puts the hands on the keyboard, sits at the keyboard (the
+/// seat at the laptop); a fronted instrument ("with your left hand, put ...") moves to the end of
+/// the next clause; a clause that leaves out the verb ("put A on B, then C on D") takes the verb
+/// of the clause before; "lift them off" after hands were put on a part takes those hands off it.
 void JoinClauses(std::vector<ClauseWords>& clauses);
 
 }  // namespace simhuman::language::offline
