@@ -4,85 +4,11 @@
 
 namespace simhuman::language::offline {
 
-// phrases rewritten to one canonical token before anything else (longest match first)
-const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
+namespace {
+
+// idioms, politeness and filler, objects and parts: the second half of Phrases()
+const std::vector<std::pair<Tokens, Tokens>>& IdiomPhrases() {
   static const auto* phrases = new std::vector<std::pair<Tokens, Tokens>>{
-      // clause separators
-      {{"and", "then"}, {"then"}},
-      {{"after", "that"}, {"then"}},
-      {{"after", "this"}, {"then"}},
-      {{"afterwards"}, {"then"}},
-      {{"afterward"}, {"then"}},
-      {{"finally"}, {"then"}},
-      {{"and", "finally"}, {"then"}},
-      {{"once", "done"}, {"then"}},
-      {{"next", "to"}, {"near"}},
-      {{"next"}, {"then"}},
-      {{"left", "and", "right"}, {"both"}},
-      // relations
-      {{"on", "top", "of"}, {"onto"}},
-      {{"on", "to"}, {"onto"}},
-      {{"in", "front", "of"}, {"front_of"}},
-      {{"to", "the", "left", "of"}, {"left_of"}},
-      {{"to", "the", "right", "of"}, {"right_of"}},
-      {{"on", "the", "left", "of"}, {"left_of"}},
-      {{"on", "the", "right", "of"}, {"right_of"}},
-      {{"left", "of"}, {"left_of"}},
-      {{"right", "of"}, {"right_of"}},
-      {{"in", "back", "of"}, {"behind"}},
-      {{"close", "to"}, {"near"}},
-      {{"closest", "to"}, {"nearest"}},
-      {{"nearest", "to"}, {"nearest"}},
-      {{"farthest", "from"}, {"farthest"}},
-      {{"furthest", "from"}, {"farthest"}},
-      {{"beside"}, {"near"}},
-      {{"besides"}, {"near"}},
-      {{"by"}, {"near"}},
-      {{"alongside"}, {"near"}},
-      {{"closest"}, {"nearest"}},
-      {{"furthest"}, {"farthest"}},
-      // verbs
-      {{"take", "a", "seat"}, {"sit"}},
-      {{"have", "a", "seat"}, {"sit"}},
-      {{"be", "seated"}, {"sit"}},
-      {{"seat", "yourself"}, {"sit"}},
-      {{"have", "a", "rest"}, {"rest"}},
-      {{"take", "a", "rest"}, {"rest"}},
-      {{"take", "a", "nap"}, {"lie"}},
-      {{"have", "a", "nap"}, {"lie"}},
-      {{"lay", "down"}, {"lie"}},
-      {{"get", "up"}, {"stand", "up"}},
-      {{"rise"}, {"stand", "up"}},
-      {{"get", "closer", "to"}, {"go"}},
-      {{"get", "close", "to"}, {"go"}},
-      {{"get", "near"}, {"go"}},
-      {{"make", "your", "way", "to"}, {"go"}},
-      {{"go", "over", "to"}, {"go"}},
-      {{"walk", "over", "to"}, {"go"}},
-      {{"pick", "up"}, {"grab"}},
-      {{"pick", "it", "up"}, {"grab", "it"}},
-      {{"pick", "them", "up"}, {"grab", "them"}},
-      // carrying teams ("you" alone is a filler)
-      {{"you", "two"}, {"team2"}},
-      {{"you", "three"}, {"team3"}},
-      {{"you", "four"}, {"team4"}},
-      {{"the", "two", "of", "you"}, {"team2"}},
-      {{"the", "three", "of", "you"}, {"team3"}},
-      {{"the", "four", "of", "you"}, {"team4"}},
-      {{"both", "of", "you"}, {"team2"}},
-      {{"you", "both"}, {"team2"}},
-      {{"all", "of", "you"}, {"teamall"}},
-      {{"you", "all"}, {"teamall"}},
-      {{"everyone"}, {"teamall"}},
-      {{"everybody"}, {"teamall"}},
-      {{"together"}, {"teamany"}},
-      {{"get", "on"}, {"geton"}},
-      {{"get", "onto"}, {"geton"}},
-      {{"climb", "on"}, {"geton"}},
-      {{"climb", "onto"}, {"geton"}},
-      {{"head", "over", "to"}, {"go"}},
-      {{"head", "to"}, {"go"}},
-      {{"head", "towards"}, {"go"}},
       // idioms for sitting, lying, standing up and typing
       {{"grab", "a", "seat"}, {"sit"}},
       {{"grab", "a", "chair"}, {"sit"}},
@@ -181,6 +107,96 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
       {{"other", "leg"}, {"other_knee"}},
   };
   return *phrases;
+}
+
+}  // namespace
+
+// phrases rewritten to one canonical token before anything else (longest match first)
+const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
+  static const auto* phrases = new std::vector<std::pair<Tokens, Tokens>>{
+      // clause separators
+      {{"and", "then"}, {"then"}},
+      {{"after", "that"}, {"then"}},
+      {{"after", "this"}, {"then"}},
+      {{"afterwards"}, {"then"}},
+      {{"afterward"}, {"then"}},
+      {{"finally"}, {"then"}},
+      {{"and", "finally"}, {"then"}},
+      {{"once", "done"}, {"then"}},
+      {{"next", "to"}, {"near"}},
+      {{"next"}, {"then"}},
+      {{"left", "and", "right"}, {"both"}},
+      // relations
+      {{"on", "top", "of"}, {"onto"}},
+      {{"on", "to"}, {"onto"}},
+      {{"in", "front", "of"}, {"front_of"}},
+      {{"to", "the", "left", "of"}, {"left_of"}},
+      {{"to", "the", "right", "of"}, {"right_of"}},
+      {{"on", "the", "left", "of"}, {"left_of"}},
+      {{"on", "the", "right", "of"}, {"right_of"}},
+      {{"left", "of"}, {"left_of"}},
+      {{"right", "of"}, {"right_of"}},
+      {{"in", "back", "of"}, {"behind"}},
+      {{"close", "to"}, {"near"}},
+      {{"closest", "to"}, {"nearest"}},
+      {{"nearest", "to"}, {"nearest"}},
+      {{"farthest", "from"}, {"farthest"}},
+      {{"furthest", "from"}, {"farthest"}},
+      {{"beside"}, {"near"}},
+      {{"besides"}, {"near"}},
+      {{"by"}, {"near"}},
+      {{"alongside"}, {"near"}},
+      {{"closest"}, {"nearest"}},
+      {{"furthest"}, {"farthest"}},
+      // verbs
+      {{"take", "a", "seat"}, {"sit"}},
+      {{"have", "a", "seat"}, {"sit"}},
+      {{"be", "seated"}, {"sit"}},
+      {{"seat", "yourself"}, {"sit"}},
+      {{"have", "a", "rest"}, {"rest"}},
+      {{"take", "a", "rest"}, {"rest"}},
+      {{"take", "a", "nap"}, {"lie"}},
+      {{"have", "a", "nap"}, {"lie"}},
+      {{"lay", "down"}, {"lie"}},
+      {{"get", "up"}, {"stand", "up"}},
+      {{"rise"}, {"stand", "up"}},
+      {{"get", "closer", "to"}, {"go"}},
+      {{"get", "close", "to"}, {"go"}},
+      {{"get", "near"}, {"go"}},
+      {{"make", "your", "way", "to"}, {"go"}},
+      {{"go", "over", "to"}, {"go"}},
+      {{"walk", "over", "to"}, {"go"}},
+      {{"pick", "up"}, {"grab"}},
+      {{"pick", "it", "up"}, {"grab", "it"}},
+      {{"pick", "them", "up"}, {"grab", "them"}},
+      // carrying teams ("you" alone is a filler)
+      {{"you", "two"}, {"team2"}},
+      {{"you", "three"}, {"team3"}},
+      {{"you", "four"}, {"team4"}},
+      {{"the", "two", "of", "you"}, {"team2"}},
+      {{"the", "three", "of", "you"}, {"team3"}},
+      {{"the", "four", "of", "you"}, {"team4"}},
+      {{"both", "of", "you"}, {"team2"}},
+      {{"you", "both"}, {"team2"}},
+      {{"all", "of", "you"}, {"teamall"}},
+      {{"you", "all"}, {"teamall"}},
+      {{"everyone"}, {"teamall"}},
+      {{"everybody"}, {"teamall"}},
+      {{"together"}, {"teamany"}},
+      {{"get", "on"}, {"geton"}},
+      {{"get", "onto"}, {"geton"}},
+      {{"climb", "on"}, {"geton"}},
+      {{"climb", "onto"}, {"geton"}},
+      {{"head", "over", "to"}, {"go"}},
+      {{"head", "to"}, {"go"}},
+      {{"head", "towards"}, {"go"}},
+  };
+  static const auto* all = [] {
+    auto* v = new std::vector<std::pair<Tokens, Tokens>>(*phrases);
+    v->insert(v->end(), IdiomPhrases().begin(), IdiomPhrases().end());
+    return v;
+  }();
+  return *all;
 }
 
 // single-word synonyms
