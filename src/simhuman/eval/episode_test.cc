@@ -168,6 +168,30 @@ EpisodeRecord Record(bool plan_success, bool extra_pass, double error_m, bool fe
   return r;
 }
 
+TEST(EvalRunnerTest, SuccessNeedsThePlanThenTheHoldThenTheExtraCheck) {
+  // every way to loosen the rule flips one of these cases
+  struct Case {
+    bool plan, holds, fell, extra, held, success;
+  };
+  const Case cases[] = {
+      {true, true, false, true, true, true},     // all three
+      {false, true, false, true, false, false},  // the plan failed: a later pose counts for nothing
+      {true, false, false, true, false, false},  // completed, but no longer held 3 s later
+      {true, true, true, true, false, false},    // held at the end, but fell in between
+      {true, true, false, false, true, false},   // held, but the suite's extra check fails
+  };
+  for (const Case& c : cases) {
+    EpisodeRecord r;
+    r.result.success = c.plan;
+    r.result.fell = c.fell;
+    r.extra.pass = c.extra;
+    JudgeEpisode(c.holds, &r);
+    EXPECT_EQ(r.held, c.held) << c.plan << c.holds << c.fell << c.extra;
+    EXPECT_EQ(r.success, c.success) << c.plan << c.holds << c.fell << c.extra;
+  }
+  EXPECT_DOUBLE_EQ(kEvalSettleS, 3.0);
+}
+
 TEST(EvalRunnerTest, SummaryByHand) {
   std::vector<EpisodeRecord> recs = {
       Record(true, true, 0.02, false, 2, 10, 5), Record(true, false, 0.04, false, 2, 10, 5),

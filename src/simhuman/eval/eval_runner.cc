@@ -21,6 +21,11 @@ nlohmann::ordered_json NumberOrNull(double v) {
 
 }  // namespace
 
+void JudgeEpisode(bool last_step_holds, EpisodeRecord* record) {
+  record->held = record->result.success && last_step_holds && !record->result.fell;
+  record->success = record->result.success && record->held && record->extra.pass;
+}
+
 Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& records,
                   int episodes_requested) {
   Summary s;
@@ -173,15 +178,12 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   rec.result = *result;
   rec.extra =
       EvaluateExtra(*spec, (*sim)->catalog(), (*sim)->BodyPoints((*sim)->data(), spec->agent));
-  if (rec.result.success) {
-    // the last step's pairs must still hold at the end of the settle time, without a fall
-    core::SceneCatalog now = (*sim)->catalog();
-    (*sim)->SyncCatalog((*sim)->data(), &now);
-    plan::StepEval last = plan::EvaluateStep(
-        chain->steps.back(), now, control::AllBodyPoints(**sim, (*sim)->data()), run.pair);
-    rec.held = last.complete && !rec.result.fell;
-  }
-  rec.success = rec.result.success && rec.held && rec.extra.pass;
+  // the last step's pairs at the end of the settle time
+  core::SceneCatalog now = (*sim)->catalog();
+  (*sim)->SyncCatalog((*sim)->data(), &now);
+  plan::StepEval last = plan::EvaluateStep(chain->steps.back(), now,
+                                           control::AllBodyPoints(**sim, (*sim)->data()), run.pair);
+  JudgeEpisode(last.complete, &rec);
   rec.scene = world::SceneToJson(spec->scene);
   rec.plan = spec->plan;
   if (render) {

@@ -37,6 +37,12 @@ struct EpisodeRecord {
   nlohmann::json plan;       ///< the episode's plan
 };
 
+/// The final success rule of every plan suite, on a record whose `result` and `extra` are set:
+/// the plan succeeded (every step completed in order within its budget), then its last step
+/// still holds `kEvalSettleS` later (`last_step_holds`, evaluated at the end of the episode)
+/// without a fall in between, then the suite's extra check passes. Sets `held` and `success`.
+void JudgeEpisode(bool last_step_holds, EpisodeRecord* record);
+
 /// Aggregates over finished episodes.
 struct Summary {
   std::string suite;

@@ -168,5 +168,21 @@ TEST(ReachabilityTest, FollowsWhereEarlierStepsLeaveTheHuman) {
   EXPECT_THAT(st.message(), HasSubstr("from where step 1 leaves human 0"));
 }
 
+TEST(ReachabilityTest, UniHsiTableFilesAreSceneAndPlanAndPassThePreflight) {
+  // UniHSI's Tables 5-7, each one file given as both --scene and --plan
+  for (const char* name : {"unihsi_table5_plan.json", "unihsi_table6_plan.json",
+                           "unihsi_table7_plan.json"}) {
+    const std::string path = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/scenes/" + name;
+    core::StatusOr<world::SceneSpec> scene = world::LoadScene(path);
+    ASSERT_TRUE(scene.ok()) << scene.status();
+    core::StatusOr<core::SceneCatalog> catalog = world::BuildCatalog(*scene);
+    ASSERT_TRUE(catalog.ok()) << catalog.status();
+    core::StatusOr<plan::ContactChain> chain = plan::LoadContactChainFile(path);
+    ASSERT_TRUE(chain.ok()) << chain.status();
+    ASSERT_TRUE(plan::ValidateAndGround(*chain, *catalog).ok()) << name;
+    EXPECT_TRUE(CheckWithinReach(*chain, *catalog, scene->humans).ok()) << name;
+  }
+}
+
 }  // namespace
 }  // namespace simhuman::eval

@@ -70,3 +70,23 @@ TEST(WalkEval, StepSuiteAsksForShortStepsBehindOrBesideIntegration) {
 
 }  // namespace
 }  // namespace simhuman::eval
+
+namespace simhuman::eval {
+namespace {
+
+// the shipped walking policy walks: UniHSI's far suites depend on it (label slow)
+TEST(WalkEval, ShippedPolicyWalksToItsGoalsSlow) {
+  WalkEvalOptions o;
+  o.policy = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/walk.pt";
+  o.episodes = 10;
+  o.seed = 1;
+  std::vector<WalkEpisode> eps;
+  auto sum = RunWalkEval(o, &eps);
+  ASSERT_TRUE(sum.ok()) << sum.status();
+  EXPECT_GE(sum->success_rate, 0.9);
+  EXPECT_EQ(sum->fall_rate, 0.0);
+  EXPECT_GT(sum->mean_time_s, 0.0);
+}
+
+}  // namespace
+}  // namespace simhuman::eval

@@ -13,7 +13,7 @@ namespace {
 constexpr double kDegToRad = M_PI / 180.0;
 constexpr double kYawJitterDeg = 10.0;
 // a desk's chair: seat front edge this far from the table's edge (room to step in and sit)
-constexpr double kDeskGapLoM = 0.38, kDeskGapHiM = 0.48;
+constexpr double kDeskGapLoM = 0.55, kDeskGapHiM = 0.65;
 // the laptop's near edge this far in from the table's edge
 constexpr double kLaptopInsetM = 0.02;
 // the start's floor: the room's grown by this much on every side

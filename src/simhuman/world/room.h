@@ -38,7 +38,7 @@ struct Room {
 
 /// Draws a room. Object ids are the type plus a 3-digit running index ("bed000", "table001",
 /// "laptop002", "chair003", ...). Yaws are a quarter turn times k plus up to +-10 degrees; sizes
-/// from RandomObjectSpec(); a desk's chair stands 0.38-0.48 m from the table's edge (room to
+/// from RandomObjectSpec(); a desk's chair stands 0.55-0.65 m from the table's edge (room to
 /// step in front of the seat) and its laptop 2 cm from that edge. Errors: InvalidArgument for
 /// an unknown item (listing RoomItems()) or a non-positive size; ResourceExhausted when a group
 /// does not fit without overlap after max_tries draws ("cannot furnish ...: the sofa does not
