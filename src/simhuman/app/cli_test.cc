@@ -233,8 +233,8 @@ TEST(CliTest, RunObjectTooFarToReach) {
   std::string out = OutDir("too_far");
   CliRun r = Cli({"run", "--scene", kData + "far_bed_scene.json", "--plan",
                   kData + "malformed_plan_too_far.json", "--out", out});
-  ExpectBadInput(r, {"object 'bed000'", "from where human 0 starts", "add a get-close step",
-                     "before step 1"});
+  ExpectBadInput(
+      r, {"object 'bed000'", "from where human 0 starts", "add a get-close step", "before step 1"});
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

@@ -20,6 +20,15 @@ std::vector<plan::BodyPoints> AllBodyPoints(const world::SimWorld& world, const 
   return out;
 }
 
+std::vector<Eigen::Vector3d> JointCentrePelvis(std::vector<Eigen::Vector3d> points) {
+  const int l = static_cast<int>(core::BodyJoint::kLeftHip);
+  const int r = static_cast<int>(core::BodyJoint::kRightHip);
+  if (static_cast<int>(points.size()) > std::max(l, r)) {
+    points[static_cast<int>(core::BodyJoint::kPelvis)] = 0.5 * (points[l] + points[r]);
+  }
+  return points;
+}
+
 bool IsFall(Posture posture, double head_z_m, double scale, const RunOptions& options) {
   const bool lying = posture == Posture::kLieBack || posture == Posture::kLieSide;
   return head_z_m < (lying ? kLyingFallHeadHeightM : options.fall_head_height_m * scale);
@@ -57,6 +66,7 @@ class EpisodeLoop {
         base_dt_(m_->opt.timestep),
         catalog_(world.catalog()),
         tracker_(chain, options.tracker),
+        tracker_joint_centre_(chain, options.tracker),
         n_agents_(world.num_agents()),
         tasks_(n_agents_),
         next_act_(n_agents_, 0.0),
@@ -101,6 +111,8 @@ class EpisodeLoop {
     res_.steps_completed = tracker_.steps_completed();
     auto ce = tracker_.contact_error_m();
     res_.contact_error_m = ce ? *ce : -1;
+    auto cj = tracker_joint_centre_.contact_error_m();
+    res_.contact_error_joint_centre_m = cj ? *cj : -1;
     res_.step_completion_s = tracker_.completion_times_s();
     for (const plan::StepRecord& s : tracker_.records()) res_.pair_errors_m.push_back(s.errors_m);
     res_.sim_time_s = d_->time - t_start_;
@@ -121,6 +133,7 @@ class EpisodeLoop {
   bool ended() const { return !res_.end_reason.empty(); }
   void Finish(const std::string& reason) {
     tracker_.Finish();
+    tracker_joint_centre_.Finish();
     res_.end_reason = reason;
   }
 
@@ -199,7 +212,15 @@ class EpisodeLoop {
     auto pts = AllBodyPoints(world_, d_);
     plan::StepEval ev = plan::EvaluateStep(chain_.steps[step], catalog_, pts, options_.pair);
     bool was_done = tracker_.done();
-    if (!was_done) tracker_.Update(t, ev);
+    if (!was_done) {
+      tracker_.Update(t, ev);
+      // the same completions, errors measured from UniHSI's pelvis point
+      std::vector<plan::BodyPoints> jc = pts;
+      for (plan::BodyPoints& p : jc) p.pos_world = JointCentrePelvis(std::move(p.pos_world));
+      plan::StepEval ev_jc = plan::EvaluateStep(chain_.steps[step], catalog_, jc, options_.pair);
+      ev_jc.complete = ev.complete;
+      tracker_joint_centre_.Update(t, ev_jc);
+    }
     if (!was_done && (tracker_.current_step() != step || tracker_.finished())) {
       Progress(t, step, ev);
     }
@@ -273,6 +294,7 @@ class EpisodeLoop {
   const double base_dt_;        // the world's own timestep, restored at the end
   core::SceneCatalog catalog_;  // movable poses synced each tick
   plan::StepTracker tracker_;
+  plan::StepTracker tracker_joint_centre_;  // contact error with the joint-centre pelvis
   const int n_agents_;
   std::vector<StepTask> tasks_;
   std::vector<double> next_act_;

@@ -77,11 +77,18 @@ struct RunOptions {
   std::function<bool(double time_s)> behind_real_time;
 };
 
+/// `points` (one agent's standard body points, BodyJoint order) with the pelvis point moved to
+/// UniHSI's pelvis joint centre: the middle of the two hip points.
+std::vector<Eigen::Vector3d> JointCentrePelvis(std::vector<Eigen::Vector3d> points);
+
 struct EpisodeResult {
   bool success = false;
   int steps_completed = 0;
   int steps_total = 0;
   double contact_error_m = -1;  ///< Eq. 10; -1 when nothing was recorded
+  /// Eq. 10 with UniHSI's pelvis point, the joint centre between the hips (JointCentrePelvis),
+  /// in place of ours at the sitting bones, at the same step completions; -1 as above
+  double contact_error_joint_centre_m = -1;
   bool fell = false;
   /// "completed", "timeout", "fell", "interrupted" (on_frame), "unstable: ...", "controller: ..."
   std::string end_reason;

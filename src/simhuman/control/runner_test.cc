@@ -244,3 +244,21 @@ TEST(RunnerTest, HumanoidWithAHandPlaceholderRunsABodyControllerAndAGripIntegrat
 
 }  // namespace
 }  // namespace simhuman::control
+
+namespace simhuman::control {
+namespace {
+
+TEST(RunnerTest, JointCentrePelvisIsTheMiddleOfTheHips) {
+  std::vector<Eigen::Vector3d> pts(core::kNumBodyJoints, Eigen::Vector3d::Zero());
+  pts[static_cast<int>(core::BodyJoint::kPelvis)] = Eigen::Vector3d(0, 0, 0.40);
+  pts[static_cast<int>(core::BodyJoint::kLeftHip)] = Eigen::Vector3d(0.02, 0.09, 0.50);
+  pts[static_cast<int>(core::BodyJoint::kRightHip)] = Eigen::Vector3d(0.0, -0.09, 0.48);
+  std::vector<Eigen::Vector3d> jc = JointCentrePelvis(pts);
+  EXPECT_TRUE(
+      jc[static_cast<int>(core::BodyJoint::kPelvis)].isApprox(Eigen::Vector3d(0.01, 0.0, 0.49)));
+  EXPECT_EQ(jc[static_cast<int>(core::BodyJoint::kHead)],
+            pts[static_cast<int>(core::BodyJoint::kHead)]);
+}
+
+}  // namespace
+}  // namespace simhuman::control

@@ -163,6 +163,9 @@ nlohmann::ordered_json EpisodeResultJson(const control::EpisodeResult& r) {
   j["steps_total"] = r.steps_total;
   j["contact_error_m"] =
       r.contact_error_m >= 0 ? nlohmann::ordered_json(r.contact_error_m) : nlohmann::ordered_json();
+  j["contact_error_joint_centre_m"] = r.contact_error_joint_centre_m >= 0
+                                          ? nlohmann::ordered_json(r.contact_error_joint_centre_m)
+                                          : nlohmann::ordered_json();
   j["fell"] = r.fell;
   j["end_reason"] = r.end_reason;
   j["sim_time_s"] = r.sim_time_s;

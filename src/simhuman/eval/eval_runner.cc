@@ -33,8 +33,8 @@ Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& reco
   s.episodes = static_cast<int>(records.size());
   s.episodes_requested = episodes_requested;
   if (records.empty()) return s;
-  int successes = 0, falls = 0, extra_pass = 0, n_error = 0;
-  double steps = 0, steps_total = 0, error_sum = 0;
+  int successes = 0, falls = 0, extra_pass = 0, n_error = 0, n_error_jc = 0;
+  double steps = 0, steps_total = 0, error_sum = 0, error_jc_sum = 0;
   for (const EpisodeRecord& r : records) {
     successes += r.success;
     falls += r.result.fell;
@@ -44,6 +44,10 @@ Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& reco
     if (r.result.contact_error_m >= 0) {
       error_sum += r.result.contact_error_m;
       ++n_error;
+    }
+    if (r.result.contact_error_joint_centre_m >= 0) {
+      error_jc_sum += r.result.contact_error_joint_centre_m;
+      ++n_error_jc;
     }
     s.sim_time_s += r.result.sim_time_s;
     s.wall_time_s += r.result.wall_time_s;
@@ -55,6 +59,7 @@ Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& reco
   s.success_steps = steps / n;
   s.steps_total = steps_total / n;
   if (n_error > 0) s.contact_error_m = error_sum / n_error;
+  if (n_error_jc > 0) s.contact_error_joint_centre_m = error_jc_sum / n_error_jc;
   s.wall_per_sim = s.sim_time_s > 0 ? s.wall_time_s / s.sim_time_s : 0.0;
   return s;
 }
@@ -97,6 +102,9 @@ core::StatusOr<EpisodeRecord> EpisodeRecordFromJson(const nlohmann::json& j) {
     res.steps_total = j.at("steps_total").get<int>();
     const nlohmann::json& err = j.at("contact_error_m");
     res.contact_error_m = err.is_null() ? -1.0 : err.get<double>();
+    // absent in journals written before session 13
+    const nlohmann::json jc = j.value("contact_error_joint_centre_m", nlohmann::json());
+    res.contact_error_joint_centre_m = jc.is_null() ? -1.0 : jc.get<double>();
     res.fell = j.at("fell").get<bool>();
     res.end_reason = j.at("end_reason").get<std::string>();
     res.sim_time_s = j.at("sim_time_s").get<double>();
@@ -123,6 +131,9 @@ nlohmann::ordered_json SummaryJson(const Summary& s, const EvalOptions& options)
   j["success_rate"] = s.success_rate;
   j["contact_error_m"] =
       s.contact_error_m ? nlohmann::ordered_json(*s.contact_error_m) : nlohmann::ordered_json();
+  j["contact_error_joint_centre_m"] = s.contact_error_joint_centre_m
+                                          ? nlohmann::ordered_json(*s.contact_error_joint_centre_m)
+                                          : nlohmann::ordered_json();
   j["success_steps"] = s.success_steps;
   j["steps_total"] = s.steps_total;
   j["fall_rate"] = s.fall_rate;

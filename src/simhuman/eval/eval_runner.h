@@ -50,8 +50,10 @@ struct Summary {
   int episodes_requested = 0;
   double success_rate = 0;                ///< share of finished episodes with `success`
   std::optional<double> contact_error_m;  ///< mean over episodes that recorded one
-  double success_steps = 0;               ///< mean steps completed
-  double steps_total = 0;                 ///< mean steps of the plans
+  /// the same with UniHSI's joint-centre pelvis point (EpisodeResult)
+  std::optional<double> contact_error_joint_centre_m;
+  double success_steps = 0;  ///< mean steps completed
+  double steps_total = 0;    ///< mean steps of the plans
   double fall_rate = 0;
   double extra_pass_rate = 0;  ///< share passing the suite's extra check (1 without one)
   double wall_per_sim = 0;     ///< total wall time / total simulated time

@@ -69,7 +69,7 @@ Eigen::Vector2d WhereStepLeaves(const plan::ContactStep& step, const core::Scene
 absl::Status CheckWithinReach(const plan::ContactChain& chain, const core::SceneCatalog& scene,
                               const std::vector<world::HumanSpec>& humans, double max_reach_m) {
   std::set<std::pair<int, std::string>> approached;  // (agent, object id)
-  std::vector<Eigen::Vector2d> where_now;              // where each agent stands or sits
+  std::vector<Eigen::Vector2d> where_now;            // where each agent stands or sits
   for (const world::HumanSpec& h : humans) where_now.push_back(h.pos_xy);
   for (size_t s = 0; s < chain.steps.size(); ++s) {
     const plan::ContactStep& step = chain.steps[s];

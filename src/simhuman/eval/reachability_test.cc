@@ -170,8 +170,8 @@ TEST(ReachabilityTest, FollowsWhereEarlierStepsLeaveTheHuman) {
 
 TEST(ReachabilityTest, UniHsiTableFilesAreSceneAndPlanAndPassThePreflight) {
   // UniHSI's Tables 5-7, each one file given as both --scene and --plan
-  for (const char* name : {"unihsi_table5_plan.json", "unihsi_table6_plan.json",
-                           "unihsi_table7_plan.json"}) {
+  for (const char* name :
+       {"unihsi_table5_plan.json", "unihsi_table6_plan.json", "unihsi_table7_plan.json"}) {
     const std::string path = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/scenes/" + name;
     core::StatusOr<world::SceneSpec> scene = world::LoadScene(path);
     ASSERT_TRUE(scene.ok()) << scene.status();

@@ -32,10 +32,10 @@ Pose SidedPose(const std::string& o, const std::string& what, const std::string&
   for (int s = 0; s < 2; ++s) {
     if (pick != 2 && pick != s) continue;
     const std::string side = Side(s == 0);
-    std::string part = part_fmt == "knee" ? side + " knee" : part_fmt == "arm" ? side + " arm"
-                                                                                : part_fmt;
-    p.pairs.push_back(
-        PlanPair(o, part, side + " " + joint, "contact", pick == 2 ? "none" : "up"));
+    std::string part = part_fmt == "knee"  ? side + " knee"
+                       : part_fmt == "arm" ? side + " arm"
+                                           : part_fmt;
+    p.pairs.push_back(PlanPair(o, part, side + " " + joint, "contact", pick == 2 ? "none" : "up"));
   }
   p.label = (pick == 2 ? std::string("both ") : std::string(Side(pick == 0)) + " ") + what;
   return p;
@@ -44,8 +44,8 @@ Pose SidedPose(const std::string& o, const std::string& what, const std::string&
 Pose SeatPose(const std::string& o, const std::string& type, core::Rng& rng) {
   const bool arms = type == "armchair" || type == "sofa";
   const bool back = type == "chair" || arms;
-  std::vector<int> kinds = {0, 1, 2};  // knees, stomach, foot on knee
-  if (back) kinds.insert(kinds.end(), {3, 4});  // lean back, lean forward
+  std::vector<int> kinds = {0, 1, 2};              // knees, stomach, foot on knee
+  if (back) kinds.insert(kinds.end(), {3, 4});     // lean back, lean forward
   if (arms) kinds.insert(kinds.end(), {5, 6, 7});  // hands on arms, elbows, hands off
   switch (kinds[rng.UniformInt(0, static_cast<int>(kinds.size()) - 1)]) {
     case 0:
@@ -85,8 +85,8 @@ Pose LiePose(const std::string& o, core::Rng& rng, bool* head_up) {
       const int pick = rng.UniformInt(0, 2);
       for (int s = 0; s < 2; ++s) {
         if (pick == 2 || pick == s)
-          p.pairs.push_back(PlanPair(o, "mattress", std::string(Side(s == 0)) + " knee",
-                                     "not contact", "none"));
+          p.pairs.push_back(
+              PlanPair(o, "mattress", std::string(Side(s == 0)) + " knee", "not contact", "none"));
       }
       p.label = pick == 2 ? "knees up" : std::string(Side(pick == 0)) + " knee up";
       return p;
@@ -98,9 +98,9 @@ Pose LiePose(const std::string& o, core::Rng& rng, bool* head_up) {
     }
     case 2: {
       const bool left = rng.Uniform() < 0.5;  // on the left side: right shoulder off
-      return {std::string("on the ") + Side(left) + " side",
-              {PlanPair(o, "mattress", std::string(Side(!left)) + " shoulder", "not contact",
-                        "none")}};
+      return {
+          std::string("on the ") + Side(left) + " side",
+          {PlanPair(o, "mattress", std::string(Side(!left)) + " shoulder", "not contact", "none")}};
     }
     case 3: {
       const bool right = rng.Uniform() < 0.5;
@@ -114,7 +114,9 @@ Pose LiePose(const std::string& o, core::Rng& rng, bool* head_up) {
   }
 }
 
-json SitPair(const std::string& o) { return PlanPair(o, "seat surface", "pelvis", "contact", "up"); }
+json SitPair(const std::string& o) {
+  return PlanPair(o, "seat surface", "pelvis", "contact", "up");
+}
 
 std::vector<json> LieBase(const std::string& o, bool head_up) {
   return {PlanPair(o, "mattress", "pelvis", "contact", "up"),
@@ -128,9 +130,9 @@ void AppendVisit(const std::string& o, const std::string& type, int poses, doubl
                  core::Rng& rng, std::vector<json>* steps) {
   steps->push_back(PlanStep("walk to " + o, {PlanGetClose(o, "front")}));
   if (type == "bed") {
-    steps->push_back(PlanStep("sit on the edge of " + o,
-                              {PlanPair(o, "mattress", "pelvis", "contact", "up"),
-                               PlanPair(o, "pillow", "head", "not contact", "up")}));
+    steps->push_back(
+        PlanStep("sit on the edge of " + o, {PlanPair(o, "mattress", "pelvis", "contact", "up"),
+                                             PlanPair(o, "pillow", "head", "not contact", "up")}));
     steps->push_back(PlanStep("lie on " + o, LieBase(o, false)));
     for (int k = 0; k < poses; ++k) {
       bool head_up = false;
@@ -194,7 +196,8 @@ core::Status MakeScenePlanMid(core::Rng& rng, EpisodeSpec* out) {
   std::vector<json> steps;
   const int poses = rng.UniformInt(type == "bed" ? 1 : 2, type == "bed" ? 3 : 4);
   AppendVisit(o, type, poses, 0.25, rng, &steps);
-  if (rng.Uniform() < 0.5) steps.push_back(PlanStep("stand up from " + o, {PlanGetClose(o, "front")}));
+  if (rng.Uniform() < 0.5)
+    steps.push_back(PlanStep("stand up from " + o, {PlanGetClose(o, "front")}));
   out->variant = type + ": " + std::to_string(steps.size()) + " steps";
   return FinishEpisode(*room, req, o, std::move(steps), rng, out);
 }
@@ -209,13 +212,13 @@ core::Status MakeScenePlanHard(core::Rng& rng, EpisodeSpec* out) {
   const std::string laptop = room->item_ids[0][1], chair = room->item_ids[0][2];
   const std::string bed = room->item_ids[1][0], sofa = room->item_ids[2][0];
   // the desk: sit, then both hands on the keyboard while seated (two objects at once)
-  std::vector<json> steps = {PlanStep("walk to " + chair, {PlanGetClose(chair, "front")}),
-                             PlanStep("sit on " + chair, {SitPair(chair)}),
-                             PlanStep("sit on " + chair + ", both hands on " + laptop,
-                                      {SitPair(chair),
-                                       PlanPair(laptop, "keyboard", "left hand", "contact", "none"),
-                                       PlanPair(laptop, "keyboard", "right hand", "contact", "none")}),
-                             PlanStep("stand up from " + chair, {PlanGetClose(chair, "front")})};
+  std::vector<json> steps = {
+      PlanStep("walk to " + chair, {PlanGetClose(chair, "front")}),
+      PlanStep("sit on " + chair, {SitPair(chair)}),
+      PlanStep("sit on " + chair + ", both hands on " + laptop,
+               {SitPair(chair), PlanPair(laptop, "keyboard", "left hand", "contact", "none"),
+                PlanPair(laptop, "keyboard", "right hand", "contact", "none")}),
+      PlanStep("stand up from " + chair, {PlanGetClose(chair, "front")})};
   // then one or both of: the seat, the bed (in a random order)
   std::vector<std::pair<std::string, std::string>> visits;
   const int pick = rng.UniformInt(0, 3);

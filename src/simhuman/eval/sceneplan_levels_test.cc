@@ -36,8 +36,7 @@ Drawn Draw(const std::string& suite, uint64_t seed) {
   if (!chain.ok()) return d;
   d.chain = *chain;
   EXPECT_TRUE(plan::ValidateAndGround(d.chain, d.catalog).ok()) << d.spec.plan.dump();
-  EXPECT_TRUE(CheckWithinReach(d.chain, d.catalog, d.spec.scene.humans).ok())
-      << d.spec.plan.dump();
+  EXPECT_TRUE(CheckWithinReach(d.chain, d.catalog, d.spec.scene.humans).ok()) << d.spec.plan.dump();
   return d;
 }
 

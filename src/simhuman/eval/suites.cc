@@ -103,9 +103,10 @@ core::Status MakeSit(core::Rng& rng, EpisodeSpec* out) {
 void LieSteps(const std::string& id, std::vector<json>* steps) {
   steps->push_back(
       PlanStep("sit on the edge of " + id, {PlanPair(id, "mattress", "pelvis", "contact", "up"),
-                                        PlanPair(id, "pillow", "head", "not contact", "up")}));
-  steps->push_back(PlanStep("lie down on " + id, {PlanPair(id, "mattress", "pelvis", "contact", "up"),
-                                              PlanPair(id, "pillow", "head", "contact", "up")}));
+                                            PlanPair(id, "pillow", "head", "not contact", "up")}));
+  steps->push_back(
+      PlanStep("lie down on " + id, {PlanPair(id, "mattress", "pelvis", "contact", "up"),
+                                     PlanPair(id, "pillow", "head", "contact", "up")}));
 }
 
 // lie: back to the bed's long side (its front), at the spot where sitting down and lying back
@@ -158,7 +159,7 @@ core::Status MakeReach(core::Rng& rng, EpisodeSpec* out) {
   out->scene.objects = {m};
   out->scene.humans = {h};
   out->plan = PlanOf({PlanStep("touch " + m.id + " with the " + hand,
-                         {PlanPair(m.id, kMarkerPart, hand, "contact", "none")})});
+                               {PlanPair(m.id, kMarkerPart, hand, "contact", "none")})});
   return absl::OkStatus();
 }
 
@@ -185,7 +186,8 @@ core::Status MakeScenePlanSimple(core::Rng& rng, EpisodeSpec* out) {
   out->object_id = o.id;
   out->scene.objects = {o};
   out->scene.humans = {h};
-  out->plan = PlanOf({PlanStep("get close to " + o.id, {PlanGetClose(o.id, "front")}), SitStep(o.id)});
+  out->plan =
+      PlanOf({PlanStep("get close to " + o.id, {PlanGetClose(o.id, "front")}), SitStep(o.id)});
   return absl::OkStatus();
 }
 
@@ -254,8 +256,8 @@ core::Status MakeReachFar(core::Rng& rng, EpisodeSpec* out) {
   out->scene.objects = {m};
   out->scene.humans = {FarStart(rng, m, *built)};
   out->plan = PlanOf({PlanStep("walk to " + m.id, {PlanGetClose(m.id, "front")}),
-                    PlanStep("touch " + m.id + " with the " + hand,
-                         {PlanPair(m.id, kMarkerPart, hand, "contact", "none")})});
+                      PlanStep("touch " + m.id + " with the " + hand,
+                               {PlanPair(m.id, kMarkerPart, hand, "contact", "none")})});
   return absl::OkStatus();
 }
 

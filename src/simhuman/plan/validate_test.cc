@@ -131,8 +131,8 @@ TEST(PlanValidateTest, AmbiguousAfterDroppingDigits) {
   // "arm sofa style" matches no name exactly, and both arms once digits are dropped; a joint
   // without a side does not pick one
   absl::StatusOr<ContactChain> chain =
-      ParseAndGround(R"([[["chair000", "arm sofa style", "torso", "contact", "up"]]])",
-                     "<string>", MakeTestScene());
+      ParseAndGround(R"([[["chair000", "arm sofa style", "torso", "contact", "up"]]])", "<string>",
+                     MakeTestScene());
   ASSERT_FALSE(chain.ok());
   EXPECT_THAT(std::string(chain.status().message()), HasSubstr("ambiguous part"));
 }

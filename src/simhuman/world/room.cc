@@ -100,7 +100,7 @@ core::StatusOr<std::vector<Member>> MakeGroup(const std::string& item, core::Rng
   chair.spec.pos = Eigen::Vector3d(edge + gap + chair.hi.x(), 0, 0);
   chair.spec.yaw_rad = M_PI;
   const double board_top = table.spec.size.count("height") ? table.spec.size.at("height")
-                                                            : DefaultSizes("table").at("height");
+                                                           : DefaultSizes("table").at("height");
   laptop.spec.pos = Eigen::Vector3d(edge - kLaptopInsetM - laptop.hi.x(), 0, board_top);
   out = {table, laptop, chair};
   return out;
@@ -113,8 +113,8 @@ Rect MemberRect(const Member& m, double stand_zone_m) {
   Rect r;
   const double c = std::cos(m.spec.yaw_rad), s = std::sin(m.spec.yaw_rad);
   Eigen::Vector2d mid = 0.5 * (lo + hi);
-  r.centre = m.spec.pos.head<2>() + Eigen::Vector2d(c * mid.x() - s * mid.y(),
-                                                   s * mid.x() + c * mid.y());
+  r.centre =
+      m.spec.pos.head<2>() + Eigen::Vector2d(c * mid.x() - s * mid.y(), s * mid.x() + c * mid.y());
   r.half = 0.5 * (hi - lo);
   r.yaw = m.spec.yaw_rad;
   return r;
