@@ -42,8 +42,9 @@ Pose SidedPose(const std::string& o, const std::string& what, const std::string&
 }
 
 Pose SeatPose(const std::string& o, const std::string& type, core::Rng& rng) {
-  const bool arms = type == "armchair" || type == "sofa";
-  const bool back = type == "chair" || arms;
+  // a sofa's arms are 0.7-0.9 m from the middle of its seat, where the human sits: out of reach
+  const bool arms = type == "armchair";
+  const bool back = type == "chair" || type == "armchair" || type == "sofa";
   std::vector<int> kinds = {0, 1, 2};              // knees, stomach, foot on knee
   if (back) kinds.insert(kinds.end(), {3, 4});     // lean back, lean forward
   if (arms) kinds.insert(kinds.end(), {5, 6, 7});  // hands on arms, elbows, hands off
