@@ -376,6 +376,15 @@ RouteFollower::Carrot RouteFollower::Update(const Eigen::Vector2d& w) {
   if (s >= total) {
     out.final = true;
     s = total;
+    // a corner still ahead (round a chair's back to its front): aim at the corner, not
+    // straight at the goal through the furniture; final once past the last corner
+    for (size_t k = 1; k + 1 < p.size(); ++k) {
+      if (cum_[k] > progress_m_ + kCornerPassedM) {
+        out.final = false;
+        s = cum_[k];
+        break;
+      }
+    }
   }
   out.point = PointAt(s, &out.heading_rad);
   return out;

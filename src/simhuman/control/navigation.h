@@ -95,8 +95,13 @@ Eigen::Vector2d ClearStandingSpot(const core::SceneCatalog& scene, const Eigen::
                                   const Eigen::Vector2d& centre, double radius_m,
                                   double min_clearance_m, const NavConfig& config = {});
 
+/// Within the lookahead of a route's end, the follower aims at the route's next corner until
+/// it is this close to it (RouteFollower::Update).
+inline constexpr double kCornerPassedM = 0.15;
+
 /// Pure pursuit along a route: the point `lookahead_m` further along the route than the
-/// walker's projection on it. Progress only moves forward.
+/// walker's projection on it (near the end: the next corner, then the goal, `final`). Progress
+/// only moves forward.
 class RouteFollower {
  public:
   RouteFollower() = default;

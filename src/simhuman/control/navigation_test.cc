@@ -166,5 +166,20 @@ TEST(Navigation, FollowerLeadsByTheLookaheadAndEndsAtTheGoal) {
   EXPECT_NEAR((c.point - Eigen::Vector2d(2, 2)).norm(), 0, 1e-9);
 }
 
+TEST(Navigation, NearTheEndTheFollowerAimsAtTheLastCornerNotThroughIt) {
+  // round a chair's back: the goal is 1 m from the walker, but behind a corner
+  NavPath path;
+  path.points = {{0, 0}, {0, 1}, {1, 1}, {1, 0.2}};
+  RouteFollower f(path, 1.2);
+  auto c = f.Update({0.05, 0.5});  // 2.3 m of route left: the carrot leads on the route
+  EXPECT_FALSE(c.final);
+  c = f.Update({0.8, 1.0});  // 1.0 m left, a corner at (1, 1) ahead
+  EXPECT_FALSE(c.final);
+  EXPECT_NEAR((c.point - Eigen::Vector2d(1, 1)).norm(), 0, 1e-9);
+  c = f.Update({0.95, 0.95});  // past the corner: straight to the goal
+  EXPECT_TRUE(c.final);
+  EXPECT_NEAR((c.point - Eigen::Vector2d(1, 0.2)).norm(), 0, 1e-9);
+}
+
 }  // namespace
 }  // namespace simhuman::control
