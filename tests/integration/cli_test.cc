@@ -252,10 +252,10 @@ TEST(CliIntegrationTest, UnknownFlagAndPreset) {
 
 TEST(CliIntegrationTest, ObjectTooFarToReach) {
   std::string out = TempDir("too_far");
-  ExpectBadInput(RunBin({"run", "--scene", kData + "far_bed_scene.json", "--plan",
-                         kData + "malformed_plan_too_far.json", "--out", out}),
-                 {"object 'bed000'", "m from human 0", "no get-close step precedes step 1",
-                  "walking is not implemented yet"});
+  ExpectBadInput(
+      RunBin({"run", "--scene", kData + "far_bed_scene.json", "--plan",
+              kData + "malformed_plan_too_far.json", "--out", out}),
+      {"object 'bed000'", "m from where human 0 starts", "add a get-close step", "before step 1"});
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
