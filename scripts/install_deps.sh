@@ -5,6 +5,7 @@ pkgs=(
   build-essential cmake pkg-config git
   libmujoco-dev libqhull-dev
   libeigen3-dev nlohmann-json3-dev libcli11-dev libabsl-dev
+  libompl-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
   libgtest-dev libgmock-dev
   libegl-dev libegl-mesa0 libgl1-mesa-dri libgl-dev
   libpng-dev ffmpeg

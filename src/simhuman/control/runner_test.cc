@@ -58,18 +58,21 @@ class HoldController : public Controller {
 // writes its own part of the agent's actuator span
 class BodyAndGrip : public Controller {
  public:
-  BodyAndGrip(Controller* body, double grip_rad) : body_(body), grip_rad_(grip_rad) {}
+  BodyAndGrip(Controller* body, std::vector<double> grip_rad)
+      : body_(body), grip_rad_(std::move(grip_rad)) {}
   std::string name() const override { return body_->name() + "+grip"; }
   absl::Status Act(const Observation& obs) override { return body_->Act(obs); }
   void Targets(double time_s, core::Span<double> ctrl) const override {
     body_->Targets(time_s, ctrl);
-    for (int j = world::kHumanoidDofs; j < ctrl.size(); ++j) ctrl[j] = grip_rad_;
+    for (int j = world::kHumanoidDofs; j < ctrl.size(); ++j) {
+      ctrl[j] = grip_rad_[j - world::kHumanoidDofs];
+    }
   }
   double control_period_s() const override { return body_->control_period_s(); }
 
  private:
   Controller* body_;
-  double grip_rad_;
+  std::vector<double> grip_rad_;
 };
 
 struct Scene {
@@ -199,10 +202,10 @@ TEST(RunnerTest, TwoHumansWithDifferentControllersAndPosturesIntegration) {
   EXPECT_DOUBLE_EQ(s.world->model()->opt.timestep, 0.005);  // restored after the episode
 }
 
-TEST(RunnerTest, HumanoidWithAHandPlaceholderRunsABodyControllerAndAGripIntegration) {
+TEST(RunnerTest, HumanoidWithADexterousHandRunsABodyControllerAndAGripIntegration) {
   Scene s = SitDemo("humanoid_right_hand", {});
   const world::AgentIndex& ix = s.world->agent(0);
-  ASSERT_EQ(ix.num_actuators(), world::kHumanoidDofs + world::kHandPlaceholderDofs);
+  ASSERT_EQ(ix.num_actuators(), world::kHumanoidDofs + world::kHandDofs);
   ASSERT_EQ(ix.num_body_points(), core::kNumBodyJoints + 3);
   ASSERT_EQ(s.world->model()->nu, ix.num_actuators());
   const core::BodyPointCatalog& points = s.catalog.agents[0].body_points;
@@ -212,7 +215,11 @@ TEST(RunnerTest, HumanoidWithAHandPlaceholderRunsABodyControllerAndAGripIntegrat
   MpcConfig cfg = *MpcConfig::Preset("fast");
   auto mpc = MpcController::Create(s.world.get(), 0, cfg, 7);
   ASSERT_TRUE(mpc.ok()) << mpc.status();
-  const double grip = 1.2;  // rad, within both placeholder joints' ranges
+  // every hand hinge to 40 % of its range (a half-closed hand)
+  std::vector<double> grip;
+  for (const world::HandJoint& h : world::HandJoints()) {
+    grip.push_back((h.lo_deg + 0.4 * (h.hi_deg - h.lo_deg)) * M_PI / 180);
+  }
   BodyAndGrip ctl(mpc->get(), grip);
   const std::string chair = s.catalog.objects[0].id;
   plan::ContactChain chain = Ground(
@@ -225,7 +232,9 @@ TEST(RunnerTest, HumanoidWithAHandPlaceholderRunsABodyControllerAndAGripIntegrat
   EXPECT_FALSE(r.fell);
   // the hand's hinges followed the grip
   for (int j = world::kHumanoidDofs; j < ix.num_actuators(); ++j) {
-    EXPECT_NEAR(s.world->data()->qpos[ix.hinge_qpos[j]], grip, kGripTolRad) << "hand hinge " << j;
+    EXPECT_NEAR(s.world->data()->qpos[ix.hinge_qpos[j]], grip[j - world::kHumanoidDofs],
+                kGripTolRad)
+        << "hand hinge " << j;
   }
   // the hand's body points exist in the plan language; the MPC says it does not drive them
   plan::ContactChain palm = Ground(

@@ -8,12 +8,10 @@ namespace simhuman::world {
 const std::vector<Embodiment>& Embodiments() {
   static const std::vector<Embodiment> kinds = {
       {kDefaultAgentKind, "the humanoid: 28 body hinges, capsule hands", false, false},
-      {"humanoid_right_hand",
-       "the humanoid with a dexterous right hand (placeholder: fingers and thumb, 2 hinges)", true,
-       false},
-      {"humanoid_hands",
-       "the humanoid with two dexterous hands (placeholder: fingers and thumb, 2 hinges each)",
-       true, true},
+      {"humanoid_right_hand", "the humanoid with a dexterous right hand (7-DoF arm, 22-DoF hand)",
+       true, false},
+      {"humanoid_hands", "the humanoid with two dexterous hands (7-DoF arms, 22-DoF hands)", true,
+       true},
   };
   return kinds;
 }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "simhuman/world/hand.h"
+
 namespace simhuman::world {
 namespace {
 
@@ -116,24 +118,9 @@ const std::vector<JointDef>& JointDefs() {
   return defs;
 }
 
-// the placeholder hand's hinges (per side, after the "right_"/"left_" prefix) and gains
-constexpr Gains kFinger{8, 0.5, 6};
-const std::vector<JointDef>& HandJointDefs() {
-  static const std::vector<JointDef> defs = {
-      {"fingers", "0 1 0", 0, 100, kFinger},
-      {"thumb", "1 0 0", -10, 80, kFinger},
-  };
-  return defs;
-}
-constexpr double kFingerMass = 0.04, kThumbMass = 0.03;
-
-// the placeholder hand's body points (per side) and their sites' positions in the hand frame
-struct HandPoint {
-  const char* name;  // after "right " / "left "
-  double x, y, z;
-};
-constexpr HandPoint kHandPoints[] = {
-    {"palm", 0.04, 0, -0.06}, {"fingertips", 0.0, 0, -0.165}, {"thumb tip", 0.05, 0, -0.085}};
+// the dexterous hand's body points (per side, after "right " / "left "); their sites are
+// written by HandBodyXml()
+constexpr const char* kHandPoints[] = {"palm", "fingertips", "thumb tip"};
 
 std::string SiteName(std::string name) {
   for (char& c : name) {
@@ -148,30 +135,6 @@ const JointDef& Def(const std::string& name) {
   }
   static JointDef none{"", "", 0, 0, kSpine};
   return none;
-}
-
-// the placeholder dexterous hand inside a hand body (`s`: "right_" or "left_"): a finger block
-// and a thumb on one hinge each, and the palm and fingertip sites
-void HandPlaceholderXml(const Writer& w, const std::string& s, std::ostringstream& o) {
-  const std::string& p = w.p();
-  auto joint = [&](int k) {
-    JointDef d = HandJointDefs()[k];
-    const std::string name = s + d.name;
-    d.name = name.c_str();
-    w.Joint(o, d);
-  };
-  o << "<body name=\"" << p << s << "fingers\" pos=\"" << w.Pos(0, 0, -0.095) << "\">\n";
-  joint(0);
-  w.Capsule(o, s + "fingers_geom", 0, 0, -0.01, 0, 0, -0.06, 0.015, kFingerMass);
-  o << "</body>\n";
-  o << "<body name=\"" << p << s << "thumb\" pos=\"" << w.Pos(0.05, 0, -0.04) << "\">\n";
-  joint(1);
-  w.Capsule(o, s + "thumb_geom", 0, 0, -0.01, 0, 0, -0.035, 0.011, kThumbMass);
-  o << "</body>\n";
-  const std::string side = s == "right_" ? "right " : "left ";
-  for (const HandPoint& hp : kHandPoints) {
-    w.NamedSite(o, SiteName(side + hp.name), hp.x, hp.y, hp.z);
-  }
 }
 
 }  // namespace
@@ -201,7 +164,7 @@ std::vector<std::string> HumanoidJointNames(const HumanoidSpec& spec) {
   std::vector<std::string> names = HumanoidJointNames();
   for (const char* side : {"right_", "left_"}) {
     if (!(side[0] == 'r' ? spec.right_hand : spec.left_hand)) continue;
-    for (const JointDef& d : HandJointDefs()) names.push_back(std::string(side) + d.name);
+    for (const HandJoint& d : HandJoints()) names.push_back(std::string(side) + d.name);
   }
   return names;
 }
@@ -213,8 +176,8 @@ std::vector<BodyPointSite> HumanoidBodyPoints(const HumanoidSpec& spec) {
   }
   for (const char* side : {"right", "left"}) {
     if (!(side[0] == 'r' ? spec.right_hand : spec.left_hand)) continue;
-    for (const HandPoint& hp : kHandPoints) {
-      std::string name = std::string(side) + " " + hp.name;
+    for (const char* hp : kHandPoints) {
+      std::string name = std::string(side) + " " + hp;
       out.push_back({{name, {}}, SiteName(name)});
     }
   }
@@ -271,9 +234,12 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
     w.Capsule(o, s + "lower_arm_geom", 0, 0, -0.03, 0, 0, -0.21, 0.038, kLowerArmMass);
     w.Site(o, el, 0, 0, 0);
     o << "<body name=\"" << p << s << "hand\" pos=\"" << w.Pos(0, 0, -0.25) << "\">\n";
-    w.Sphere(o, s + "hand_geom", 0, 0, -0.055, 0.045, kHandMass);
+    if (side < 0 ? spec.right_hand : spec.left_hand) {
+      HandBodyXml(p, side < 0, spec.scale, spec.rgba, o);
+    } else {
+      w.Sphere(o, s + "hand_geom", 0, 0, -0.055, 0.045, kHandMass);
+    }
     w.Site(o, ha, 0, 0, -0.055);
-    if (side < 0 ? spec.right_hand : spec.left_hand) HandPlaceholderXml(w, s, o);
     o << "</body>\n</body>\n</body>\n";
   }
   o << "</body>\n";  // torso
@@ -304,6 +270,13 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
   return o.str();
 }
 
+std::string HumanoidContactXml(const HumanoidSpec& spec) {
+  std::string out;
+  if (spec.right_hand) out += HandContactExcludesXml(spec.prefix, true);
+  if (spec.left_hand) out += HandContactExcludesXml(spec.prefix, false);
+  return out;
+}
+
 std::string HumanoidActuatorXml(const HumanoidSpec& spec) {
   std::ostringstream o;
   double g = std::pow(spec.scale, 4);
@@ -317,7 +290,10 @@ std::string HumanoidActuatorXml(const HumanoidSpec& spec) {
   for (const auto& d : JointDefs()) servo(d.name, d);
   for (const char* side : {"right_", "left_"}) {
     if (!(side[0] == 'r' ? spec.right_hand : spec.left_hand)) continue;
-    for (const auto& d : HandJointDefs()) servo(std::string(side) + d.name, d);
+    for (const HandJoint& h : HandJoints()) {
+      JointDef d{h.name, "", h.lo_deg, h.hi_deg, {h.kp, h.damping, h.force}};
+      servo(std::string(side) + h.name, d);
+    }
   }
   return o.str();
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "simhuman/core/body_joint.h"
+#include "simhuman/world/hand.h"
 
 namespace simhuman::world {
 
@@ -16,16 +17,12 @@ struct HumanoidSpec {
   double scale = 1.0;  ///< length scale (1 = adult 1.70 m; 0.7 = a child ~1.19 m); mass ~ s^3
   std::string prefix;  ///< prefix for every name, e.g. "h1/" for a second agent
   std::string rgba = "0.85 0.65 0.5 1";
-  /// A dexterous hand on the right / left arm instead of the capsule hand. Today this is a
-  /// placeholder of kHandPlaceholderDofs hinges (a finger block and a thumb) with palm and
-  /// fingertip body points, so that agents of different actuator counts exist; the 22-DoF
-  /// hand of the manipulation issue replaces it.
+  /// A dexterous hand on the right / left arm instead of the capsule hand (world/hand.h): the
+  /// arm gains forearm rotation and two wrist hinges, the hand 22 hinges, kHandDofs in all,
+  /// and the body points "<side> palm", "<side> fingertips", "<side> thumb tip".
   bool right_hand = false;
   bool left_hand = false;
 };
-
-/// Hinges (and actuators) of one placeholder dexterous hand.
-inline constexpr int kHandPlaceholderDofs = 2;
 
 /// One body point of a humanoid: what plans call it and the MJCF site (without prefix) that
 /// marks it.
@@ -62,6 +59,10 @@ inline constexpr double kPelvisStandHeight = 0.96;
 /// The `<body>` subtree of one humanoid (goes inside `<worldbody>`), placed standing at
 /// (x, y) with heading yaw_rad.
 std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double yaw_rad);
+
+/// The `<contact>` children of one humanoid (pair exclusions of its dexterous hands; empty
+/// without hands).
+std::string HumanoidContactXml(const HumanoidSpec& spec);
 
 /// The `<actuator>` children of one humanoid (position servos, one per hinge).
 std::string HumanoidActuatorXml(const HumanoidSpec& spec);

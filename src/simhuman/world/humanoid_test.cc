@@ -165,7 +165,7 @@ TEST(EmbodimentTest, AgentTablesComeFromTheCompiledModel) {
   auto w = SimWorld::Create(core::SceneCatalog(), agents);
   ASSERT_TRUE(w.ok()) << w.status();
   const mjModel* m = (*w)->model();
-  const int extra = kHandPlaceholderDofs;
+  const int extra = kHandDofs;
   EXPECT_EQ((*w)->agent(0).num_actuators(), kHumanoidDofs);
   EXPECT_EQ((*w)->agent(1).num_actuators(), kHumanoidDofs + 2 * extra);
   EXPECT_EQ((*w)->agent(2).num_actuators(), kHumanoidDofs + extra);

@@ -142,7 +142,14 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
     }
     o << "</body>\n";
   }
-  o << "</worldbody>\n<actuator>\n";
+  o << "</worldbody>\n";
+  std::string excludes;
+  for (size_t a = 0; a < agents.size(); ++a) {
+    const Embodiment* kind = *FindEmbodiment(agents[a].kind);  // checked above
+    excludes += HumanoidContactXml(MakeHumanoidSpec(*kind, agents[a].scale, static_cast<int>(a)));
+  }
+  if (!excludes.empty()) o << "<contact>\n" << excludes << "</contact>\n";
+  o << "<actuator>\n";
   for (size_t a = 0; a < agents.size(); ++a) {
     const Embodiment* kind = *FindEmbodiment(agents[a].kind);  // checked above
     o << HumanoidActuatorXml(MakeHumanoidSpec(*kind, agents[a].scale, static_cast<int>(a)));
