@@ -1,5 +1,7 @@
 #include "simhuman/world/embodiment.h"
 
+#include <cmath>
+
 #include "simhuman/core/check.h"
 #include "simhuman/world/model_builder.h"
 
@@ -40,6 +42,23 @@ HumanoidSpec MakeHumanoidSpec(const Embodiment& kind, double scale, int index) {
   spec.right_hand = kind.right_hand;
   spec.left_hand = kind.left_hand;
   return spec;
+}
+
+double SeatedPelvisAboveSeat(double scale) { return 0.12 * scale; }
+
+const std::vector<std::pair<std::string, double>>& SeatedHinges() {
+  constexpr double kDeg = M_PI / 180;
+  static const std::vector<std::pair<std::string, double>> hinges = {
+      {"right_hip_y", 90 * kDeg},
+      {"left_hip_y", 90 * kDeg},
+      {"right_knee", 90 * kDeg},
+      {"left_knee", 90 * kDeg},
+      // hands forward over the lap: hanging straight they would pass through the seat
+      {"right_shoulder_y", 20 * kDeg},
+      {"left_shoulder_y", 20 * kDeg},
+      {"right_elbow", 70 * kDeg},
+      {"left_elbow", 70 * kDeg}};
+  return hinges;
 }
 
 core::CatalogAgent MakeCatalogAgent(const Embodiment& kind, double scale) {

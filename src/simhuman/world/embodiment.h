@@ -6,6 +6,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "simhuman/core/scene_catalog.h"
@@ -40,7 +41,20 @@ struct AgentSpec {
   double x = 0, y = 0, yaw_rad = 0;
   double scale = 1.0;
   std::string kind = kDefaultAgentKind;
+  /// Start seated instead of standing: the pelvis origin this high above the floor (m; a seat
+  /// top plus SeatedPelvisAboveSeat(scale)), hips and knees flexed 90 degrees (SeatedHinges()).
+  /// 0: standing.
+  double seated_pelvis_z = 0;
+  /// Hold the pelvis where it starts (a weld to the world): the trunk then stays put while
+  /// the arms work, as DASH holds its trunk at the table. Off for every walking human.
+  bool hold_pelvis = false;
 };
+
+/// Height of the pelvis origin above the seat top for a seated humanoid of `scale` (m).
+double SeatedPelvisAboveSeat(double scale);
+
+/// The seated pose's non-zero body hinges: {joint name (without prefix), angle in rad}.
+const std::vector<std::pair<std::string, double>>& SeatedHinges();
 
 /// The humanoid generator's parameters for agent `index` of kind `kind` (prefix, colour, hands).
 /// `kind` must be registered.

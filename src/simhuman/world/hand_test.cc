@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "simhuman/world/objects.h"
 #include "simhuman/world/sim_world.h"
 
 namespace simhuman::world {
@@ -144,6 +145,43 @@ TEST(HandTest, AHalfClosedHandStaysStillWhenSimulated) {
         << HandJoints()[j - kHumanoidDofs].name;
     EXPECT_LT(std::abs(h.d()->qvel[ix.hinge_qvel[j]]), 0.05);
   }
+}
+
+}  // namespace
+}  // namespace simhuman::world
+
+namespace simhuman::world {
+namespace {
+
+// a human seated on a chair with the pelvis held (the tabletop set-up) stays seated while its
+// servos hold the seated pose
+TEST(SeatedHumanTest, AHeldSeatedHumanStaysOnTheChair) {
+  ObjectSpec chair;
+  chair.id = "chair000";
+  chair.type = "chair";
+  core::SceneCatalog scene;
+  scene.objects.push_back(*BuildObject(chair));
+  AgentSpec human;
+  human.kind = "humanoid_right_hand";
+  human.x = 0.02;
+  human.seated_pelvis_z = DefaultSizes("chair").at("seat_height") + SeatedPelvisAboveSeat(1.0);
+  human.hold_pelvis = true;
+  auto w = SimWorld::Create(scene, {human});
+  ASSERT_TRUE(w.ok()) << w.status();
+  const AgentIndex& ix = (*w)->agent(0);
+  const mjData* d = (*w)->data();
+  const Eigen::Vector3d pelvis0(d->xpos + 3 * ix.pelvis_body);
+  const Eigen::Vector3d head0(d->xpos + 3 * ix.head_body);
+  EXPECT_NEAR(pelvis0.z(), human.seated_pelvis_z, 1e-6);
+  const int knee = mj_name2id((*w)->model(), mjOBJ_JOINT, "right_knee");
+  for (int k = 0; k < 400; ++k) ASSERT_TRUE((*w)->Step().ok());
+  const Eigen::Vector3d pelvis(d->xpos + 3 * ix.pelvis_body);
+  const Eigen::Vector3d head(d->xpos + 3 * ix.head_body);
+  EXPECT_LT((pelvis - pelvis0).norm(), 0.01);
+  EXPECT_LT((head - head0).norm(), 0.03);
+  EXPECT_GT(head.z(), 1.0);  // sitting upright: the head's base well above the seat
+  // the knees stay bent over the chair's front edge
+  EXPECT_NEAR(d->qpos[(*w)->model()->jnt_qposadr[knee]], M_PI / 2, 0.15);
 }
 
 }  // namespace

@@ -190,12 +190,14 @@ double HumanoidMassKg(double scale) {
           2 * (kUpperArmMass + kLowerArmMass + kHandMass + kThighMass + kShinMass + kFootMass));
 }
 
-std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double yaw_rad) {
+std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double yaw_rad,
+                            double pelvis_z) {
   using core::BodyJoint;
   Writer w(spec);
   const std::string& p = w.p();
   std::ostringstream o;
-  o << "<body name=\"" << p << "pelvis\" pos=\"" << V(x, y, w.L(kPelvisStandHeight)) << "\" quat=\""
+  o << "<body name=\"" << p << "pelvis\" pos=\""
+    << V(x, y, pelvis_z > 0 ? pelvis_z : w.L(kPelvisStandHeight)) << "\" quat=\""
     << V(std::cos(yaw_rad / 2), 0, 0) << " " << F(std::sin(yaw_rad / 2)) << "\">\n";
   o << "<freejoint name=\"" << p << "root\"/>\n";
   w.Capsule(o, "pelvis_geom", 0, -0.065, -0.03, 0, 0.065, -0.03, 0.09, kPelvisMass);

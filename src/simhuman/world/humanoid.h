@@ -58,7 +58,9 @@ inline constexpr double kPelvisStandHeight = 0.96;
 
 /// The `<body>` subtree of one humanoid (goes inside `<worldbody>`), placed standing at
 /// (x, y) with heading yaw_rad.
-std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double yaw_rad);
+/// `pelvis_z` > 0 places the pelvis origin at that height instead of standing height.
+std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double yaw_rad,
+                            double pelvis_z = 0);
 
 /// The `<contact>` children of one humanoid (pair exclusions of its dexterous hands; empty
 /// without hands).

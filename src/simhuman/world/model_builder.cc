@@ -101,8 +101,12 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
     }
     core::StatusOr<const Embodiment*> kind = FindEmbodiment(p.kind);
     if (!kind.ok()) return core::Annotate(kind.status(), "human " + std::to_string(a));
+    if (!std::isfinite(p.seated_pelvis_z) || p.seated_pelvis_z < 0 || p.seated_pelvis_z > 2) {
+      return absl::InvalidArgumentError("human " + std::to_string(a) + ": seated pelvis height " +
+                                        F(p.seated_pelvis_z) + " m is outside [0, 2]");
+    }
     o << HumanoidBodyXml(MakeHumanoidSpec(**kind, p.scale, static_cast<int>(a)), p.x, p.y,
-                         p.yaw_rad);
+                         p.yaw_rad, p.seated_pelvis_z);
   }
   for (const core::CatalogObject& obj : scene.objects) {
     o << "<body name=\"" << ObjectBodyName(obj.id) << "\" pos=\"" << V3(obj.pose.pos)
@@ -149,6 +153,14 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
     excludes += HumanoidContactXml(MakeHumanoidSpec(*kind, agents[a].scale, static_cast<int>(a)));
   }
   if (!excludes.empty()) o << "<contact>\n" << excludes << "</contact>\n";
+  // held pelvises: a weld to the world at the pose the model starts in (relpose from qpos0)
+  std::string welds;
+  for (size_t a = 0; a < agents.size(); ++a) {
+    if (!agents[a].hold_pelvis) continue;
+    welds += "<weld name=\"" + AgentPrefix(static_cast<int>(a)) + "hold_pelvis\" body1=\"" +
+             AgentPrefix(static_cast<int>(a)) + "pelvis\"/>\n";
+  }
+  if (!welds.empty()) o << "<equality>\n" << welds << "</equality>\n";
   o << "<actuator>\n";
   for (size_t a = 0; a < agents.size(); ++a) {
     const Embodiment* kind = *FindEmbodiment(agents[a].kind);  // checked above

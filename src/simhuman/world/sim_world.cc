@@ -82,6 +82,15 @@ core::StatusOr<std::unique_ptr<SimWorld>> SimWorld::Create(const core::SceneCata
   for (size_t a = 0; a < agents.size(); ++a) {
     SH_ASSIGN_OR_RETURN(AgentIndex ix, IndexAgent(m, agents[a], static_cast<int>(a)));
     w->agents_.push_back(std::move(ix));
+    // a seated human starts (and resets) with hips and knees flexed (not through qpos0: MuJoCo
+    // measures hinge angles from it)
+    if (agents[a].seated_pelvis_z > 0) {
+      const std::string p = AgentPrefix(static_cast<int>(a));
+      for (const auto& [name, angle] : SeatedHinges()) {
+        const int j = Find(m, mjOBJ_JOINT, p + name);
+        if (j >= 0) w->initial_qpos_.emplace_back(m->jnt_qposadr[j], angle);
+      }
+    }
   }
   for (const auto& o : scene.objects) {
     if (!o.movable) continue;
@@ -99,6 +108,7 @@ SimWorld::~SimWorld() {
 
 void SimWorld::Reset() {
   mj_resetData(model_, data_);
+  for (const auto& [adr, value] : initial_qpos_) data_->qpos[adr] = value;
   for (const AgentIndex& a : agents_) {
     for (int j = 0; j < a.num_actuators(); ++j) {
       data_->ctrl[a.actuator[j]] = data_->qpos[a.hinge_qpos[j]];

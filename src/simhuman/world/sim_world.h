@@ -77,7 +77,8 @@ class SimWorld {
   /// Copies the poses of movable objects from `d` into `catalog` (ids must match).
   void SyncCatalog(const mjData* d, core::SceneCatalog* catalog) const;
 
-  /// Resets data to the initial state and sets every servo target to the current joint angle.
+  /// Resets data to the initial state (seated agents seated) and sets every servo target to the
+  /// current joint angle.
   void Reset();
 
  private:
@@ -87,6 +88,7 @@ class SimWorld {
   core::SceneCatalog catalog_;
   std::vector<AgentIndex> agents_;
   std::vector<std::pair<std::string, int>> movable_qpos_;  // object id -> qpos address
+  std::vector<std::pair<int, double>> initial_qpos_;       // qpos address -> start value
   std::string xml_;
   HealthMonitor health_;
 };
