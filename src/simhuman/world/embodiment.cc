@@ -53,11 +53,11 @@ const std::vector<std::pair<std::string, double>>& SeatedHinges() {
       {"left_hip_y", 90 * kDeg},
       {"right_knee", 90 * kDeg},
       {"left_knee", 90 * kDeg},
-      // hands forward over the lap: hanging straight they would pass through the seat
-      {"right_shoulder_y", 20 * kDeg},
-      {"left_shoulder_y", 20 * kDeg},
-      {"right_elbow", 70 * kDeg},
-      {"left_elbow", 70 * kDeg}};
+      // arms hanging just clear of the seat's sides (straight down they would pass through it)
+      {"right_shoulder_x", 12 * kDeg},
+      {"left_shoulder_x", 12 * kDeg},
+      {"right_elbow", 10 * kDeg},
+      {"left_elbow", 10 * kDeg}};
   return hinges;
 }
 
