@@ -170,7 +170,7 @@ int ArmContacts(const mjModel* m, mjData* d, const ArmChain& arm, const Eigen::V
 }
 
 PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double yaw_rad,
-                       bool right) {
+                       bool right, double behind_m) {
   // yaw 0: fingers +x, thumb up, the palm on the object's -y side (right hand) or +y side
   // (left hand) facing it; the hand frame is the same matrix for both (the left hand's palm
   // faces its frame's -y)
@@ -181,7 +181,7 @@ PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double 
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()).matrix();
   PalmPose pose;
   pose.rot = turn * base;
-  pose.pos = centre + turn * Eigen::Vector3d(0, right ? -standoff_m : standoff_m, 0);
+  pose.pos = centre + turn * Eigen::Vector3d(-behind_m, right ? -standoff_m : standoff_m, 0);
   return pose;
 }
 

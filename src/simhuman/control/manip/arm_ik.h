@@ -79,9 +79,11 @@ int ArmContacts(const mjModel* m, mjData* scratch, const ArmChain& arm, const Ei
 
 /// DASH's side-grasp palm poses around an upright object at `centre` (its axis vertical): the
 /// palm faces the axis from `standoff_m` away at height `centre.z()`, fingers horizontal, thumb
-/// up; `yaw_rad` turns the approach about the vertical (0: the palm approaches from the
-/// right-hand side, -y, with the fingers pointing +x; mirrored for the left hand).
+/// up, the palm point `behind_m` back from the axis along the fingers, so that the object sits
+/// at the base of the fingers and they wrap around it; `yaw_rad` turns the approach about the
+/// vertical (0: the palm approaches from the right-hand side, -y, with the fingers pointing +x;
+/// mirrored for the left hand).
 PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double yaw_rad,
-                       bool right);
+                       bool right, double behind_m = 0.035);
 
 }  // namespace simhuman::control::manip
