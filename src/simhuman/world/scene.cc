@@ -28,7 +28,8 @@ constexpr double kScenePlanRotTolerance = 1e-6;
 
 const std::vector<std::string> kSceneKeys = {"name", "objects", "humans"};
 const std::vector<std::string> kObjectKeys = {"id",   "type",  "pos",     "yaw_deg", "scale",
-                                              "size", "color", "mass_kg", "movable"};
+                                              "size", "color", "mass_kg", "movable", "friction"};
+const core::NumberRange kFrictionRange = core::NumberRange::Closed(kMinFriction, kMaxFriction);
 const std::vector<std::string> kHumanKeys = {"pos", "yaw_deg", "scale", "posture", "kind"};
 const std::vector<std::string> kPlanKeys = {"obj", "chain of contacts", "contact_pairs"};
 const std::vector<std::string> kPlanObjectKeys = {"id",       "name",        "rotate", "scale",
@@ -112,6 +113,7 @@ core::StatusOr<ObjectSpec> ParseObject(const json& j, const std::string& where, 
   SH_ASSIGN_OR_RETURN(std::optional<double> scale, core::ReadOptionalNumber(j, "scale", where));
   o.scale = scale.value_or(1.0);
   SH_ASSIGN_OR_RETURN(o.mass_kg, core::ReadOptionalNumber(j, "mass_kg", where));
+  SH_ASSIGN_OR_RETURN(o.friction, core::ReadOptionalNumber(j, "friction", where, kFrictionRange));
   if (j.contains("movable")) {
     SH_RETURN_IF_ERROR(ApplyMovable(j.at("movable"), core::JsonPointer(where, "movable"), o));
   }
@@ -680,6 +682,7 @@ nlohmann::json SceneToJson(const SceneSpec& spec) {
     if (!o.size.empty()) jo["size"] = o.size;
     if (!o.color.empty()) jo["color"] = o.color;
     if (o.mass_kg) jo["mass_kg"] = *o.mass_kg;
+    if (o.friction) jo["friction"] = *o.friction;
     j["objects"].push_back(jo);
   }
   j["humans"] = json::array();
