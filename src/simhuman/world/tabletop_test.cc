@@ -256,5 +256,34 @@ TEST(TabletopTest, ShoulderOffsetsMatchTheHumanoidAndTheSceneCompiles) {
   EXPECT_EQ(MujocoWarningCount(), warnings0);
 }
 
+// the built-in tabletop_demo keeps DASH's sizes, masses, friction and spacing (its flat yellow
+// box, which commands call "the flat box", excepted)
+TEST(TabletopTest, TabletopDemoIsDashSized) {
+  core::StatusOr<SceneSpec> demo = BuiltinScene("tabletop_demo");
+  ASSERT_TRUE(demo.ok()) << demo.status();
+  std::vector<const ObjectSpec*> items;
+  for (const ObjectSpec& o : demo->objects) {
+    if (o.type == "table") continue;
+    items.push_back(&o);
+    const std::string& id = o.id;
+    EXPECT_TRUE(o.mass_kg && In(*o.mass_kg, kMassLo, kMassHi)) << id;
+    EXPECT_TRUE(o.friction && In(*o.friction, kFrictionLo, kFrictionHi)) << id;
+    EXPECT_NEAR(o.pos.z(), TableTop(), kTol) << id;
+    if (o.type == "sphere") {
+      EXPECT_TRUE(In(2 * o.size.at("radius"), 0.75 * kHeightLo, 0.75 * kHeightHi)) << id;
+      continue;
+    }
+    EXPECT_TRUE(In(NominalWidth(o), kWidthLo, kWidthHi)) << id;
+    EXPECT_TRUE(id == "box004" || In(o.size.at("height"), kHeightLo, kHeightHi)) << id;
+  }
+  EXPECT_EQ(items.size(), 6u);
+  for (size_t a = 0; a < items.size(); ++a) {
+    for (size_t b = a + 1; b < items.size(); ++b) {
+      EXPECT_GE((items[a]->pos - items[b]->pos).head<2>().norm(), kMinSeparation - kTol)
+          << items[a]->id << " " << items[b]->id;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace simhuman::world
