@@ -76,6 +76,7 @@ struct CatalogObject {
   bool movable = false;
   bool collides = true;            ///< false for markers (visual targets that bodies pass through)
   double mass_kg = 0.0;            // movable objects only
+  std::optional<double> friction;  ///< sliding friction of its solids; empty: model default 0.9
   std::vector<CatalogPart> parts;  // named parts
   std::vector<Shape> shapes;       // every solid of the object (parts and unnamed, e.g. legs)
   CarryInfo carry;                 ///< held points, stand points and team sizes (carrying)

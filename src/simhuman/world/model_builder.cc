@@ -87,7 +87,8 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
     << "<asset><texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\"0.82 0.82 0.8\" "
        "rgb2=\"0.7 0.7 0.68\" width=\"512\" height=\"512\"/>"
     << "<material name=\"floor\" texture=\"grid\" texrepeat=\"8 8\" reflectance=\"0\"/></asset>\n"
-    << "<default><geom condim=\"3\" friction=\"0.9 0.02 0.01\" solref=\"0.015 1\"/></default>\n"
+    << "<default><geom condim=\"3\" friction=\"" << F(kDefaultSlidingFriction)
+    << " 0.02 0.01\" solref=\"0.015 1\"/></default>\n"
     << "<worldbody>\n"
     << "<light name=\"sun\" directional=\"true\" pos=\"0 0 6\" dir=\"-0.3 -0.2 -1\" "
        "diffuse=\"0.6 0.6 0.6\" castshadow=\"false\"/>\n"
@@ -112,6 +113,11 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
     o << "<body name=\"" << ObjectBodyName(obj.id) << "\" pos=\"" << V3(obj.pose.pos)
       << "\" quat=\"" << Q(obj.pose.quat) << "\">\n";
     if (obj.movable) o << "<freejoint name=\"obj/" << obj.id << "/root\"/>\n";
+    if (obj.friction && !(*obj.friction > 0 && std::isfinite(*obj.friction))) {
+      return absl::InvalidArgumentError("object '" + obj.id + "': friction " + F(*obj.friction) +
+                                        " must be a positive finite number");
+    }
+    const std::string sliding = F(obj.friction.value_or(kDefaultSlidingFriction));
     int n = 0;
     for (const core::Shape& s : obj.shapes) {
       if (!s.size.allFinite() || (s.size.array() < 0).any()) {
@@ -140,8 +146,13 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
         o << " mass=\"" << F(obj.mass_kg / std::max<size_t>(1, obj.shapes.size())) << "\"";
         // a hand is a patch, not a point: torsional friction lets two pressing palms resist
         // the object turning about the line between them (what carrying relies on)
-        o << " condim=\"4\" friction=\"0.9 0.05 0.01\"";
+        o << " condim=\"4\" friction=\"" << sliding << " 0.05 0.01\"";
+      } else if (obj.friction) {
+        o << " friction=\"" << sliding << " 0.02 0.01\"";
       }
+      // MuJoCo combines two geoms' friction by the larger; priority 1 makes an object's own
+      // coefficient the one its contacts use (with the table, the floor, a hand)
+      if (obj.friction) o << " priority=\"1\"";
       o << "/>\n";
     }
     o << "</body>\n";

@@ -28,7 +28,14 @@ std::string AgentPrefix(int agent);
 /// MJCF body name of catalog object `id` ("obj/<id>").
 std::string ObjectBodyName(const std::string& id);
 
-/// Builds the MJCF text. Errors name the culprit (e.g. a non-finite size).
+/// Default contact friction (sliding, torsional, rolling) of every geom.
+inline constexpr double kDefaultSlidingFriction = 0.9;
+
+/// Builds the MJCF text. Movable objects' geoms get condim 4 and friction "<f> 0.05 0.01", other
+/// objects' "<f> 0.02 0.01", with f = CatalogObject::friction or kDefaultSlidingFriction; an
+/// object with its own friction also gets geom priority 1, so that its contacts with other
+/// geoms (table, floor, hands) use its coefficient rather than MuJoCo's default, the larger of the
+/// two. Errors name the culprit (e.g. a non-finite size or friction).
 core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
                                           const std::vector<AgentSpec>& agents,
                                           const ModelOptions& options);

@@ -541,6 +541,11 @@ core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
     return Invalid(spec,
                    "mass_kg " + Num(*spec.mass_kg) + " is outside (0, " + Num(kMaxMassKg) + "]");
   }
+  if (spec.friction && (!std::isfinite(*spec.friction) || *spec.friction < kMinFriction ||
+                        *spec.friction > kMaxFriction)) {
+    return Invalid(spec, "friction " + Num(*spec.friction) + " is outside the valid range [" +
+                             Num(kMinFriction) + ", " + Num(kMaxFriction) + "]");
+  }
   std::string color = spec.color.empty() ? type->default_color : spec.color;
   if (!ColorRgba(color)) {
     return Invalid(spec, "unknown colour '" + spec.color +
@@ -597,6 +602,7 @@ core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
     for (core::Shape& s : p.shapes) scale_shape(s);
   }
   obj.collides = type->name != "marker";
+  obj.friction = spec.friction;
   if (spec.mass_kg) {
     obj.movable = true;
     obj.mass_kg = *spec.mass_kg;

@@ -49,7 +49,14 @@ struct ObjectSpec {
   double scale = 1.0;                             // multiplies every length
   std::map<std::string, double> size;  // overrides of named size parameters, metres before scale
   std::optional<double> mass_kg;       // set: the object is movable (free) with this mass
+  /// Sliding (lateral) contact friction coefficient of the object's solids, in
+  /// [kMinFriction, kMaxFriction]; empty: the model's default (0.9).
+  std::optional<double> friction;
 };
+
+/// The range of ObjectSpec::friction BuildObject() and the scene parser accept.
+inline constexpr double kMinFriction = 0.1;
+inline constexpr double kMaxFriction = 2.0;
 
 /// One named size parameter of an object type: its default, the range RandomObjectSpec()
 /// samples from (realistic furniture) and the wider range BuildObject() accepts.
@@ -91,8 +98,8 @@ ObjectSpec RandomObjectSpec(std::string_view type, core::Rng& rng);
 /// data (`carry`, world/carry.h). Only boxes, long boxes (25 kg unless given), cylinders and
 /// spheres, and objects given a mass_kg, are movable. Errors (InvalidArgument) name
 /// the object id and the culprit: an unknown type (listing valid types), an unknown size key
-/// (listing the type's keys), a non-finite or out-of-range size, scale, position, yaw or mass, an
-/// unknown colour. Thread-safe.
+/// (listing the type's keys), a non-finite or out-of-range size, scale, position, yaw, mass or
+/// friction, an unknown colour. The friction is carried to CatalogObject::friction. Thread-safe.
 core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec);
 
 /// The palette: red, green, blue, yellow, white, black, brown, grey, orange, purple.

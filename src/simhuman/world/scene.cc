@@ -28,7 +28,8 @@ constexpr double kScenePlanRotTolerance = 1e-6;
 
 const std::vector<std::string> kSceneKeys = {"name", "objects", "humans"};
 const std::vector<std::string> kObjectKeys = {"id",   "type",  "pos",     "yaw_deg", "scale",
-                                              "size", "color", "mass_kg", "movable"};
+                                              "size", "color", "mass_kg", "movable", "friction"};
+const core::NumberRange kFrictionRange = core::NumberRange::Closed(kMinFriction, kMaxFriction);
 const std::vector<std::string> kHumanKeys = {"pos", "yaw_deg", "scale", "posture", "kind"};
 const std::vector<std::string> kPlanKeys = {"obj", "chain of contacts", "contact_pairs"};
 const std::vector<std::string> kPlanObjectKeys = {"id",       "name",        "rotate", "scale",
@@ -112,6 +113,7 @@ core::StatusOr<ObjectSpec> ParseObject(const json& j, const std::string& where, 
   SH_ASSIGN_OR_RETURN(std::optional<double> scale, core::ReadOptionalNumber(j, "scale", where));
   o.scale = scale.value_or(1.0);
   SH_ASSIGN_OR_RETURN(o.mass_kg, core::ReadOptionalNumber(j, "mass_kg", where));
+  SH_ASSIGN_OR_RETURN(o.friction, core::ReadOptionalNumber(j, "friction", where, kFrictionRange));
   if (j.contains("movable")) {
     SH_RETURN_IF_ERROR(ApplyMovable(j.at("movable"), core::JsonPointer(where, "movable"), o));
   }
@@ -457,6 +459,9 @@ SceneSpec Office() {
   return s;
 }
 
+// DASH-sized objects (world/tabletop.h): boxes 13-18 cm tall, square sides 0.8 x a 6-10 cm
+// width, a 9 cm wide cylinder (a stacking base), a sphere 0.75 x 16 cm across, 1-5 kg, friction
+// 0.8-1.2, centroids >= 0.25 m apart; the yellow box stays flat (commands call it "the flat box")
 SceneSpec TabletopDemo() {
   double table_h = DefaultSizes("table").at("height");
   SceneSpec s;
@@ -464,12 +469,12 @@ SceneSpec TabletopDemo() {
   s.objects.push_back(Obj("table000", "table", 1.0, 0.0, 180));
   struct Item {
     const char* color;
-    double x, y, d, w, h, mass_kg;
+    double x, y, d, w, h, mass_kg, friction;
   };
-  const Item items[] = {{"red", 0.85, 0.30, 0.08, 0.08, 0.08, 0.3},
-                        {"green", 0.85, 0.0, 0.06, 0.06, 0.12, 0.25},
-                        {"blue", 0.85, -0.30, 0.08, 0.08, 0.08, 0.3},
-                        {"yellow", 1.10, 0.15, 0.10, 0.10, 0.05, 0.3}};
+  const Item items[] = {{"red", 0.85, 0.30, 0.072, 0.072, 0.16, 2.5, 1.0},
+                        {"green", 0.85, 0.0, 0.064, 0.064, 0.18, 1.5, 0.9},
+                        {"blue", 0.85, -0.30, 0.072, 0.072, 0.15, 3.0, 1.1},
+                        {"yellow", 1.10, 0.15, 0.08, 0.08, 0.05, 1.0, 1.0}};
   int n = 1;
   for (const Item& it : items) {
     char id[16];
@@ -478,17 +483,24 @@ SceneSpec TabletopDemo() {
     o.color = it.color;
     o.size = {{"depth", it.d}, {"width", it.w}, {"height", it.h}};
     o.mass_kg = it.mass_kg;
+    o.friction = it.friction;
     s.objects.push_back(o);
   }
   // a blue cylinder left of a green sphere (as the human, facing +x, sees them)
   ObjectSpec cylinder = Obj("cylinder005", "cylinder", 1.1, -0.15, 0, table_h);
   cylinder.color = "blue";
-  cylinder.mass_kg = 0.3;
+  cylinder.size = {{"radius", 0.045}, {"height", 0.15}};
+  cylinder.mass_kg = 2.0;
+  cylinder.friction = 0.9;
   s.objects.push_back(cylinder);
   ObjectSpec sphere = Obj("sphere006", "sphere", 1.1, -0.4, 0, table_h);
   sphere.color = "green";
-  sphere.mass_kg = 0.2;
+  sphere.size = {{"radius", 0.06}};
+  sphere.mass_kg = 1.2;
+  sphere.friction = 1.1;
   s.objects.push_back(sphere);
+  // standing, not seated as in DASH (TabletopBaseScene()): seated, the offline planner would
+  // stand up and walk to the object before every tabletop command
   s.humans.push_back(Human(0.2, 0.0, 0));
   return s;
 }
@@ -680,6 +692,7 @@ nlohmann::json SceneToJson(const SceneSpec& spec) {
     if (!o.size.empty()) jo["size"] = o.size;
     if (!o.color.empty()) jo["color"] = o.color;
     if (o.mass_kg) jo["mass_kg"] = *o.mass_kg;
+    if (o.friction) jo["friction"] = *o.friction;
     j["objects"].push_back(jo);
   }
   j["humans"] = json::array();

@@ -38,7 +38,8 @@ const std::vector<std::string>& HumanPostures();
 
 /// Parses a scene, strictly. Two forms are accepted:
 ///  - ours: {"name", "objects": [{"id", "type", "pos", "yaw_deg", "scale", "size", "color",
-///    "mass_kg", "movable"}], "humans": [{"pos", "yaw_deg", "scale", "posture", "kind"}]};
+///    "mass_kg", "movable", "friction"}], "humans": [{"pos", "yaw_deg", "scale", "posture",
+///    "kind"}]};
 ///  - a UniHSI ScenePlan entry {"obj": {"000": {"id", "name", "rotate", "scale", "transfer",
 ///    "stand_point"}}, "chain of contacts" | "contact_pairs": [...]}, or a one-key wrapper of
 ///    it such as {"0000": {...}} (the contacts are ignored here; plan/ parses them).

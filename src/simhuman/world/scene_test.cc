@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "simhuman/core/json_io.h"
+#include "simhuman/world/model_builder.h"
 
 namespace simhuman::world {
 namespace {
@@ -366,6 +367,45 @@ TEST(SceneTest, OverlapsAreDetected) {
   EXPECT_EQ(cat->num_agents(), 0);
   s.objects[1].id = "a";
   EXPECT_THAT(std::string(BuildCatalog(s).status().message()), HasSubstr("duplicate object id"));
+}
+
+TEST(SceneTest, FrictionIsReadCheckedWrittenAndReachesTheModel) {
+  SceneSpec s = Parse(R"({"objects": [{"type": "box", "pos": [0, 0], "friction": 1.1},
+                                      {"type": "table", "pos": [2, 0], "friction": 0.5},
+                                      {"type": "cylinder", "pos": [0, 1]}]})");
+  ASSERT_EQ(s.objects.size(), 3u);
+  ASSERT_TRUE(s.objects[0].friction.has_value());
+  EXPECT_NEAR(*s.objects[0].friction, 1.1, kTol);
+  EXPECT_FALSE(s.objects[2].friction.has_value());
+  nlohmann::json j = SceneToJson(s);
+  EXPECT_NEAR(j["objects"][1]["friction"].get<double>(), 0.5, kTol);
+  EXPECT_FALSE(j["objects"][2].contains("friction"));
+  core::StatusOr<SceneSpec> again = ParseSceneJson(j, "<again>");
+  ASSERT_TRUE(again.ok()) << again.status();
+  EXPECT_EQ(again->objects[1].friction, s.objects[1].friction);
+
+  core::StatusOr<core::SceneCatalog> cat = BuildCatalog(s);
+  ASSERT_TRUE(cat.ok()) << cat.status();
+  EXPECT_EQ(cat->objects[0].friction, s.objects[0].friction);
+  core::StatusOr<std::string> xml = BuildModelXml(*cat, {}, ModelOptions{});
+  ASSERT_TRUE(xml.ok()) << xml.status();
+  // movable: the given sliding friction, torsional 0.05; static: torsional 0.02; both priority 1
+  EXPECT_THAT(*xml, HasSubstr("condim=\"4\" friction=\"1.1 0.05 0.01\" priority=\"1\""));
+  EXPECT_THAT(*xml, HasSubstr("friction=\"0.5 0.02 0.01\" priority=\"1\""));
+  EXPECT_THAT(*xml, HasSubstr("condim=\"4\" friction=\"0.9 0.05 0.01\"/>"));
+
+  nlohmann::json bad = {{"objects", {{{"type", "box"}, {"pos", {0, 0}}, {"friction", 2.5}}}}};
+  std::string e = ParseError(bad);
+  EXPECT_THAT(e, HasSubstr("/objects/0/friction"));
+  EXPECT_THAT(e, HasSubstr("[0.1, 2]"));
+  bad["objects"][0]["friction"] = "slippery";
+  EXPECT_THAT(ParseError(bad), HasSubstr("/objects/0/friction: expected a number"));
+  ObjectSpec o = s.objects[0];
+  o.friction = 0.01;
+  core::StatusOr<core::CatalogObject> built = BuildObject(o);
+  ASSERT_FALSE(built.ok());
+  EXPECT_THAT(std::string(built.status().message()),
+              HasSubstr("object 'box000': friction 0.01 is outside the valid range [0.1, 2]"));
 }
 
 }  // namespace
