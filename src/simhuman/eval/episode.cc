@@ -12,6 +12,7 @@
 #include "simhuman/core/json_io.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/core/version.h"
+#include "simhuman/world/seating.h"
 
 namespace simhuman::eval {
 
@@ -21,21 +22,17 @@ uint64_t ControllerSeed(uint64_t run_seed, int agent) {
 
 core::StatusOr<std::vector<world::AgentSpec>> AgentSpecs(const world::SceneSpec& spec) {
   std::vector<world::AgentSpec> out;
+  core::SceneCatalog catalog;
+  bool seated = false;
+  for (const world::HumanSpec& h : spec.humans) seated |= h.posture != "stand";
+  if (seated) {
+    SH_ASSIGN_OR_RETURN(catalog, world::BuildCatalog(spec));
+  }
   for (size_t i = 0; i < spec.humans.size(); ++i) {
-    const world::HumanSpec& h = spec.humans[i];
-    if (h.posture != "stand") {
-      return absl::InvalidArgumentError("scene '" + spec.name + "': /humans/" + std::to_string(i) +
-                                        "/posture: '" + h.posture +
-                                        "' starts are not supported by the simulator yet; valid "
-                                        "postures to start in: stand");
-    }
-    world::AgentSpec p;
-    p.x = h.pos_xy.x();
-    p.y = h.pos_xy.y();
-    p.yaw_rad = h.yaw_rad;
-    p.scale = h.scale;
-    p.kind = h.kind;
-    out.push_back(p);
+    core::StatusOr<world::AgentSpec> p =
+        world::AgentFromHuman(spec.humans[i], static_cast<int>(i), catalog);
+    if (!p.ok()) return core::Annotate(p.status(), "scene '" + spec.name + "'");
+    out.push_back(*p);
   }
   return out;
 }

@@ -78,7 +78,7 @@ TEST(EpisodeTest, QposColumnsNameEveryEntry) {
   EXPECT_FALSE(WriteTrajectoryCsv("/nonexistent_dir/x.csv", m, t).ok());
 }
 
-TEST(EpisodeTest, StandingStartsOnly) {
+TEST(EpisodeTest, StandingAndSeatedStarts) {
   world::SceneSpec spec = *world::BuiltinScene("sit_demo");
   core::StatusOr<std::vector<world::AgentSpec>> p = AgentSpecs(spec);
   ASSERT_TRUE(p.ok());
@@ -89,7 +89,23 @@ TEST(EpisodeTest, StandingStartsOnly) {
   p = AgentSpecs(spec);
   ASSERT_FALSE(p.ok());
   EXPECT_THAT(p.status().message(), HasSubstr("/humans/0/posture: 'lie'"));
-  EXPECT_THAT(p.status().message(), HasSubstr("valid postures to start in: stand"));
+  EXPECT_THAT(p.status().message(), HasSubstr("valid postures to start in: stand, sit"));
+  // seated on sit_demo's chair: the pelvis on the seat; held only with a dexterous hand
+  spec.humans[0].posture = "sit";
+  spec.humans[0].pos_xy = spec.humans[0].pos_xy.Zero();
+  p = AgentSpecs(spec);
+  ASSERT_TRUE(p.ok()) << p.status();
+  EXPECT_NEAR((*p)[0].seated_pelvis_z,
+              world::DefaultSizes("chair").at("seat_height") + world::SeatedPelvisAboveSeat(1.0),
+              1e-9);
+  EXPECT_FALSE((*p)[0].hold_pelvis);
+  spec.humans[0].kind = "humanoid_right_hand";
+  EXPECT_TRUE((*AgentSpecs(spec))[0].hold_pelvis);
+  // sitting on thin air is refused by name
+  spec.humans[0].pos_xy = Eigen::Vector2d(3, 3);
+  p = AgentSpecs(spec);
+  ASSERT_FALSE(p.ok());
+  EXPECT_THAT(p.status().message(), HasSubstr("/humans/0/posture: 'sit' needs a seat"));
 }
 
 TEST(EpisodeTest, ControllerSeedsAreDistinctAndStable) {

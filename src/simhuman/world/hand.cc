@@ -35,8 +35,8 @@ constexpr const char* kSegment[3] = {"proximal", "middle", "distal"};
 constexpr double kPalmArchX = -0.005;  // the palm-arch hinge line (along the palm, x = const)
 
 // the thumb: CMC in the hand frame, its rest direction (distal), and its segments
-constexpr double kThumbCmc[3] = {0.030, 0.012, -0.022};
-constexpr double kThumbDir[3] = {0.45, 0.40, -0.80};
+constexpr double kThumbCmc[3] = {0.028, 0.012, -0.022};
+constexpr double kThumbDir[3] = {0.25, 0.45, -0.86};
 constexpr double kThumbFlexToward[3] = {-0.6, 0.8, 0.0};  // palmar and ulnar: opposition
 constexpr double kThumbLength[3] = {0.046, 0.032, 0.025};
 constexpr double kThumbRadius[3] = {0.011, 0.0100, 0.0088};
@@ -193,7 +193,7 @@ const std::vector<HandJoint>& HandJoints() {
       j.push_back({f[2], 0, 110, 6, kFingerDamping, 2, kFingerArmature});
       j.push_back({f[3], 0, 80, 4, kFingerDamping, 1.2, kFingerArmature});
     }
-    j.push_back({"thumb_cmc_flex", -15, 55, 12, kFingerDamping, 4, kFingerArmature});
+    j.push_back({"thumb_cmc_flex", -35, 55, 12, kFingerDamping, 4, kFingerArmature});
     j.push_back({"thumb_cmc_abd", -20, 45, 12, kFingerDamping, 4, kFingerArmature});
     j.push_back({"thumb_mcp_flex", 0, 60, 8, kFingerDamping, 2.5, kFingerArmature});
     j.push_back({"thumb_mcp_abd", -10, 10, 6, kFingerDamping, 2, kFingerArmature});
