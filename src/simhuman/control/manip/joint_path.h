@@ -63,7 +63,7 @@ bool PathValid(const JointPath& path, const ValidityFn& valid, double resolution
 
 /// Options of ShortcutPath.
 struct ShortcutOptions {
-  int iterations = 100;          ///< random shortcut attempts
+  int iterations = 50;           ///< random shortcut attempts
   double resolution_rad = 0.02;  ///< segment check resolution (see SegmentValid)
   /// share of the attempts that are partial: only one random joint is interpolated between the
   /// two points, the others keep their course (Geraerts and Overmars 2007); these remove the

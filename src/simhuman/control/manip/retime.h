@@ -89,24 +89,32 @@ class Trajectory {
   /// Exact evaluation at time `t_s`, clamped to [0, duration_s()] (after the end: the end
   /// state, including the terminal velocity and deceleration).
   Point Sample(double t_s) const;
-  /// Arc length (rad) and path speed (rad/s) at time t_s (clamped as in Sample).
+  /// Arc length s(t) (rad) at time t_s (clamped as in Sample).
   double PathPosition(double t_s) const;
+  /// Path speed ds/dt (rad/s) at time t_s (clamped as in Sample).
   double PathSpeed(double t_s) const;
 
+  /// Duration T (s), after any shortening or stretching by Retime.
   double duration_s() const { return duration_s_; }
+  /// Sample spacing (s).
   double dt_s() const { return dt_s_; }
+  /// Path length L (rad of joint-space arc length).
   double length() const { return length_; }
   /// the terminal ratio r = v_T T / L of the profile (0 when the path stops)
   double terminal_ratio() const { return ratio_; }
+  /// Number of joints.
   int num_dofs() const { return path_.num_dofs(); }
+  /// The timed path (the input without repeated waypoints).
   const JointPath& path() const { return path_; }
 
   /// Sample times: k * dt_s for k = 0 .. while < duration_s, then duration_s itself (the last
   /// spacing may be shorter than dt_s); one sample at 0 for a path of zero length.
   const std::vector<double>& times() const { return times_; }
-  /// Positions, velocities and accelerations at times(), per sample.
+  /// Positions (rad) at times(), one per sample.
   const std::vector<Eigen::VectorXd>& positions() const { return q_; }
+  /// Velocities (rad/s) at times().
   const std::vector<Eigen::VectorXd>& velocities() const { return qdot_; }
+  /// Accelerations (rad/s^2, tangential) at times().
   const std::vector<Eigen::VectorXd>& accelerations() const { return qddot_; }
 
  private:

@@ -44,9 +44,11 @@ struct PlannerOptions {
   /// much in every joint (see SegmentValid)
   double resolution_rad = 0.02;
   bool simplify = true;  ///< shortcut the raw RRTConnect path (ShortcutPath)
-  /// random shortcut attempts when simplifying; each costs up to (its length / resolution_rad)
-  /// validity calls (the 7-D box test: ~100 calls per attempt)
-  int shortcut_iterations = 100;
+  /// random shortcut attempts when simplifying. Each costs up to (its length / resolution_rad)
+  /// validity calls: measured on the seated humanoid's 7-DoF arm reaching over a table (3 IK
+  /// goals, ~89 us per full-model collision check), 0 / 50 / 100 / 200 attempts took 13 / 105
+  /// / 197 / 326 ms and left paths of 4.85 / 2.72 / 2.48 / 2.32 rad (raw 6.21 rad)
+  int shortcut_iterations = 50;
   /// RRTConnect's extension length; 0: OMPL's default (20 % of the bound box's diagonal)
   double range_rad = 0.0;
   /// When > 0 and the start is invalid (an arm holding an object that touches the table), the

@@ -69,8 +69,11 @@ class JointTracker {
 
   /// Zeroes the integral (at the start of a new trajectory).
   void Reset() { integral_.setZero(); }
+  /// The clamped error integral (rad s), per joint.
   const Eigen::VectorXd& integral() const { return integral_; }
+  /// The gains it was made with.
   const TrackerGains& gains() const { return gains_; }
+  /// Number of joints.
   int num_dofs() const { return static_cast<int>(integral_.size()); }
 
  private:
@@ -101,6 +104,7 @@ class InverseDynamics {
   /// Writes `tau` into d->qfrc_applied at the dofs (other entries untouched).
   void Apply(mjData* d, const Eigen::VectorXd& tau) const;
 
+  /// The dof indices (into qvel, qacc, qfrc_*), in torque order.
   const std::vector<int>& dofs() const { return dofs_; }
 
  private:
