@@ -37,7 +37,8 @@ constexpr double kPalmArchX = -0.005;  // the palm-arch hinge line (along the pa
 // the thumb: CMC in the hand frame, its rest direction (distal), and its segments
 constexpr double kThumbCmc[3] = {0.028, 0.012, -0.022};
 constexpr double kThumbDir[3] = {0.25, 0.45, -0.86};
-constexpr double kThumbFlexToward[3] = {-0.6, 0.8, 0.0};  // palmar and ulnar: opposition
+constexpr double kThumbFlexToward[3] = {
+    -0.35, 0.75, -0.55};  // palmar, ulnar, distal  // palmar and ulnar: opposition
 constexpr double kThumbLength[3] = {0.046, 0.032, 0.025};
 constexpr double kThumbRadius[3] = {0.011, 0.0100, 0.0088};
 

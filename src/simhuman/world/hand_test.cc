@@ -91,12 +91,11 @@ TEST(HandTest, ClosingCurlsTheFingersIntoThePalmAndTheThumbOpposesThem) {
   }
   // the middle fingertip folds back toward the palm
   EXPECT_GT(h.InHand("right", h.SitePos("right_middle_tip")).z(), -0.15);
-  // thumb and index tips come together (a pinch closes)
-  const double open_gap = (open_thumb - open_index).norm();
-  const double closed_gap = (h.InHand("right", h.SitePos("right_thumb_tip")) -
-                             h.InHand("right", h.SitePos("right_index_tip")))
-                                .norm();
-  EXPECT_LT(closed_gap, open_gap - 0.02);
+  // the thumb swings across in front of the palm (opposition): toward the little finger's side
+  const Eigen::Vector3d closed_thumb = h.InHand("right", h.SitePos("right_thumb_tip"));
+  EXPECT_LT(closed_thumb.x(), open_thumb.x() - 0.03);
+  EXPECT_GT(closed_thumb.y(), 0.01);
+  EXPECT_GT(open_index.y(), -0.01);
 }
 
 TEST(HandTest, TheLeftHandIsTheMirrorImageOfTheRight) {
