@@ -1,5 +1,7 @@
 #include "simhuman/app/cli.h"
 
+#include "simhuman/learn/tasks.h"
+
 #include <mujoco/mujoco.h>
 
 #include <CLI/CLI.hpp>
@@ -175,7 +177,9 @@ CLI::App* AddPlanCommand(CLI::App& app, PlanFlags* pl) {
 // --seed were given
 CLI::App* AddTrainCommand(CLI::App& app, TrainFlags* tf, CLI::Option** steps, CLI::Option** seed) {
   CLI::App* train_cmd = app.add_subcommand("train", "Train a policy with PPO (resumable)");
-  train_cmd->add_option("--task", tf->task, "Task: walk or reach (a toy point mass)")
+  std::string tasks;
+  for (const std::string& t : learn::TaskNames()) tasks += (tasks.empty() ? "" : ", ") + t;
+  train_cmd->add_option("--task", tf->task, "Task: one of " + tasks)
       ->capture_default_str();
   *steps = train_cmd->add_option("--steps", tf->steps, "Total env steps (30M, 500k)")
                ->capture_default_str();

@@ -2,7 +2,7 @@
 
 namespace simhuman::learn {
 
-std::vector<std::string> TaskNames() { return {"walk", "reach", "carry"}; }
+std::vector<std::string> TaskNames() { return {"walk", "reach", "carry", "grasp"}; }
 
 bool TaskHasSolverChoice(std::string_view name) { return name == "walk"; }
 

@@ -1,6 +1,7 @@
 #include "simhuman/learn/tasks.h"
 
 #include "simhuman/learn/carry_env.h"
+#include "simhuman/learn/grasp_env.h"
 #include "simhuman/learn/reach_env.h"
 #include "simhuman/learn/walk_env.h"
 
@@ -28,6 +29,14 @@ const std::vector<TaskDef>& Tasks() {
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "walk", false},
+      {"grasp",
+       "DASH's grasp stage: close a dexterous hand around a table object and hold it through a "
+       "drop test",
+       [](int envs, const std::string&) -> core::StatusOr<std::unique_ptr<VecTask>> {
+         SH_ASSIGN_OR_RETURN(std::unique_ptr<GraspTask> t, GraspTask::Create(envs));
+         return std::unique_ptr<VecTask>(std::move(t));
+       },
+       "", false},
   };
   return tasks;
 }
