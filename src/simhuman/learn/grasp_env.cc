@@ -213,9 +213,7 @@ void GraspTask::Reset(int i, uint64_t seed, float* obs) {
     q[4] = q[5] = 0;
     q[6] = std::sin(yaw / 2);
     // the open hand: fingers straight, the thumb extended out of the palm's way
-    for (int k = ArmChain::kDofs; k < kGraspDofs; ++k) e.d->qpos[ix_.qpos[k]] = 0;
-    e.d->qpos[ix_.qpos[ArmChain::kDofs + 17]] = ix_.lo[ArmChain::kDofs + 17];  // thumb cmc flex
-    e.d->qpos[ix_.qpos[ArmChain::kDofs + 18]] = ix_.lo[ArmChain::kDofs + 18];  // thumb cmc abd
+    control::manip::SetOpenHand(ix_, e.d);
     mj_forward(e.m, e.d);
     if (PlaceArm(e, rng)) break;
   }

@@ -169,8 +169,8 @@ int ArmContacts(const mjModel* m, mjData* d, const ArmChain& arm, const Eigen::V
   return count;
 }
 
-PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double yaw_rad,
-                       bool right, double behind_m) {
+PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double yaw_rad, bool right,
+                       double behind_m) {
   // yaw 0: fingers +x, thumb up, the palm on the object's -y side (right hand) or +y side
   // (left hand) facing it; the hand frame is the same matrix for both (the left hand's palm
   // faces its frame's -y)

@@ -47,6 +47,13 @@ core::StatusOr<GraspIndex> MakeGraspIndex(const world::SimWorld& world, int agen
   return ix;
 }
 
+void SetOpenHand(const GraspIndex& ix, mjData* d) {
+  for (int k = ArmChain::kDofs; k < kGraspDofs; ++k) d->qpos[ix.qpos[k]] = 0;
+  // the thumb's CMC flexion and abduction (world/hand.h order: after the palm arch and the four
+  // fingers' 16) at their extension limits
+  for (int k : {ArmChain::kDofs + 17, ArmChain::kDofs + 18}) d->qpos[ix.qpos[k]] = ix.lo[k];
+}
+
 void HoldCurrentPose(const mjData* d, const GraspIndex& ix, GraspState* s) {
   for (int i = 0; i < kGraspDofs; ++i) s->target[i] = d->qpos[ix.qpos[i]];
 }
@@ -64,8 +71,8 @@ void GraspTouch(const mjModel* m, const mjData* d, const GraspIndex& ix, int obj
   }
 }
 
-void GraspObservation(const mjModel* m, const mjData* d, const GraspIndex& ix,
-                      const GraspState& s, float* obs) {
+void GraspObservation(const mjModel* m, const mjData* d, const GraspIndex& ix, const GraspState& s,
+                      float* obs) {
   float* o = obs;
   for (int i = 0; i < kGraspDofs; ++i) *o++ = static_cast<float>(d->qpos[ix.qpos[i]]);
   for (int i = 0; i < ArmChain::kDofs; ++i) {

@@ -58,6 +58,11 @@ struct GraspState {
   int object_body = -1;
 };
 
+/// Sets the hand's 22 joints in `d` to the open pre-shape the reach carries (DASH holds one
+/// designed pose while reaching): fingers straight, the thumb extended and abducted out of the
+/// palm's way. Only qpos; run kinematics after.
+void SetOpenHand(const GraspIndex& ix, mjData* d);
+
 /// Targets equal to the current joint angles (the start of a stage).
 void HoldCurrentPose(const mjData* d, const GraspIndex& ix, GraspState* s);
 

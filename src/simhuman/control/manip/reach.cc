@@ -1,0 +1,149 @@
+#include "simhuman/control/manip/reach.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace simhuman::control::manip {
+namespace {
+
+double Seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+// contacts of the arm with anything but the ignored bodies (the object in hand)
+int Contacts(const mjModel* m, mjData* s, const ArmChain& arm, const Eigen::VectorXd& q,
+             const ArmMotionOptions& o) {
+  if (o.ignore_bodies.empty()) return ArmContacts(m, s, arm, q, -1, o.contact_tolerance_m);
+  int best = 1 << 30;
+  // ArmContacts ignores one body: count with each ignored and keep what no ignore explains
+  for (int b : o.ignore_bodies)
+    best = std::min(best, ArmContacts(m, s, arm, q, b, o.contact_tolerance_m));
+  return best;
+}
+
+}  // namespace
+
+core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjData* s,
+                                        const ArmChain& arm, const std::vector<PalmPose>& goals,
+                                        const Eigen::Vector3d& approach_dir,
+                                        const ArmMotionOptions& o) {
+  SH_RETURN_IF_ERROR(o.planner.Validate());
+  if (goals.empty()) return absl::InvalidArgumentError("plan failure: no palm poses to reach");
+  const auto t0 = std::chrono::steady_clock::now();
+  mju_copy(s->qpos, d->qpos, m->nq);
+  const Eigen::VectorXd start = arm.Get(d);
+  // the wrist's rest is straight (forearm, flexion, deviation at 0); the shoulder and elbow
+  // keep where they are
+  Eigen::VectorXd rest = start;
+  rest.tail<3>().setZero();
+  struct Candidate {
+    Eigen::VectorXd q;
+    int goal;
+    double wrist;
+  };
+  std::vector<Candidate> free;
+  for (size_t g = 0; g < goals.size(); ++g) {
+    const IkResult r = SolvePalmIk(m, s, arm, goals[g], start, rest);
+    if (!r.converged || Contacts(m, s, arm, r.q, o) > 0) continue;
+    free.push_back({r.q, static_cast<int>(g), r.q.tail<3>().norm()});
+  }
+  if (free.empty()) {
+    return absl::FailedPreconditionError("plan failure: no collision-free arm pose for any of " +
+                                         std::to_string(goals.size()) + " palm poses");
+  }
+  // DASH: the pose with the wrist nearest its rest; the planner may reach any of the best few
+  std::sort(free.begin(), free.end(),
+            [](const Candidate& a, const Candidate& b) { return a.wrist < b.wrist; });
+  if (free.size() > 4) free.resize(4);
+  std::vector<Eigen::VectorXd> qs;
+  for (const Candidate& c : free) qs.push_back(c.q);
+  Eigen::VectorXd lo(ArmChain::kDofs), hi(ArmChain::kDofs);
+  for (int i = 0; i < ArmChain::kDofs; ++i) {
+    lo[i] = arm.lo[i];
+    hi[i] = arm.hi[i];
+  }
+  const ValidityFn valid = [&](const Eigen::VectorXd& q) { return Contacts(m, s, arm, q, o) == 0; };
+  PlannerOptions po = o.planner;
+  if (po.start_escape_rad <= 0) po.start_escape_rad = 0.05;  // a start resting on the table
+  core::StatusOr<PlanResult> plan = PlanJointPath(start, qs, lo, hi, valid, po);
+  if (!plan.ok()) {
+    return core::Annotate(plan.status(), "plan failure");
+  }
+  JointPath path = plan->path;
+  const Candidate& reached = free[plan->goal_index];
+  // the final part arrives along the palm's approach direction
+  arm.Set(s, reached.q);
+  mj_kinematics(m, s);
+  mj_comPos(m, s);
+  std::vector<mjtNum> jacp(3 * m->nv);
+  mj_jacSite(m, s, jacp.data(), nullptr, arm.palm_site);
+  Eigen::MatrixXd J(3, ArmChain::kDofs);
+  for (int i = 0; i < ArmChain::kDofs; ++i) {
+    for (int k = 0; k < 3; ++k) J(k, i) = jacp[k * m->nv + arm.dof[i]];
+  }
+  if (approach_dir.norm() > 1e-9 && path.Length() > 1e-6) {
+    const Eigen::VectorXd tangent = ApproachTangent(J, approach_dir.normalized());
+    if (tangent.norm() > 1e-9) {
+      core::StatusOr<JointPath> shaped = ReshapeTail(path, tangent, o.reshape_fraction);
+      if (shaped.ok() && PathValid(*shaped, valid, po.resolution_rad)) path = *shaped;
+    }
+  }
+  RetimeOptions ro;
+  ro.dt_s = m->opt.timestep;
+  ro.mean_speed = o.mean_path_speed;
+  ro.max_velocity = Eigen::VectorXd::Constant(ArmChain::kDofs, o.max_joint_speed);
+  if (o.terminal_palm_speed_mps > 0 && path.Length() > 1e-6) {
+    core::StatusOr<double> v =
+        PathSpeedForPalmSpeed(J, EndDirection(path), o.terminal_palm_speed_mps);
+    if (v.ok()) ro.terminal_speed = std::min(*v, o.max_joint_speed);
+  }
+  if (path.Length() < 1e-6) {
+    // already there: a still trajectory of one step
+    path.waypoints.push_back(path.waypoints.back());
+  }
+  core::StatusOr<Trajectory> traj = Retime(path, ro);
+  if (!traj.ok()) return core::Annotate(traj.status(), "plan failure: retiming");
+  return ArmMotion{*std::move(traj), reached.goal, reached.q, static_cast<int>(free.size()),
+                   Seconds(t0)};
+}
+
+core::StatusOr<ArmTracker> ArmTracker::Create(const mjModel* m, const ArmChain& arm,
+                                              const TrackerGains& gains) {
+  SH_RETURN_IF_ERROR(gains.Validate());
+  std::vector<int> dofs(arm.dof, arm.dof + ArmChain::kDofs);
+  SH_ASSIGN_OR_RETURN(InverseDynamics id, InverseDynamics::Create(m, dofs));
+  return ArmTracker(m, arm, JointTracker(ArmChain::kDofs, gains), std::move(id));
+}
+
+void ArmTracker::Drive(const Eigen::VectorXd& q_ref, const Eigen::VectorXd& qd_ref,
+                       const Eigen::VectorXd& qdd_ref, mjData* d) {
+  Eigen::VectorXd q(ArmChain::kDofs), qd(ArmChain::kDofs);
+  for (int i = 0; i < ArmChain::kDofs; ++i) {
+    q[i] = d->qpos[arm_.qpos[i]];
+    qd[i] = d->qvel[arm_.dof[i]];
+  }
+  const Eigen::VectorXd acc =
+      tracker_.DesiredAcceleration(q, qd, q_ref, qd_ref, qdd_ref, m_->opt.timestep);
+  const Eigen::VectorXd tau = id_.Torque(d, acc);
+  for (int i = 0; i < ArmChain::kDofs; ++i) {
+    const int a = arm_.actuator[i];
+    d->ctrl[a] = q[i] + tau[i] / m_->actuator_gainprm[mjNGAIN * a];
+  }
+}
+
+void ArmTracker::Control(const Trajectory& traj, double t_s, mjData* d) {
+  const double t = std::clamp(t_s, 0.0, traj.duration_s());
+  const auto p = traj.Sample(t);
+  if (t_s >= traj.duration_s()) {
+    Drive(p.q, Eigen::VectorXd::Zero(ArmChain::kDofs), Eigen::VectorXd::Zero(ArmChain::kDofs), d);
+  } else {
+    Drive(p.q, p.qdot, p.qddot, d);
+  }
+}
+
+void ArmTracker::Hold(const Eigen::VectorXd& q, mjData* d) {
+  Drive(q, Eigen::VectorXd::Zero(ArmChain::kDofs), Eigen::VectorXd::Zero(ArmChain::kDofs), d);
+}
+
+}  // namespace simhuman::control::manip

@@ -1,0 +1,81 @@
+#pragma once
+/// DASH's transition stages for one arm (Appendix A.2): a final arm pose from a distribution of
+/// palm poses (parameterised IK, collision-free, wrist nearest its rest), a collision-free
+/// joint path (RRTConnect, shortcut), the last 10 % reshaped so the palm arrives along the
+/// approach direction, retimed to a bell-shaped speed profile with a terminal palm speed, and
+/// tracked through the arm's servos with inverse dynamics (Eq. 2 plus feed-forward and a
+/// clamped integral). Used for reaching (empty hand) and transport (an object in the hand).
+
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "simhuman/control/manip/arm_ik.h"
+#include "simhuman/control/manip/retime.h"
+#include "simhuman/control/manip/rrt_planner.h"
+#include "simhuman/control/manip/tracker.h"
+#include "simhuman/core/status.h"
+
+namespace simhuman::control::manip {
+
+/// Settings of PlanArmMotion.
+struct ArmMotionOptions {
+  PlannerOptions planner;                ///< RRTConnect budget, seed, resolution, shortcutting
+  double terminal_palm_speed_mps = 0.4;  ///< DASH: the palm still moves at 0.4 m/s on arrival
+  double mean_path_speed = 1.2;          ///< rad/s of joint-space arc length (sets the duration)
+  double max_joint_speed = 3.0;          ///< rad/s per joint
+  double reshape_fraction = 0.1;         ///< the final part of the path given the approach tangent
+  double contact_tolerance_m = 0.002;    ///< penetration a pose may have and still be free
+  /// Bodies whose contacts with the arm do not count (the object in the hand during transport).
+  std::vector<int> ignore_bodies;
+};
+
+/// A planned arm motion.
+struct ArmMotion {
+  Trajectory trajectory;    ///< arm angles over time, from the current pose
+  int goal_index = -1;      ///< which palm pose it reaches
+  Eigen::VectorXd goal_q;   ///< the arm angles there
+  int goals_reachable = 0;  ///< palm poses with a collision-free IK solution
+  double plan_time_s = 0;   ///< IK, search, shortcut and retiming
+};
+
+/// Plans the arm of `arm` from its pose in `d` to one of `goals` (palm poses, e.g.
+/// SideGraspPose() over theta). `approach_dir` (world) is the palm's direction of travel on
+/// arrival (zero: keep the path's own). `scratch` is a caller-owned mjData of the model (its
+/// state is overwritten). Errors name the stage: FailedPrecondition "plan failure: no
+/// collision-free arm pose for any of N palm poses", NotFound "plan failure: no collision-free
+/// path ..." (the planner's message), InvalidArgument for bad options.
+core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjData* scratch,
+                                        const ArmChain& arm, const std::vector<PalmPose>& goals,
+                                        const Eigen::Vector3d& approach_dir,
+                                        const ArmMotionOptions& options = {});
+
+/// Tracks an arm trajectory through the arm's position servos: each physics step, the desired
+/// acceleration (JointTracker: feed-forward plus PID) becomes joint torques by inverse dynamics,
+/// and the servos are given the targets that produce those torques (ctrl = q + tau / kp; the
+/// servos' force limits bound them, as muscles are bounded). Not thread-safe.
+class ArmTracker {
+ public:
+  static core::StatusOr<ArmTracker> Create(const mjModel* m, const ArmChain& arm,
+                                           const TrackerGains& gains = {});
+  /// Writes the arm's controls for time `t_s` along `traj` (clamped to its end: holding the
+  /// last pose) into d->ctrl; `d` must hold the current state after a forward pass.
+  void Control(const Trajectory& traj, double t_s, mjData* d);
+  /// Holds `q` (the arm's angles) still.
+  void Hold(const Eigen::VectorXd& q, mjData* d);
+  void Reset() { tracker_.Reset(); }
+
+ private:
+  ArmTracker(const mjModel* m, const ArmChain& arm, JointTracker tracker, InverseDynamics id)
+      : m_(m), arm_(arm), tracker_(std::move(tracker)), id_(std::move(id)) {}
+  void Drive(const Eigen::VectorXd& q_ref, const Eigen::VectorXd& qd_ref,
+             const Eigen::VectorXd& qdd_ref, mjData* d);
+  const mjModel* m_;
+  ArmChain arm_;
+  JointTracker tracker_;
+  InverseDynamics id_;
+};
+
+}  // namespace simhuman::control::manip
