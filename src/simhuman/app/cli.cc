@@ -1,7 +1,5 @@
 #include "simhuman/app/cli.h"
 
-#include "simhuman/learn/tasks.h"
-
 #include <mujoco/mujoco.h>
 
 #include <CLI/CLI.hpp>
@@ -24,6 +22,7 @@
 #include "simhuman/core/version.h"
 #include "simhuman/dist/mpi_communicator.h"
 #include "simhuman/eval/suites.h"
+#include "simhuman/learn/tasks.h"
 #include "simhuman/world/health.h"
 #include "simhuman/world/scene.h"
 
@@ -144,6 +143,9 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
 
   eval_cmd->add_option("--policy", ev->policy,
                        "Walking policy file (walk suite; get-close steps of other suites)");
+  eval_cmd->add_option("--grasp-policy", ev->grasp_policy,
+                       "tabletop, place, stack: grasp policy file or 'scripted' (default "
+                       "assets/policies/grasp.pt if present, else scripted)");
   eval_cmd->add_flag("--video", ev->video, "walk suite: also write MP4s of rendered episodes");
   eval_cmd
       ->add_option("--physics-solver", ev->physics_solver,
@@ -179,8 +181,7 @@ CLI::App* AddTrainCommand(CLI::App& app, TrainFlags* tf, CLI::Option** steps, CL
   CLI::App* train_cmd = app.add_subcommand("train", "Train a policy with PPO (resumable)");
   std::string tasks;
   for (const std::string& t : learn::TaskNames()) tasks += (tasks.empty() ? "" : ", ") + t;
-  train_cmd->add_option("--task", tf->task, "Task: one of " + tasks)
-      ->capture_default_str();
+  train_cmd->add_option("--task", tf->task, "Task: one of " + tasks)->capture_default_str();
   *steps = train_cmd->add_option("--steps", tf->steps, "Total env steps (30M, 500k)")
                ->capture_default_str();
   train_cmd->add_option("--out", tf->out, "Run folder of a new run");

@@ -10,6 +10,7 @@
 #include "simhuman/app/carry_eval_command.h"
 #include "simhuman/app/common.h"
 #include "simhuman/app/planner_factory.h"
+#include "simhuman/app/tabletop_eval_command.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/eval_job.h"
 #include "simhuman/eval/eval_runner.h"
@@ -232,6 +233,9 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
   if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
   if (suite->controller == eval::SuiteController::kCarryPolicy) {
     return CarryEvalCommand(flags, out, err);
+  }
+  if (suite->controller == eval::SuiteController::kTabletop) {
+    return TabletopEvalCommand(flags, out, err);
   }
   if (suite->controller == eval::SuiteController::kWalkPolicy) {
     if (flags.episodes < 1) {

@@ -30,6 +30,9 @@ struct EvalFlags {
   std::string physics_solver = "newton";  ///< walk suites: world::ModelOptions::solver
   /// Plan suites: continue the run in --out, running only its missing episodes.
   bool resume = false;
+  /// Tabletop suites: a grasp policy file, or "scripted"; empty: assets/policies/grasp.pt when
+  /// it exists, else "scripted".
+  std::string grasp_policy;
 };
 
 /// Runs the suite: a table row per finished episode and a summary table on `out`, files as

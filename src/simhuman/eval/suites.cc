@@ -286,6 +286,10 @@ const std::vector<SuiteDef>& Suites() {
        "the walking policy: short steps back and sideways"},
       {"carry", C::kCarryPolicy, X::kNone, nullptr,
        "the carrying policy: a 2-13 kg box carried 1-20 m (CooHOI Table 1)"},
+      {"tabletop", C::kTabletop, X::kNone, nullptr,
+       "DASH's benchmark: place or stack a table object, seated, one dexterous hand"},
+      {"place", C::kTabletop, X::kNone, nullptr, "DASH's place tasks alone"},
+      {"stack", C::kTabletop, X::kNone, nullptr, "DASH's stack tasks alone"},
       {"language", C::kPlanner, X::kNone, nullptr, "the command corpus through a planner"},
   };
   return suites;

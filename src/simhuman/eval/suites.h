@@ -62,6 +62,7 @@ enum class SuiteController {
   kWalkPolicy,   ///< the walking policy alone (eval/walk_eval.h); needs --policy
   kPlanner,      ///< commands through a planner, no simulation (eval/language_suite.h)
   kCarryPolicy,  ///< the carrying policy on CooHOI's protocol (learn/carry_eval.h)
+  kTabletop,     ///< DASH's pick-and-place pipeline on generated tables (eval/tabletop_eval.h)
 };
 
 /// Draws one episode of a plan suite into `spec` (scene, plan, variant, object_id, joint) from

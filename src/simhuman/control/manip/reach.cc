@@ -26,10 +26,15 @@ int Contacts(const mjModel* m, mjData* s, const ArmChain& arm, const Eigen::Vect
 
 core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjData* s,
                                         const ArmChain& arm, const std::vector<PalmPose>& goals,
-                                        const Eigen::Vector3d& approach_dir,
+                                        const std::vector<Eigen::Vector3d>& approach_dirs,
                                         const ArmMotionOptions& o) {
   SH_RETURN_IF_ERROR(o.planner.Validate());
   if (goals.empty()) return absl::InvalidArgumentError("plan failure: no palm poses to reach");
+  if (!approach_dirs.empty() && approach_dirs.size() != goals.size()) {
+    return absl::InvalidArgumentError(
+        "approach directions: " + std::to_string(approach_dirs.size()) + " for " +
+        std::to_string(goals.size()) + " palm poses");
+  }
   const auto t0 = std::chrono::steady_clock::now();
   mju_copy(s->qpos, d->qpos, m->nq);
   const Eigen::VectorXd start = arm.Get(d);
@@ -82,8 +87,11 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
   for (int i = 0; i < ArmChain::kDofs; ++i) {
     for (int k = 0; k < 3; ++k) J(k, i) = jacp[k * m->nv + arm.dof[i]];
   }
-  if (approach_dir.norm() > 1e-9 && path.Length() > 1e-6) {
-    const Eigen::VectorXd tangent = ApproachTangent(J, approach_dir.normalized());
+  const Eigen::Vector3d approach = reached.goal < static_cast<int>(approach_dirs.size())
+                                       ? approach_dirs[reached.goal]
+                                       : Eigen::Vector3d::Zero();
+  if (approach.norm() > 1e-9 && path.Length() > 1e-6) {
+    const Eigen::VectorXd tangent = ApproachTangent(J, approach.normalized());
     if (tangent.norm() > 1e-9) {
       core::StatusOr<JointPath> shaped = ReshapeTail(path, tangent, o.reshape_fraction);
       if (shaped.ok() && PathValid(*shaped, valid, po.resolution_rad)) path = *shaped;

@@ -42,14 +42,15 @@ struct ArmMotion {
 };
 
 /// Plans the arm of `arm` from its pose in `d` to one of `goals` (palm poses, e.g.
-/// SideGraspPose() over theta). `approach_dir` (world) is the palm's direction of travel on
-/// arrival (zero: keep the path's own). `scratch` is a caller-owned mjData of the model (its
-/// state is overwritten). Errors name the stage: FailedPrecondition "plan failure: no
-/// collision-free arm pose for any of N palm poses", NotFound "plan failure: no collision-free
-/// path ..." (the planner's message), InvalidArgument for bad options.
+/// SideGraspPose() over theta). `approach_dirs` (world, one per goal, or empty) is the palm's
+/// direction of travel on arrival at that goal (empty or zero: keep the path's own). `scratch` is a
+/// caller-owned mjData of the model (its state is overwritten). Errors name the stage:
+/// FailedPrecondition "plan failure: no collision-free arm pose for any of N palm poses", NotFound
+/// "plan failure: no collision-free path ..." (the planner's message), InvalidArgument for bad
+/// options.
 core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjData* scratch,
                                         const ArmChain& arm, const std::vector<PalmPose>& goals,
-                                        const Eigen::Vector3d& approach_dir,
+                                        const std::vector<Eigen::Vector3d>& approach_dirs,
                                         const ArmMotionOptions& options = {});
 
 /// Tracks an arm trajectory through the arm's position servos: each physics step, the desired

@@ -57,7 +57,9 @@ TEST(ReachTest, TheArmReachesAPreGraspBesideAnObjectAndTracksItIntegration) {
   const Eigen::Vector3d centre = world::TableToWorld(can_table) + Eigen::Vector3d(0, 0, 0.055);
   const std::vector<PalmPose> goals = Around(centre, 0.04 + 0.04);
   ArmMotionOptions o;
-  auto motion = PlanArmMotion(m, d, s, arm, goals, goals[0].rot.col(1), o);
+  std::vector<Eigen::Vector3d> approach;
+  for (const PalmPose& g : goals) approach.push_back(g.rot.col(1));  // out of the palm
+  auto motion = PlanArmMotion(m, d, s, arm, goals, approach, o);
   ASSERT_TRUE(motion.ok()) << motion.status();
   EXPECT_GE(motion->goals_reachable, 1);
   EXPECT_GT(motion->trajectory.duration_s(), 0.3);
@@ -91,8 +93,8 @@ TEST(ReachTest, AnUnreachablePalmPoseIsAPlanFailure) {
   ArmChain arm = *MakeArmChain(*w, 0, true);
   mjData* s = mj_makeData(w->model());
   // 1.5 m away across the table
-  auto motion = PlanArmMotion(w->model(), w->data(), s, arm,
-                              Around(Eigen::Vector3d(2.0, 0, 0.8), 0.08), Eigen::Vector3d::Zero());
+  auto motion =
+      PlanArmMotion(w->model(), w->data(), s, arm, Around(Eigen::Vector3d(2.0, 0, 0.8), 0.08), {});
   ASSERT_FALSE(motion.ok());
   EXPECT_NE(
       motion.status().message().find("plan failure: no collision-free arm pose for any of 16"),

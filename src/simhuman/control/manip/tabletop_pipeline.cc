@@ -1,0 +1,313 @@
+#include "simhuman/control/manip/tabletop_pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+namespace simhuman::control::manip {
+
+const char* TabletopStageName(TabletopStage s) {
+  switch (s) {
+    case TabletopStage::kReach:
+      return "reach";
+    case TabletopStage::kGrasp:
+      return "grasp";
+    case TabletopStage::kLift:
+      return "lift";
+    case TabletopStage::kTransport:
+      return "transport";
+    case TabletopStage::kPlace:
+      return "place";
+    case TabletopStage::kRelease:
+      return "release";
+    case TabletopStage::kSettle:
+      return "settle";
+    case TabletopStage::kDone:
+      return "done";
+  }
+  return "?";
+}
+
+namespace {
+
+Eigen::Matrix3d Rot(const mjData* d, int body) {
+  return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * body);
+}
+
+// one run's state: the world, the arm, the fingers' targets and the counters
+class Run {
+ public:
+  Run(world::SimWorld& w, const GraspIndex& ix, const TabletopGoal& g, const TabletopOptions& o,
+      const StepHook& hook)
+      : w_(w), m_(w.model()), d_(w.data()), ix_(ix), g_(g), o_(o), hook_(hook) {
+    scratch_ = mj_makeData(m_);
+    for (int i = 0; i < kGraspDofs; ++i) s_.target[i] = d_->qpos[ix_.qpos[i]];
+    s_.object_body = g_.object_body;
+    s_.shape = g_.shape;
+    s_.task_pos = g_.planned_pos;
+  }
+  ~Run() { mj_deleteData(scratch_); }
+
+  TabletopResult Go(const GraspPolicyFn& policy);
+
+ private:
+  // one physics step: the arm by the tracker (or the grasp targets), the fingers by their
+  // targets
+  bool Step(const std::function<void()>& arm_ctrl) {
+    mj_step1(m_, d_);
+    if (arm_ctrl) {
+      arm_ctrl();
+    } else {
+      WriteGraspCtrl(m_, d_, ix_, s_);
+    }
+    for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) d_->ctrl[ix_.actuator[i]] = s_.target[i];
+    mj_step2(m_, d_);
+    ++steps_;
+    if (hook_) hook_(d_);
+    for (int k = 0; k < m_->nv; ++k) {
+      if (!std::isfinite(d_->qvel[k])) return false;
+    }
+    return true;
+  }
+  bool Follow(ArmTracker& tr, const Trajectory& traj, double extra_s) {
+    tr.Reset();
+    const double t0 = d_->time;
+    while (d_->time - t0 < traj.duration_s() + extra_s) {
+      if (!Step([&] { tr.Control(traj, d_->time - t0, d_); })) return false;
+    }
+    return true;
+  }
+  // the arm angles that put the palm at `p` with the hand's current rotation
+  Eigen::VectorXd IkTo(const Eigen::Vector3d& p, const Eigen::VectorXd& from) {
+    mju_copy(scratch_->qpos, d_->qpos, m_->nq);
+    PalmPose pose;
+    pose.pos = p;
+    pose.rot = Rot(d_, ix_.arm.hand_body);
+    IkOptions io;
+    io.max_iterations = 40;
+    return SolvePalmIk(m_, scratch_, ix_.arm, pose, from, from, io).q;
+  }
+  // moves the palm by `delta` (world) over `duration_s`, straight, by IK every 10 ms
+  bool MovePalm(ArmTracker& tr, const Eigen::Vector3d& delta, double duration_s,
+                const std::function<bool()>& stop) {
+    const Eigen::Vector3d p0(d_->site_xpos + 3 * ix_.arm.palm_site);
+    Eigen::VectorXd q = ix_.arm.Get(d_);
+    const double t0 = d_->time;
+    tr.Reset();
+    while (d_->time - t0 < duration_s) {
+      const double a = std::min(1.0, (d_->time - t0) / duration_s);
+      if (steps_ % 2 == 0) q = IkTo(p0 + (a * a * (3 - 2 * a)) * delta, q);
+      if (!Step([&] { tr.Hold(q, d_); })) return false;
+      if (stop && stop()) break;
+    }
+    return true;
+  }
+  Eigen::Vector3d ObjectCom() const { return Eigen::Vector3d(d_->xipos + 3 * g_.object_body); }
+  bool InHand() const {
+    const Eigen::Vector3d palm(d_->site_xpos + 3 * ix_.arm.palm_site);
+    return (ObjectCom() - palm).norm() < 0.13;
+  }
+  // the object bears on something that is not the hand (the table, the bottom object)
+  bool Supported() const {
+    for (int c = 0; c < d_->ncon; ++c) {
+      const int g1 = d_->contact[c].geom1, g2 = d_->contact[c].geom2;
+      const int b1 = m_->geom_bodyid[g1], b2 = m_->geom_bodyid[g2];
+      const int other = b1 == g_.object_body ? g2 : b2 == g_.object_body ? g1 : -1;
+      if (other >= 0 && ix_.touch_of_geom[other] < 0 &&
+          std::find(ix_.arm.bodies.begin(), ix_.arm.bodies.end(), m_->geom_bodyid[other]) ==
+              ix_.arm.bodies.end()) {
+        return true;
+      }
+    }
+    return false;
+  }
+  TabletopResult Fail(TabletopStage stage, const std::string& why, bool plan = false) {
+    TabletopResult r;
+    r.failed_stage = stage;
+    r.end_reason = why;
+    r.plan_failure = plan;
+    return r;
+  }
+  std::optional<TabletopResult> Reach(ArmTracker& tr);
+  std::optional<TabletopResult> Transport(ArmTracker& tr);
+
+  world::SimWorld& w_;
+  const mjModel* m_;
+  mjData* d_;
+  mjData* scratch_ = nullptr;
+  const GraspIndex& ix_;
+  const TabletopGoal& g_;
+  const TabletopOptions& o_;
+  const StepHook& hook_;
+  GraspState s_;
+  int steps_ = 0;
+};
+
+std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
+  // the hand pre-shapes first (0.25 s), then the arm moves with it open
+  mju_copy(scratch_->qpos, d_->qpos, m_->nq);
+  SetOpenHand(ix_, scratch_);
+  for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) s_.target[i] = scratch_->qpos[ix_.qpos[i]];
+  const Eigen::VectorXd still = ix_.arm.Get(d_);
+  for (int k = 0; k < 60; ++k) {
+    if (!Step([&] { tr.Hold(still, d_); }))
+      return Fail(TabletopStage::kReach, "unstable simulation");
+  }
+  const double grip_z =
+      g_.shape == GraspShape::kSphere ? g_.half_width_m : std::min(0.055, g_.height_m / 3);
+  const Eigen::Vector3d centre = g_.planned_pos + Eigen::Vector3d(0, 0, grip_z);
+  std::vector<PalmPose> goals;
+  std::vector<Eigen::Vector3d> dirs;
+  for (int k = 0; k < o_.approach_angles; ++k) {
+    const double theta = -M_PI + 2 * M_PI * k / o_.approach_angles;
+    goals.push_back(SideGraspPose(centre, g_.half_width_m + 0.03, theta, ix_.arm.right));
+    dirs.push_back(ix_.arm.right ? goals.back().rot.col(1)
+                                 : Eigen::Vector3d(-goals.back().rot.col(1)));
+  }
+  core::StatusOr<ArmMotion> motion =
+      PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);
+  if (!motion.ok()) {
+    return Fail(TabletopStage::kReach, std::string(motion.status().message()), true);
+  }
+  if (!Follow(tr, motion->trajectory, 0.05))
+    return Fail(TabletopStage::kReach, "unstable simulation");
+  return std::nullopt;
+}
+
+std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
+  // where the object sits in the hand, kept while the hand turns about the vertical
+  const int hb = ix_.arm.hand_body;
+  const Eigen::Matrix3d rh = Rot(d_, hb);
+  const Eigen::Vector3d ph(d_->xpos + 3 * hb);
+  const Eigen::Vector3d r_obj =
+      rh.transpose() * (Eigen::Vector3d(d_->xpos + 3 * g_.object_body) - ph);
+  const Eigen::Vector3d r_palm =
+      rh.transpose() * (Eigen::Vector3d(d_->site_xpos + 3 * ix_.arm.palm_site) - ph);
+  const Eigen::Vector3d base_goal = g_.target + Eigen::Vector3d(0, 0, o_.carry_clearance_m);
+  std::vector<PalmPose> goals;
+  for (int k = 0; k < o_.approach_angles; ++k) {
+    const double theta = -M_PI + 2 * M_PI * k / o_.approach_angles;
+    const Eigen::Matrix3d r = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()) * rh;
+    const Eigen::Vector3d hand = base_goal - r * r_obj;
+    goals.push_back({hand + r * r_palm, r});
+  }
+  ArmMotionOptions mo = o_.motion;
+  mo.terminal_palm_speed_mps = 0;  // DASH: transport ends at rest over the target
+  mo.ignore_bodies.push_back(g_.object_body);
+  core::StatusOr<ArmMotion> motion = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, {}, mo);
+  if (!motion.ok()) {
+    return Fail(TabletopStage::kTransport, std::string(motion.status().message()), true);
+  }
+  if (!Follow(tr, motion->trajectory, 0.2))
+    return Fail(TabletopStage::kTransport, "unstable simulation");
+  if (!InHand())
+    return Fail(TabletopStage::kTransport, "drop in transport: the object fell out of the hand");
+  return std::nullopt;
+}
+
+TabletopResult Run::Go(const GraspPolicyFn& policy) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  core::StatusOr<ArmTracker> tracker = ArmTracker::Create(m_, ix_.arm);
+  if (!tracker.ok()) return Fail(TabletopStage::kReach, std::string(tracker.status().message()));
+  ArmTracker& tr = *tracker;
+  auto finish = [&](TabletopResult r) {
+    r.final_pos = ObjectCom();
+    r.sim_steps = steps_;
+    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    return r;
+  };
+  if (auto f = Reach(tr)) return finish(*f);
+  // grasp: the policy at 40 Hz
+  HoldCurrentPose(d_, ix_, &s_);
+  const int substeps = std::max(1, static_cast<int>(std::lround(0.025 / m_->opt.timestep)));
+  std::vector<float> obs(kGraspObsDim), act(kGraspActDim);
+  for (int k = 0; k < o_.grasp_policy_steps; ++k) {
+    GraspObservation(m_, d_, ix_, s_, obs.data());
+    policy(obs.data(), act.data());
+    ApplyGraspAction(ix_, act.data(), &s_);
+    for (int j = 0; j < substeps; ++j) {
+      if (!Step({})) return finish(Fail(TabletopStage::kGrasp, "unstable simulation"));
+    }
+  }
+  // the grip is held by targets the fingers cannot reach (DASH's tracking-error trick)
+  for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) {
+    const double e = s_.target[i] - d_->qpos[ix_.qpos[i]];
+    s_.target[i] = std::clamp(s_.target[i] + (e > 0   ? 1
+                                              : e < 0 ? -1
+                                                      : 0) *
+                                                 o_.finger_squeeze_rad,
+                              ix_.lo[i], ix_.hi[i]);
+  }
+  const double z0 = ObjectCom().z();
+  if (!MovePalm(tr, Eigen::Vector3d(0, 0, o_.lift_m), 0.8, {})) {
+    return finish(Fail(TabletopStage::kLift, "unstable simulation"));
+  }
+  if (!InHand() || ObjectCom().z() - z0 < 0.5 * o_.lift_m) {
+    return finish(Fail(TabletopStage::kGrasp, "grasp miss: the object did not rise with the hand"));
+  }
+  if (auto f = Transport(tr)) return finish(*f);
+  // place: down until the object bears on its support
+  const double drop = o_.carry_clearance_m + 0.04;
+  if (!MovePalm(tr, Eigen::Vector3d(0, 0, -drop), drop / o_.lower_speed_mps,
+                [&] { return Supported(); })) {
+    return finish(Fail(TabletopStage::kPlace, "unstable simulation"));
+  }
+  // release: the fingers open, the arm holds
+  const Eigen::VectorXd hold = ix_.arm.Get(d_);
+  mju_copy(scratch_->qpos, d_->qpos, m_->nq);
+  SetOpenHand(ix_, scratch_);
+  std::array<double, kGraspDofs> from = s_.target;
+  const double t0 = d_->time;
+  while (d_->time - t0 < o_.release_s) {
+    const double a = std::min(1.0, (d_->time - t0) / o_.release_s);
+    for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) {
+      s_.target[i] = from[i] + a * (scratch_->qpos[ix_.qpos[i]] - from[i]);
+    }
+    if (!Step([&] { tr.Hold(hold, d_); }))
+      return finish(Fail(TabletopStage::kRelease, "unstable simulation"));
+  }
+  // retract: the palm backs away from the object and rises
+  const Eigen::Vector3d out_of_palm = Rot(d_, ix_.arm.hand_body).col(1) * (ix_.arm.right ? 1 : -1);
+  if (!MovePalm(tr, -0.06 * out_of_palm + Eigen::Vector3d(0, 0, 0.08), 0.6, {})) {
+    return finish(Fail(TabletopStage::kRelease, "unstable simulation"));
+  }
+  // settle
+  const Eigen::VectorXd rest = ix_.arm.Get(d_);
+  const double t1 = d_->time;
+  while (d_->time - t1 < o_.settle_s) {
+    if (!Step([&] { tr.Hold(rest, d_); }))
+      return finish(Fail(TabletopStage::kSettle, "unstable simulation"));
+  }
+  const Eigen::Vector3d c = ObjectCom();
+  mjtNum vel[6];
+  mj_objectVelocity(m_, d_, mjOBJ_BODY, g_.object_body, vel, 0);
+  const double speed = Eigen::Vector3d(vel[3], vel[4], vel[5]).norm();
+  const double up = Rot(d_, g_.object_body)(2, 2);
+  const double dxy = std::hypot(c.x() - g_.target.x(), c.y() - g_.target.y());
+  TabletopResult r;
+  if (g_.shape != GraspShape::kSphere && up < std::cos(M_PI / 6)) {
+    r = Fail(TabletopStage::kPlace, "topple at place: the object tipped over");
+  } else if (dxy > 0.10) {
+    r = Fail(TabletopStage::kPlace, "missed the target: " + std::to_string(dxy) + " m away");
+  } else if (c.z() < g_.target.z() + 0.05) {
+    r = Fail(TabletopStage::kPlace, "fell off its support");
+  } else if (speed > 0.05) {
+    r = Fail(TabletopStage::kSettle, "not at rest after the release");
+  } else {
+    r.success = true;
+    r.end_reason = "success";
+  }
+  return finish(r);
+}
+
+}  // namespace
+
+TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const TabletopGoal& goal,
+                           const GraspPolicyFn& policy, const TabletopOptions& options,
+                           const StepHook& hook) {
+  Run run(world, ix, goal, options, hook);
+  return run.Go(policy);
+}
+
+}  // namespace simhuman::control::manip

@@ -1,0 +1,79 @@
+#pragma once
+/// DASH's pick-and-place pipeline for one seated human's right arm and hand: reach (planned),
+/// grasp (a closed-loop policy), lift and transport (planned, the grip held by DASH's
+/// tracking-error trick), place or stack (lower until the object bears on its support), release,
+/// retract, then wait for the object to settle. Each stage reports its own failure, so a
+/// benchmark can tell plan failures from grasp misses, drops in transport and topples at place.
+///
+/// The grasp policy is given as a function (the pipeline stays Torch-free); its observations and
+/// actions are grasp_task.h's.
+
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+
+#include "simhuman/control/manip/grasp_task.h"
+#include "simhuman/control/manip/reach.h"
+#include "simhuman/core/status.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::control::manip {
+
+/// One policy step: kGraspObsDim observations in, kGraspActDim actions out.
+using GraspPolicyFn = std::function<void(const float* obs, float* action)>;
+
+/// What to move and where.
+struct TabletopGoal {
+  int object_body = -1;
+  GraspShape shape = GraspShape::kBox;
+  double half_width_m = 0.04;   ///< the object's half width (sphere: radius)
+  double height_m = 0.15;       ///< its height (sphere: diameter)
+  Eigen::Vector3d planned_pos;  ///< its base centre as the plan believes (world)
+  /// Where its base centre must end (world): a place location on the table, or the top centre
+  /// of the object it is stacked on.
+  Eigen::Vector3d target;
+  int support_body = -1;  ///< the body it is stacked on (-1: the table)
+};
+
+/// Settings of RunTabletop.
+struct TabletopOptions {
+  ArmMotionOptions motion;
+  int approach_angles = 16;         ///< DASH's theta samples around the object
+  int grasp_policy_steps = 60;      ///< 1.5 s at 40 Hz
+  double lift_m = 0.12;             ///< straight up after the grasp
+  double carry_clearance_m = 0.03;  ///< the object's base this high over the target on arrival
+  double lower_speed_mps = 0.06;    ///< placing descent
+  double release_s = 0.4;           ///< the fingers open over this long
+  double settle_s = 2.0;            ///< the object must rest this long after the release
+  double finger_squeeze_rad = 0.1;  ///< DASH: transport targets = grasp targets + 0.1 sign(e)
+};
+
+/// Why a run ended.
+enum class TabletopStage { kReach, kGrasp, kLift, kTransport, kPlace, kRelease, kSettle, kDone };
+const char* TabletopStageName(TabletopStage s);
+
+/// The outcome of one run.
+struct TabletopResult {
+  bool success = false;
+  TabletopStage failed_stage = TabletopStage::kDone;  ///< kDone when nothing failed
+  std::string end_reason;  ///< "success", "plan failure: ...", "grasp miss: ...", ...
+  bool plan_failure = false;
+  Eigen::Vector3d final_pos = Eigen::Vector3d::Zero();  ///< the object's centre of mass
+  int sim_steps = 0;
+  double wall_s = 0;
+};
+
+/// Called after every physics step (recording, video); may be empty.
+using StepHook = std::function<void(const mjData* d)>;
+
+/// Runs the pipeline on `world` (its data is stepped), agent `ix.arm.agent`. The body's other
+/// servos keep their targets. Success is DASH's rule: the object's centre within 10 cm of the
+/// target in x and y, its centre of mass at least 5 cm above the target's z, plus ours: at rest
+/// (speed < 5 cm/s) `settle_s` after the release.
+TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const TabletopGoal& goal,
+                           const GraspPolicyFn& policy, const TabletopOptions& options = {},
+                           const StepHook& hook = {});
+
+}  // namespace simhuman::control::manip

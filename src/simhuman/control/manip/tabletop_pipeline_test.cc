@@ -1,0 +1,67 @@
+#include "simhuman/control/manip/tabletop_pipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "simhuman/control/manip/scripted_grasp.h"
+#include "simhuman/world/objects.h"
+#include "simhuman/world/scene.h"
+#include "simhuman/world/seating.h"
+#include "simhuman/world/tabletop.h"
+
+namespace simhuman::control::manip {
+namespace {
+
+struct Scene {
+  std::unique_ptr<world::SimWorld> world;
+  GraspIndex ix;
+  TabletopGoal goal;
+};
+
+// the tabletop layout with one box to move and a place target 20 cm to its left
+Scene BoxScene(double width, double mass) {
+  world::SceneSpec spec = world::TabletopBaseScene("pipeline");
+  world::ObjectSpec box;
+  box.id = "box002";
+  box.type = "box";
+  box.color = "red";
+  const Eigen::Vector3d base = world::TableToWorld(Eigen::Vector3d(0.0, 0.15, 0));
+  box.pos = base;
+  box.size = {{"depth", width}, {"width", width}, {"height", 0.15}};
+  box.mass_kg = mass;
+  box.friction = 1.0;
+  spec.objects.push_back(box);
+  auto catalog = world::BuildCatalog(spec);
+  EXPECT_TRUE(catalog.ok()) << catalog.status();
+  auto human = world::AgentFromHuman(spec.humans[0], 0, *catalog);
+  world::ModelOptions opt;
+  opt.timestep_s = 1.0 / 240;
+  Scene s;
+  s.world = std::move(*world::SimWorld::Create(*catalog, {*human}, opt));
+  s.ix = *MakeGraspIndex(*s.world, 0, true);
+  s.goal.object_body =
+      mj_name2id(s.world->model(), mjOBJ_BODY, world::ObjectBodyName("box002").c_str());
+  s.goal.shape = GraspShape::kBox;
+  s.goal.half_width_m = width / 2;
+  s.goal.height_m = 0.15;
+  s.goal.planned_pos = base;
+  s.goal.target = base + Eigen::Vector3d(0.0, 0.2, 0);
+  return s;
+}
+
+TEST(TabletopPipelineTest, EveryStageRunsAndReportsWhereItFailedIntegration) {
+  Scene s = BoxScene(0.06, 1.0);
+  TabletopResult r = RunTabletop(
+      *s.world, s.ix, s.goal, MakeScriptedGrasp(s.world->model(), s.world->data(), s.ix, s.goal));
+  std::printf("result: %s (stage %s) steps %d wall %.2f s, final %.3f %.3f %.3f\n",
+              r.end_reason.c_str(), TabletopStageName(r.failed_stage), r.sim_steps, r.wall_s,
+              r.final_pos.x(), r.final_pos.y(), r.final_pos.z());
+  EXPECT_GT(r.sim_steps, 100);
+  EXPECT_FALSE(r.end_reason.empty());
+  EXPECT_EQ(r.success, r.end_reason == "success");
+}
+
+}  // namespace
+}  // namespace simhuman::control::manip

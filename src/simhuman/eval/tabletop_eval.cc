@@ -1,0 +1,153 @@
+#include "simhuman/eval/tabletop_eval.h"
+
+#include <chrono>
+
+#include "simhuman/control/manip/scripted_grasp.h"
+#include "simhuman/control/manip/tabletop_pipeline.h"
+#include "simhuman/control/policy/grasp_policy.h"
+#include "simhuman/core/rng.h"
+#include "simhuman/world/objects.h"
+#include "simhuman/world/scene.h"
+#include "simhuman/world/seating.h"
+#include "simhuman/world/tabletop.h"
+
+namespace simhuman::eval {
+namespace {
+
+using control::manip::GraspShape;
+
+// the pipeline's goal for a generated scene's task
+core::StatusOr<control::manip::TabletopGoal> GoalOf(const world::TabletopScene& ts,
+                                                    const world::SimWorld& w) {
+  const world::ObjectSpec* obj = nullptr;
+  for (const world::ObjectSpec& o : ts.scene.objects) {
+    if (o.id == ts.task.object_id) obj = &o;
+  }
+  if (!obj) return absl::InternalError("tabletop task object missing: " + ts.task.object_id);
+  control::manip::TabletopGoal g;
+  g.object_body = mj_name2id(w.model(), mjOBJ_BODY, world::ObjectBodyName(obj->id).c_str());
+  auto size = [&](const char* key) {
+    auto it = obj->size.find(key);
+    return it == obj->size.end() ? world::DefaultSizes(obj->type).at(key) : it->second;
+  };
+  if (obj->type == "box") {
+    g.shape = GraspShape::kBox;
+    g.half_width_m = size("width") / 2;
+    g.height_m = size("height");
+  } else if (obj->type == "cylinder") {
+    g.shape = GraspShape::kCylinder;
+    g.half_width_m = size("radius");
+    g.height_m = size("height");
+  } else {
+    g.shape = GraspShape::kSphere;
+    g.half_width_m = size("radius");
+    g.height_m = 2 * g.half_width_m;
+  }
+  g.planned_pos = obj->pos;
+  g.target = ts.task.target_world;
+  if (!ts.task.target_id.empty()) {
+    g.support_body =
+        mj_name2id(w.model(), mjOBJ_BODY, world::ObjectBodyName(ts.task.target_id).c_str());
+  }
+  return g;
+}
+
+double RawStepsPerSecond(const mjModel* m, const mjData* from) {
+  mjData* d = mj_makeData(m);
+  mju_copy(d->qpos, from->qpos, m->nq);
+  mju_copy(d->ctrl, from->ctrl, m->nu);
+  const auto t0 = std::chrono::steady_clock::now();
+  constexpr int kSteps = 1000;
+  for (int k = 0; k < kSteps; ++k) mj_step(m, d);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  mj_deleteData(d);
+  return kSteps / s;
+}
+
+}  // namespace
+
+nlohmann::json TabletopEvalSummary::ToJson() const {
+  return {{"episodes", episodes},
+          {"successes", successes},
+          {"plan_failures", plan_failures},
+          {"success_rate", success_rate},
+          {"success_rate_excluding_plan_failures", success_rate_no_plan_fail},
+          {"failures_by_stage", failures_by_stage},
+          {"pipeline_steps_per_s", steps_per_s},
+          {"raw_mj_step_steps_per_s", raw_steps_per_s}};
+}
+
+nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
+  return {{"index", e.index},
+          {"seed", e.seed},
+          {"kind", e.kind},
+          {"object", e.object},
+          {"shape", e.shape},
+          {"success", e.success},
+          {"plan_failure", e.plan_failure},
+          {"failed_stage", e.failed_stage},
+          {"end_reason", e.end_reason},
+          {"sim_steps", e.sim_steps},
+          {"wall_s", e.wall_s}};
+}
+
+core::StatusOr<TabletopEvalSummary> RunTabletopEval(
+    const TabletopEvalOptions& o, const std::function<void(const TabletopEpisode&)>& on_episode) {
+  if (o.episodes < 1) return absl::InvalidArgumentError("--episodes must be >= 1");
+  std::optional<control::manip::GraspPolicyFn> policy;
+  if (o.grasp != "scripted") {
+    SH_ASSIGN_OR_RETURN(control::manip::GraspPolicyFn p, control::LoadGraspPolicy(o.grasp));
+    policy = p;
+  }
+  TabletopEvalSummary sum;
+  int64_t steps = 0;
+  double wall = 0, raw = 0;
+  for (int i = 0; i < o.episodes; ++i) {
+    const uint64_t seed = core::DeriveSeed(o.seed, 0x7ab1e, static_cast<uint64_t>(i));
+    std::string kind = o.kind;
+    if (kind == "any") kind = i % 2 == 0 ? "place" : "stack";
+    SH_ASSIGN_OR_RETURN(world::TabletopScene ts, world::GenerateTabletop(seed, kind));
+    SH_ASSIGN_OR_RETURN(core::SceneCatalog catalog, world::BuildCatalog(ts.scene));
+    SH_ASSIGN_OR_RETURN(world::AgentSpec human,
+                        world::AgentFromHuman(ts.scene.humans[0], 0, catalog));
+    world::ModelOptions opt;
+    opt.timestep_s = 1.0 / 240;
+    SH_ASSIGN_OR_RETURN(std::unique_ptr<world::SimWorld> w,
+                        world::SimWorld::Create(catalog, {human}, opt));
+    SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(*w, 0, true));
+    SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, GoalOf(ts, *w));
+    if (i == 0) raw = RawStepsPerSecond(w->model(), w->data());
+    const control::manip::GraspPolicyFn grasp =
+        policy ? *policy : control::manip::MakeScriptedGrasp(w->model(), w->data(), ix, goal);
+    const control::manip::TabletopResult r = control::manip::RunTabletop(*w, ix, goal, grasp);
+    TabletopEpisode e;
+    e.index = i;
+    e.seed = seed;
+    e.kind = kind;
+    e.object = ts.task.object_id;
+    e.shape = goal.shape == GraspShape::kBox        ? "box"
+              : goal.shape == GraspShape::kCylinder ? "cylinder"
+                                                    : "sphere";
+    e.success = r.success;
+    e.plan_failure = r.plan_failure;
+    e.failed_stage = r.success ? "" : control::manip::TabletopStageName(r.failed_stage);
+    e.end_reason = r.end_reason;
+    e.sim_steps = r.sim_steps;
+    e.wall_s = r.wall_s;
+    ++sum.episodes;
+    sum.successes += r.success;
+    sum.plan_failures += r.plan_failure;
+    if (!r.success) ++sum.failures_by_stage[e.failed_stage];
+    steps += r.sim_steps;
+    wall += r.wall_s;
+    if (on_episode) on_episode(e);
+  }
+  sum.success_rate = static_cast<double>(sum.successes) / sum.episodes;
+  const int no_plan = sum.episodes - sum.plan_failures;
+  sum.success_rate_no_plan_fail = no_plan > 0 ? static_cast<double>(sum.successes) / no_plan : 0;
+  sum.steps_per_s = wall > 0 ? steps / wall : 0;
+  sum.raw_steps_per_s = raw;
+  return sum;
+}
+
+}  // namespace simhuman::eval

@@ -1,0 +1,57 @@
+#pragma once
+/// The `tabletop`, `place` and `stack` suites: DASH's benchmark (Appendix B) on our seated
+/// human. Each episode is a generated scene (world/tabletop.h: DASH's objects, ranges and task
+/// rules) run through the pick-and-place pipeline (control/manip/tabletop_pipeline.h) with a
+/// grasp policy file or the scripted grasp. Success is DASH's rule plus ours (at rest 2 s after
+/// the release); reported over all trials and excluding motion-planning failures, with a
+/// per-stage failure table and the pipeline's simulation speed beside raw mj_step's.
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "simhuman/core/status.h"
+
+namespace simhuman::eval {
+
+struct TabletopEvalOptions {
+  std::string kind = "any";  ///< "place", "stack" or "any" (the tabletop suite: 50/50)
+  int episodes = 200;
+  uint64_t seed = 1;
+  /// A grasp policy file (simhuman train --task grasp), or "scripted" for the training-free
+  /// grasp.
+  std::string grasp = "scripted";
+};
+
+struct TabletopEpisode {
+  int index = 0;
+  uint64_t seed = 0;
+  std::string kind, object, shape;
+  bool success = false, plan_failure = false;
+  std::string failed_stage;  ///< "" on success
+  std::string end_reason;
+  int sim_steps = 0;
+  double wall_s = 0;
+};
+
+struct TabletopEvalSummary {
+  int episodes = 0, successes = 0, plan_failures = 0;
+  double success_rate = 0;               ///< over all trials
+  double success_rate_no_plan_fail = 0;  ///< excluding motion-planning failures (DASH reports it)
+  std::map<std::string, int> failures_by_stage;
+  double steps_per_s = 0;      ///< the whole pipeline (planning, policy, physics), no rendering
+  double raw_steps_per_s = 0;  ///< mj_step alone on the same model, same run
+  nlohmann::json ToJson() const;
+};
+
+/// Runs the suite. Errors: a bad kind or episode count (InvalidArgument), a grasp policy file
+/// that cannot be loaded (naming it). `on_episode` (optional) sees each episode as it ends.
+core::StatusOr<TabletopEvalSummary> RunTabletopEval(
+    const TabletopEvalOptions& options,
+    const std::function<void(const TabletopEpisode&)>& on_episode = {});
+
+nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e);
+
+}  // namespace simhuman::eval

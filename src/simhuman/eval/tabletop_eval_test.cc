@@ -1,0 +1,45 @@
+#include "simhuman/eval/tabletop_eval.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace simhuman::eval {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(TabletopEvalTest, EpisodesAndTheFailureTableAddUpIntegration) {
+  TabletopEvalOptions o;
+  o.episodes = 3;
+  o.seed = 2;
+  int seen = 0;
+  auto s = RunTabletopEval(o, [&](const TabletopEpisode& e) {
+    ++seen;
+    EXPECT_FALSE(e.end_reason.empty());
+    EXPECT_EQ(e.success, e.failed_stage.empty());
+    EXPECT_TRUE(e.kind == "place" || e.kind == "stack");
+    // a plan failure ends the run at the reach or the transport, before anything moves
+    if (e.plan_failure) EXPECT_THAT(e.end_reason, HasSubstr("plan failure"));
+  });
+  ASSERT_TRUE(s.ok()) << s.status();
+  EXPECT_EQ(seen, 3);
+  int failed = 0;
+  for (const auto& [stage, n] : s->failures_by_stage) failed += n;
+  EXPECT_EQ(failed + s->successes, s->episodes);
+  EXPECT_GT(s->raw_steps_per_s, 0);
+  EXPECT_EQ(s->ToJson()["episodes"], 3);
+}
+
+TEST(TabletopEvalTest, AnUnloadableGraspPolicyIsNamed) {
+  TabletopEvalOptions o;
+  o.episodes = 1;
+  o.grasp = "/nonexistent/grasp.pt";
+  auto s = RunTabletopEval(o);
+  ASSERT_FALSE(s.ok());
+  EXPECT_THAT(s.status().message(), HasSubstr("/nonexistent/grasp.pt"));
+  o.episodes = 0;
+  EXPECT_FALSE(RunTabletopEval(o).ok());
+}
+
+}  // namespace
+}  // namespace simhuman::eval
