@@ -19,7 +19,9 @@ TEST(TabletopEvalTest, EpisodesAndTheFailureTableAddUpIntegration) {
     EXPECT_EQ(e.success, e.failed_stage.empty());
     EXPECT_TRUE(e.kind == "place" || e.kind == "stack");
     // a plan failure ends the run at the reach or the transport, before anything moves
-    if (e.plan_failure) EXPECT_THAT(e.end_reason, HasSubstr("plan failure"));
+    if (e.plan_failure) {
+      EXPECT_THAT(e.end_reason, HasSubstr("plan failure"));
+    }
   });
   ASSERT_TRUE(s.ok()) << s.status();
   EXPECT_EQ(seen, 3);
