@@ -99,6 +99,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     SH_ASSIGN_OR_RETURN(control::manip::GraspPolicyFn p, control::LoadGraspPolicy(o.grasp));
     policy = p;
   }
+  const control::manip::TabletopOptions pipeline;  // named: GCC 12 misreads a default temporary
   TabletopEvalSummary sum;
   int64_t steps = 0;
   double wall = 0, raw = 0;
@@ -119,7 +120,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     if (i == 0) raw = RawStepsPerSecond(w->model(), w->data());
     const control::manip::GraspPolicyFn grasp =
         policy ? *policy : control::manip::MakeScriptedGrasp(w->model(), w->data(), ix, goal);
-    const control::manip::TabletopResult r = control::manip::RunTabletop(*w, ix, goal, grasp);
+    const control::manip::TabletopResult r = control::manip::RunTabletop(*w, ix, goal, grasp, pipeline);
     TabletopEpisode e;
     e.index = i;
     e.seed = seed;

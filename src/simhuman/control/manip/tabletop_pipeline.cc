@@ -167,6 +167,21 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   }
   core::StatusOr<ArmMotion> motion =
       PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);
+  // too far upright: lean the trunk forward and plan again
+  const std::string spine = world::AgentPrefix(ix_.arm.agent) + "abdomen_y";
+  const int lean_act = mj_name2id(m_, mjOBJ_ACTUATOR, spine.c_str());
+  for (size_t k = 0; k < o_.lean_deg.size() && lean_act >= 0 && !motion.ok() &&
+                     absl::IsFailedPrecondition(motion.status());
+       ++k) {
+    d_->ctrl[lean_act] = o_.lean_deg[k] * M_PI / 180;
+    const Eigen::VectorXd arm_now = ix_.arm.Get(d_);
+    for (int j = 0; j < 96; ++j) {
+      if (!Step([&] { tr.Hold(arm_now, d_); })) {
+        return Fail(TabletopStage::kReach, "unstable simulation");
+      }
+    }
+    motion = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);
+  }
   if (!motion.ok()) {
     return Fail(TabletopStage::kReach, std::string(motion.status().message()), true);
   }

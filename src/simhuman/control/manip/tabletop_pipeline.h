@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "simhuman/control/manip/grasp_task.h"
 #include "simhuman/control/manip/reach.h"
@@ -48,6 +49,10 @@ struct TabletopOptions {
   double release_s = 0.4;           ///< the fingers open over this long
   double settle_s = 2.0;            ///< the object must rest this long after the release
   double finger_squeeze_rad = 0.1;  ///< DASH: transport targets = grasp targets + 0.1 sign(e)
+  /// When no arm pose reaches the object upright, the trunk leans forward (the pelvis stays
+  /// held) by these angles in turn, as a seated person does for a far object (DASH holds its
+  /// trunk and names that as a cause of its planning failures).
+  std::vector<double> lean_deg = {12, 24, 34, 44};
 };
 
 /// Why a run ended.
