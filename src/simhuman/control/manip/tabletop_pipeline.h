@@ -78,7 +78,7 @@ using StepHook = std::function<void(const mjData* d)>;
 /// target in x and y, its centre of mass at least 5 cm above the target's z, plus ours: at rest
 /// (speed < 5 cm/s) `settle_s` after the release.
 TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const TabletopGoal& goal,
-                           const GraspPolicyFn& policy, const TabletopOptions& options = {},
+                           const GraspPolicyFn& policy, const TabletopOptions& options,
                            const StepHook& hook = {});
 
 }  // namespace simhuman::control::manip
