@@ -110,6 +110,9 @@ CLI::App* AddRunCommand(CLI::App& app, RunFlags* run, CLI::Option** preset) {
   run_cmd->add_flag("--no-walk", run->no_walk, "Do get-close steps with the MPC only");
   run_cmd->add_option("--carry-policy", run->carry_policy,
                       "Carrying policy for carry steps (default assets/policies/carry.pt)");
+  run_cmd->add_option("--grasp-policy", run->grasp_policy,
+                      "Tabletop plans: grasp policy file or 'scripted' (default "
+                      "assets/policies/grasp.pt if present, else scripted)");
   run_cmd->add_option("--start", run->start,
                       "Where the first human starts, standing: X,Y[,YAW_DEG] (m, degrees; "
                       "overrides the scene)");

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -236,6 +237,30 @@ TEST(CliTest, RunObjectTooFarToReach) {
   ExpectBadInput(
       r, {"object 'bed000'", "from where human 0 starts", "add a get-close step", "before step 1"});
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// DASH's command at the table runs through the pick-and-place pipeline and ends with a
+// pipeline end reason; a plan the pipeline does not take is a plan failure, not a hang
+TEST(CliTest, RunTabletopCommandThroughThePipelineIntegration) {
+  std::string out = OutDir("tabletop");
+  CliRun r = Cli({"run", "--scene", "tabletop_dash", "--command",
+                  "put the red box on the green box", "--grasp-policy", "scripted", "--out", out});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("tabletop pipeline, grasping with scripted"), std::string::npos) << r.out;
+  std::ifstream f(out + "/result.json");
+  nlohmann::json j = nlohmann::json::parse(f);
+  EXPECT_EQ(j["grasp_policy"], "scripted");
+  const std::string end = j["end_reason"];
+  EXPECT_TRUE(end == "completed" || end.find("grasp miss") == 0 || end.find("plan failure") == 0 ||
+              end.find("drop") == 0 || end.find("topple") == 0 || end.find("missed") == 0)
+      << end;
+  // a bad grasp policy file is named before anything runs
+  CliRun bad =
+      Cli({"run", "--scene", "tabletop_dash", "--command", "put the red box on the green box",
+           "--grasp-policy", "/nope/grasp.pt", "--out", OutDir("tabletop_bad")});
+  EXPECT_NE(bad.code, kExitOk);
+  EXPECT_NE(bad.err.find("/nope/grasp.pt"), std::string::npos) << bad.err;
+  std::filesystem::remove_all(out);
 }
 
 TEST(CliTest, EvalBadFlags) {

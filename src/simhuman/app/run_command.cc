@@ -11,6 +11,7 @@
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/reachability.h"
 #include "simhuman/eval/replay.h"
+#include "simhuman/eval/tabletop_eval.h"
 #include "simhuman/plan/validate.h"
 #include "simhuman/web/replay_html.h"
 #include "simhuman/world/scene.h"
@@ -175,8 +176,17 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   if (!walk_policy.empty()) out << "walking with the policy " << walk_policy << std::endl;
   const std::string carry_policy = eval::DefaultCarryPolicy(flags.carry_policy);
   if (!carry_policy.empty()) out << "carrying with the policy " << carry_policy << std::endl;
-  core::StatusOr<control::EpisodeResult> run_result = eval::RunWithWalkPolicy(
-      **sim, *chain, *controllers, walk_policy, options, &trajectory, carry_policy);
+  core::StatusOr<control::EpisodeResult> run_result = absl::UnknownError("not run");
+  std::string grasp_policy;
+  if (eval::IsTabletopRun(*chain, **sim)) {
+    // seated at the table with a dexterous hand: DASH's pipeline instead of the MPC
+    grasp_policy = eval::DefaultGraspPolicy(flags.grasp_policy);
+    out << "tabletop pipeline, grasping with " << grasp_policy << std::endl;
+    run_result = eval::RunTabletopPlan(**sim, *chain, grasp_policy, &trajectory);
+  } else {
+    run_result = eval::RunWithWalkPolicy(**sim, *chain, *controllers, walk_policy, options,
+                                         &trajectory, carry_policy);
+  }
   if (!run_result.ok()) return ReportError(err, kCommand, run_result.status());
   const control::EpisodeResult& result = *run_result;
 
@@ -192,6 +202,7 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   j["settle_s"] = flags.settle_s;
   j["walk_policy"] = walk_policy;
   j["carry_policy"] = carry_policy;
+  if (!grasp_policy.empty()) j["grasp_policy"] = grasp_policy;
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) j[key] = value;
   absl::Status st = eval::WriteJsonFile(Join(out_dir, "scene.json"), world::SceneToJson(*scene));

@@ -30,6 +30,9 @@ struct RunFlags {
   bool no_walk = false;  ///< never walk with a policy (MPC only)
   /// Carrying policy for carry steps; empty: assets/policies/carry.pt when it exists.
   std::string carry_policy;
+  /// Tabletop plans (a seated human with a dexterous hand): grasp policy file or "scripted";
+  /// empty: assets/policies/grasp.pt when it exists, else "scripted".
+  std::string grasp_policy;
   /// "X,Y" or "X,Y,YAW_DEG": where the first human starts, standing (overrides the scene's).
   std::string start;
 };

@@ -12,7 +12,6 @@ namespace simhuman::app {
 namespace {
 
 const char kCommand[] = "eval";
-const char kShippedGrasp[] = "assets/policies/grasp.pt";
 
 std::string Line(const eval::TabletopEpisode& e) {
   char buf[240];
@@ -29,11 +28,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   o.kind = flags.suite == "tabletop" ? "any" : flags.suite;
   o.episodes = flags.episodes;
   o.seed = flags.seed;
-  o.grasp = flags.grasp_policy;
-  if (o.grasp.empty()) {
-    const std::string shipped = std::string(SIMHUMAN_SOURCE_DIR) + "/" + kShippedGrasp;
-    o.grasp = std::filesystem::exists(shipped) ? shipped : "scripted";
-  }
+  o.grasp = eval::DefaultGraspPolicy(flags.grasp_policy);
   const std::string dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
   absl::Status made = MakeOutputDir(dir);
   if (!made.ok()) return ReportError(err, kCommand, made);

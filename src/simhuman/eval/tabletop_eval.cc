@@ -1,6 +1,7 @@
 #include "simhuman/eval/tabletop_eval.h"
 
 #include <chrono>
+#include <filesystem>
 
 #include "simhuman/control/manip/scripted_grasp.h"
 #include "simhuman/control/manip/tabletop_pipeline.h"
@@ -120,7 +121,8 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     if (i == 0) raw = RawStepsPerSecond(w->model(), w->data());
     const control::manip::GraspPolicyFn grasp =
         policy ? *policy : control::manip::MakeScriptedGrasp(w->model(), w->data(), ix, goal);
-    const control::manip::TabletopResult r = control::manip::RunTabletop(*w, ix, goal, grasp, pipeline);
+    const control::manip::TabletopResult r =
+        control::manip::RunTabletop(*w, ix, goal, grasp, pipeline);
     TabletopEpisode e;
     e.index = i;
     e.seed = seed;
@@ -149,6 +151,120 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   sum.steps_per_s = wall > 0 ? steps / wall : 0;
   sum.raw_steps_per_s = raw;
   return sum;
+}
+
+namespace {
+
+// the object's grasp dimensions from its catalog solids
+void SizeFromCatalog(const core::CatalogObject& o, control::manip::TabletopGoal* g) {
+  const auto [lo, hi] = o.LocalBounds();
+  const Eigen::Vector3d ext = hi - lo;
+  g->height_m = ext.z();
+  g->half_width_m = 0.5 * std::min(ext.x(), ext.y());
+  g->shape = o.type == "box"        ? GraspShape::kBox
+             : o.type == "cylinder" ? GraspShape::kCylinder
+                                    : GraspShape::kSphere;
+}
+
+}  // namespace
+
+core::StatusOr<control::manip::TabletopGoal> TabletopGoalFromPlan(const plan::ContactChain& chain,
+                                                                  const world::SimWorld& w) {
+  const std::string takes =
+      "; the tabletop pipeline takes a grasp step with the right hand, then a step putting "
+      "that object on top of another (e.g. \"put the red box on the blue cylinder\")";
+  if (chain.steps.size() != 2 || chain.steps[0].pairs.size() != 1) {
+    return absl::InvalidArgumentError("plan failure: a " + std::to_string(chain.steps.size()) +
+                                      "-step plan" + takes);
+  }
+  const plan::ContactPair& grasp = chain.steps[0].pairs[0];
+  if (!grasp.joint || *grasp.joint != core::BodyJoint::kRightHand) {
+    return absl::InvalidArgumentError(
+        "plan failure: step 1 does not hold an object in the right "
+        "hand (the left hand's pipeline is not built yet)" +
+        takes);
+  }
+  const plan::ContactPair* on = nullptr;
+  for (const plan::ContactPair& p : chain.steps[1].pairs) {
+    if (p.subject_object && *p.subject_object == grasp.object) on = &p;
+  }
+  if (!on || on->direction != plan::Direction::kUp) {
+    return absl::InvalidArgumentError("plan failure: step 2 does not put " + grasp.object +
+                                      " on top of an object" + takes);
+  }
+  const core::SceneCatalog& cat = w.catalog();
+  const core::CatalogObject* a = cat.Find(grasp.object);
+  const core::CatalogObject* ref = cat.Find(on->object);
+  if (!a || !ref) return absl::InvalidArgumentError("plan failure: unknown object in the plan");
+  control::manip::TabletopGoal g;
+  g.object_body = mj_name2id(w.model(), mjOBJ_BODY, world::ObjectBodyName(a->id).c_str());
+  SizeFromCatalog(*a, &g);
+  g.planned_pos = a->pose.pos;
+  const auto [lo, hi] = world::WorldBounds(*ref);
+  g.target = Eigen::Vector3d(ref->pose.pos.x(), ref->pose.pos.y(), hi.z());
+  g.support_body = mj_name2id(w.model(), mjOBJ_BODY, world::ObjectBodyName(ref->id).c_str());
+  return g;
+}
+
+std::string DefaultGraspPolicy(const std::string& flag) {
+  if (!flag.empty()) return flag;
+  const std::string shipped = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/grasp.pt";
+  return std::filesystem::exists(shipped) ? shipped : "scripted";
+}
+
+bool IsTabletopRun(const plan::ContactChain& chain, const world::SimWorld& w) {
+  if (w.num_agents() < 1 || w.model()->neq < 1 || chain.steps.empty()) return false;
+  const int forearm = mj_name2id(w.model(), mjOBJ_JOINT, "right_forearm_rot");
+  const plan::ContactStep& first = chain.steps.front();
+  return forearm >= 0 && first.pairs.size() == 1 && first.pairs[0].joint &&
+         *first.pairs[0].joint == core::BodyJoint::kRightHand &&
+         w.catalog().Find(first.pairs[0].object) &&
+         w.catalog().Find(first.pairs[0].object)->movable;
+}
+
+core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
+                                                       const plan::ContactChain& chain,
+                                                       const std::string& grasp_policy,
+                                                       control::Trajectory* trajectory) {
+  SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopGoalFromPlan(chain, w));
+  SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(w, 0, true));
+  control::manip::GraspPolicyFn grasp;
+  if (grasp_policy == "scripted") {
+    grasp = control::manip::MakeScriptedGrasp(w.model(), w.data(), ix, goal);
+  } else {
+    SH_ASSIGN_OR_RETURN(grasp, control::LoadGraspPolicy(grasp_policy));
+  }
+  const mjModel* m = w.model();
+  if (trajectory) {
+    *trajectory = control::Trajectory();
+    trajectory->nq = m->nq;
+  }
+  double next_frame = w.data()->time;
+  const control::manip::StepHook hook = [&](const mjData* d) {
+    if (!trajectory || d->time + 1e-9 < next_frame) return;
+    next_frame += 1.0 / trajectory->fps;
+    trajectory->time_s.push_back(d->time);
+    trajectory->qpos.emplace_back(d->qpos, d->qpos + m->nq);
+    // step 1 until the object is off the table with the hand, step 2 after
+    const double lifted = d->xipos[3 * goal.object_body + 2] - goal.planned_pos.z();
+    trajectory->step_index.push_back(lifted > 0.5 * goal.height_m + 0.05 ? 1 : 0);
+  };
+  const control::manip::TabletopOptions options;
+  const double t0 = w.data()->time;
+  const control::manip::TabletopResult r =
+      control::manip::RunTabletop(w, ix, goal, grasp, options, hook);
+  control::EpisodeResult out;
+  out.success = r.success;
+  out.steps_total = static_cast<int>(chain.steps.size());
+  const bool held = r.success || r.failed_stage == control::manip::TabletopStage::kTransport ||
+                    r.failed_stage == control::manip::TabletopStage::kPlace ||
+                    r.failed_stage == control::manip::TabletopStage::kRelease ||
+                    r.failed_stage == control::manip::TabletopStage::kSettle;
+  out.steps_completed = r.success ? out.steps_total : held ? 1 : 0;
+  out.end_reason = r.success ? "completed" : r.end_reason;
+  out.sim_time_s = w.data()->time - t0;
+  out.wall_time_s = r.wall_s;
+  return out;
 }
 
 }  // namespace simhuman::eval

@@ -12,7 +12,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "simhuman/control/manip/tabletop_pipeline.h"
+#include "simhuman/control/runner.h"
 #include "simhuman/core/status.h"
+#include "simhuman/plan/contact_chain.h"
+#include "simhuman/world/sim_world.h"
 
 namespace simhuman::eval {
 
@@ -53,5 +57,30 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     const std::function<void(const TabletopEpisode&)>& on_episode = {});
 
 nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e);
+
+/// The grasp policy to use: `flag` when given, else assets/policies/grasp.pt when the checkout
+/// has it, else "scripted".
+std::string DefaultGraspPolicy(const std::string& flag);
+
+/// The pipeline's goal for a tabletop plan (the offline planner's form of "put the red box on
+/// the blue cylinder": a step with the right hand on an object, then a step with that object on
+/// top of another) in `world`. InvalidArgument naming the step and what the pipeline takes for
+/// any other plan: the left hand, relations other than "on top of", more or fewer steps.
+core::StatusOr<control::manip::TabletopGoal> TabletopGoalFromPlan(const plan::ContactChain& chain,
+                                                                  const world::SimWorld& world);
+
+/// Whether agent 0 of `world` sits at the table with a dexterous right hand and `chain` is a
+/// tabletop plan (a first step that grasps an object with the right hand): what `simhuman run`
+/// hands to the pipeline instead of the MPC.
+bool IsTabletopRun(const plan::ContactChain& chain, const world::SimWorld& world);
+
+/// Runs a tabletop plan through the pipeline (`grasp_policy`: a file or "scripted"), recording
+/// `trajectory` at 30 frames/s (step 0 until the grasp holds, then step 1). The result reads as
+/// an episode's: success, steps completed, the pipeline's end reason. Errors: the plan
+/// (TabletopGoalFromPlan), an unloadable policy.
+core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& world,
+                                                       const plan::ContactChain& chain,
+                                                       const std::string& grasp_policy,
+                                                       control::Trajectory* trajectory);
 
 }  // namespace simhuman::eval

@@ -41,6 +41,9 @@ inline constexpr int kMaxClauses = 40;
 /// An object farther than this (metres, horizontally from the human's planned position to the
 /// object's footprint) gets a get-close step before the human interacts with it.
 inline constexpr double kNearEnoughM = 1.0;
+/// A seated human handles table objects whose footprint lies within this distance of its
+/// position (the pelvis) without standing up: the arm and a forward lean reach about this far.
+inline constexpr double kSeatedReachM = 0.8;
 
 /// The rule-based planner. Default-constructible and stateless between calls; Plan() is
 /// thread-safe (it keeps no state in the instance).

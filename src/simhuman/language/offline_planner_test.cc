@@ -9,6 +9,7 @@
 
 #include "simhuman/language/offline/rewrite.h"
 #include "simhuman/world/scene.h"
+#include "simhuman/world/tabletop.h"
 
 namespace simhuman::language {
 namespace {
@@ -455,6 +456,35 @@ TEST(OfflinePlannerTest, StartingSeatedStandsUpFirst) {
   core::StatusOr<PlanResult> r = OfflinePlanner().Plan("stand up", f.context);
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_EQ(Compact(r->chain), "chair000|none|none|none|front");
+}
+
+}  // namespace
+}  // namespace simhuman::language
+
+namespace simhuman::language {
+namespace {
+
+// DASH's set-up: seated at a table, the stack command is two steps (grasp, then the object on
+// the other), with no stand-up or get-close: both objects are within a seated arm's reach
+TEST(OfflinePlannerTest, SeatedAtTheTableTheHandWorksFromTheSeat) {
+  int checked = 0;
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    auto ts = world::GenerateTabletop(seed, "stack");
+    ASSERT_TRUE(ts.ok()) << ts.status();
+    core::SceneCatalog catalog = *world::BuildCatalog(ts->scene);
+    PlanContext context;
+    context.scene = &catalog;
+    const world::HumanSpec& h = ts->scene.humans[0];
+    context.agents.push_back({h.pos_xy.x(), h.pos_xy.y(), h.yaw_rad, h.posture});
+    auto r = OfflinePlanner().Plan(ts->task.command, context);
+    ASSERT_TRUE(r.ok()) << ts->task.command << ": " << r.status();
+    ASSERT_EQ(r->chain.steps.size(), 2u) << ts->task.command;
+    EXPECT_EQ(r->chain.steps[0].pairs[0].object, ts->task.object_id);
+    EXPECT_EQ(*r->chain.steps[1].pairs[1].subject_object, ts->task.object_id);
+    EXPECT_EQ(r->chain.steps[1].pairs[1].object, ts->task.target_id);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 12);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "simhuman/core/json_reader.h"
 #include "simhuman/world/carry.h"
 #include "simhuman/world/embodiment.h"
+#include "simhuman/world/tabletop.h"
 
 namespace simhuman::world {
 namespace {
@@ -548,6 +549,15 @@ SceneSpec CarryTeamDemo() {
   return s;
 }
 
+// DASH's benchmark set-up, one generated stack scene: seated at a table, a dexterous right
+// hand, "put the <colour> <shape> on the <colour> <shape>" (world/tabletop.h)
+SceneSpec TabletopDash() {
+  core::StatusOr<TabletopScene> ts = GenerateTabletop(3, "stack");
+  SceneSpec s = ts.ok() ? ts->scene : TabletopBaseScene("tabletop_dash");
+  s.name = "tabletop_dash";
+  return s;
+}
+
 SceneSpec Empty() {
   SceneSpec s;
   s.name = "empty";
@@ -557,10 +567,15 @@ SceneSpec Empty() {
 
 const std::vector<std::pair<std::string, SceneSpec (*)()>>& Builtins() {
   static const std::vector<std::pair<std::string, SceneSpec (*)()>> kBuiltins = {
-      {"living_room", LivingRoom}, {"bedroom", Bedroom},
-      {"office", Office},          {"tabletop_demo", TabletopDemo},
-      {"sit_demo", SitDemo},       {"empty", Empty},
-      {"carry_demo", CarryDemo},   {"carry_team_demo", CarryTeamDemo}};
+      {"living_room", LivingRoom},
+      {"bedroom", Bedroom},
+      {"office", Office},
+      {"tabletop_demo", TabletopDemo},
+      {"sit_demo", SitDemo},
+      {"empty", Empty},
+      {"carry_demo", CarryDemo},
+      {"carry_team_demo", CarryTeamDemo},
+      {"tabletop_dash", TabletopDash}};
   return kBuiltins;
 }
 

@@ -52,7 +52,8 @@ core::StatusOr<SceneSpec> ParseSceneJson(const nlohmann::json& json, std::string
 /// readable file is NotFound, listing the built-in names.
 core::StatusOr<SceneSpec> LoadScene(const std::string& name_or_path);
 
-/// living_room, bedroom, office, tabletop_demo, sit_demo, empty, carry_demo, carry_team_demo.
+/// living_room, bedroom, office, tabletop_demo, sit_demo, empty, carry_demo, carry_team_demo,
+/// tabletop_dash.
 std::vector<std::string> BuiltinSceneNames();
 
 /// The built-in scene `name`, or NotFound listing the names.

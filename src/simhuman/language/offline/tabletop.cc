@@ -4,6 +4,7 @@
 
 #include "simhuman/language/offline/objects.h"
 #include "simhuman/language/offline/session.h"
+#include "simhuman/language/offline_planner.h"
 #include "simhuman/plan/metrics.h"
 
 namespace simhuman::language::offline {
@@ -93,15 +94,22 @@ absl::Status Session::Tabletop(const Tokens& t, size_t b, const std::string& c) 
   }
   const std::string subject_part = BodyPart(*a);
   focus_ = a;
-  EnsureFree(nullptr);
-  EnsureNear(*a);
+  // seated at a table with both objects within a seated arm's reach (DASH's set-up): the hand
+  // works from the seat; otherwise stand up and walk over first
+  const bool seated_reach = posture_ == Posture::kSit &&
+                            FootprintDistance(*a, pos_) <= kSeatedReachM &&
+                            FootprintDistance(*ref, pos_) <= kSeatedReachM;
+  if (!seated_reach) {
+    EnsureFree(nullptr);
+    EnsureNear(*a);
+  }
   const BodyJoint hand_joint = SideJoint(hand, BodyJoint::kLeftHand, BodyJoint::kRightHand);
   ContactPair grasp = Pair(*a, subject_part, hand_joint, ContactType::kContact, Direction::kNone);
   StepDraft g;
   g.step.pairs.push_back(grasp);
   g.text = "grasp " + Describe(*a) + " with the " + hand + " hand";
   Push(std::move(g));
-  EnsureNear(*ref);
+  if (!seated_reach) EnsureNear(*ref);
   StepDraft goal;
   goal.step.pairs.push_back(grasp);
   ContactPair on;
