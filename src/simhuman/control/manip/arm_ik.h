@@ -83,7 +83,7 @@ int ArmContacts(const mjModel* m, mjData* scratch, const ArmChain& arm, const Ei
 /// at the base of the fingers and they wrap around it; `yaw_rad` turns the approach about the
 /// vertical (0: the palm approaches from the right-hand side, -y, with the fingers pointing +x;
 /// mirrored for the left hand).
-PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double yaw_rad,
-                       bool right, double behind_m = 0.035);
+PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double yaw_rad, bool right,
+                       double behind_m = 0.035);
 
 }  // namespace simhuman::control::manip

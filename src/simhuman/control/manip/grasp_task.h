@@ -29,8 +29,8 @@ namespace simhuman::control::manip {
 inline constexpr int kGraspDofs = ArmChain::kDofs + world::kHandFingerDofs;  // 29
 inline constexpr int kGraspActDim = kGraspDofs;
 inline constexpr int kGraspTouchParts = 17;
-inline constexpr int kGraspObsDim = kGraspDofs + ArmChain::kDofs + kGraspDofs +
-                                    kGraspTouchParts + 3 + 3;  // 88
+inline constexpr int kGraspObsDim =
+    kGraspDofs + ArmChain::kDofs + kGraspDofs + kGraspTouchParts + 3 + 3;  // 88
 inline constexpr double kArmStepRad = 0.04;     ///< largest arm target change per policy step
 inline constexpr double kFingerStepRad = 0.12;  ///< largest finger target change per step
 
@@ -42,9 +42,9 @@ struct GraspIndex {
   ArmChain arm;
   std::array<int, kGraspDofs> qpos{}, actuator{};
   std::array<double, kGraspDofs> lo{}, hi{};
-  std::vector<int> touch_of_geom;           ///< per model geom: touch part index or -1
-  std::array<int, 5> tip_site{};            ///< thumb, index, middle, ring, little tips
-  int shoulder_site = -1;                   ///< the shoulder body point of that side
+  std::vector<int> touch_of_geom;  ///< per model geom: touch part index or -1
+  std::array<int, 5> tip_site{};   ///< thumb, index, middle, ring, little tips
+  int shoulder_site = -1;          ///< the shoulder body point of that side
 };
 
 /// The index of agent `agent`'s right (or left) dexterous arm; errors as MakeArmChain.
@@ -52,7 +52,7 @@ core::StatusOr<GraspIndex> MakeGraspIndex(const world::SimWorld& world, int agen
 
 /// What the grasp stage remembers between policy steps.
 struct GraspState {
-  std::array<double, kGraspDofs> target{};  ///< current servo targets (rad)
+  std::array<double, kGraspDofs> target{};             ///< current servo targets (rad)
   Eigen::Vector3d task_pos = Eigen::Vector3d::Zero();  ///< where the object was planned to be
   GraspShape shape = GraspShape::kBox;
   int object_body = -1;
@@ -71,8 +71,8 @@ void GraspTouch(const mjModel* m, const mjData* d, const GraspIndex& ix, int obj
                 float* out);
 
 /// Writes the observation (kGraspObsDim floats).
-void GraspObservation(const mjModel* m, const mjData* d, const GraspIndex& ix,
-                      const GraspState& s, float* obs);
+void GraspObservation(const mjModel* m, const mjData* d, const GraspIndex& ix, const GraspState& s,
+                      float* obs);
 
 /// Moves the targets by `action` (clipped to [-1, 1], scaled, kept within the ranges).
 void ApplyGraspAction(const GraspIndex& ix, const float* action, GraspState* s);
