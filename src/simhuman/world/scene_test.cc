@@ -267,7 +267,7 @@ TEST(SceneTest, ScenePlanUnwrappedAndMultiPlan) {
 }
 
 TEST(SceneTest, BuiltinScenesLoadAndDoNotOverlap) {
-  ASSERT_EQ(BuiltinSceneNames().size(), 8u);
+  ASSERT_EQ(BuiltinSceneNames().size(), 9u);
   for (const std::string& name : BuiltinSceneNames()) {
     SCOPED_TRACE(name);
     core::StatusOr<SceneSpec> s = LoadScene(name);
