@@ -120,7 +120,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, GoalOf(ts, *w));
     if (i == 0) raw = RawStepsPerSecond(w->model(), w->data());
     const control::manip::GraspPolicyFn grasp =
-        policy ? *policy : control::manip::MakeScriptedGrasp(w->model(), w->data(), ix, goal);
+        policy ? *policy : control::manip::MakeScriptedGrasp(w->model(), w->data(), ix, goal, pipeline);
     const control::manip::TabletopResult r =
         control::manip::RunTabletop(*w, ix, goal, grasp, pipeline);
     TabletopEpisode e;
@@ -228,9 +228,10 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
                                                        control::Trajectory* trajectory) {
   SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopGoalFromPlan(chain, w));
   SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(w, 0, true));
+  const control::manip::TabletopOptions options;
   control::manip::GraspPolicyFn grasp;
   if (grasp_policy == "scripted") {
-    grasp = control::manip::MakeScriptedGrasp(w.model(), w.data(), ix, goal);
+    grasp = control::manip::MakeScriptedGrasp(w.model(), w.data(), ix, goal, options);
   } else {
     SH_ASSIGN_OR_RETURN(grasp, control::LoadGraspPolicy(grasp_policy));
   }
@@ -249,7 +250,6 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
     const double lifted = d->xipos[3 * goal.object_body + 2] - goal.planned_pos.z();
     trajectory->step_index.push_back(lifted > 0.5 * goal.height_m + 0.05 ? 1 : 0);
   };
-  const control::manip::TabletopOptions options;
   const double t0 = w.data()->time;
   const control::manip::TabletopResult r =
       control::manip::RunTabletop(w, ix, goal, grasp, options, hook);

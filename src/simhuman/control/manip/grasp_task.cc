@@ -49,9 +49,14 @@ core::StatusOr<GraspIndex> MakeGraspIndex(const world::SimWorld& world, int agen
 
 void SetOpenHand(const GraspIndex& ix, mjData* d) {
   for (int k = ArmChain::kDofs; k < kGraspDofs; ++k) d->qpos[ix.qpos[k]] = 0;
-  // the thumb's CMC flexion and abduction (world/hand.h order: after the palm arch and the four
-  // fingers' 16) at their extension limits
-  for (int k : {ArmChain::kDofs + 17, ArmChain::kDofs + 18}) d->qpos[ix.qpos[k]] = ix.lo[k];
+  // the thumb (world/hand.h order: after the palm arch and the four fingers' 16) opened into a
+  // C across from the fingers: out of the palm's way, its pad facing the object's near side
+  // (CMC flexion, CMC abduction, MCP flexion, MCP abduction, IP; degrees)
+  constexpr double thumb_deg[5] = {40, -20, 40, 0, 40};
+  for (int k = 0; k < 5; ++k) {
+    const int i = ArmChain::kDofs + 17 + k;
+    d->qpos[ix.qpos[i]] = std::clamp(thumb_deg[k] * M_PI / 180, ix.lo[i], ix.hi[i]);
+  }
 }
 
 void HoldCurrentPose(const mjData* d, const GraspIndex& ix, GraspState* s) {

@@ -37,7 +37,9 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
   }
   const auto t0 = std::chrono::steady_clock::now();
   mju_copy(s->qpos, d->qpos, m->nq);
-  const Eigen::VectorXd start = arm.Get(d);
+  // a joint pressed against its (soft) limit may sit a hair beyond it: plan from the limit
+  Eigen::VectorXd start = arm.Get(d);
+  for (int i = 0; i < ArmChain::kDofs; ++i) start[i] = std::clamp(start[i], arm.lo[i], arm.hi[i]);
   // the wrist's rest is straight (forearm, flexion, deviation at 0); the shoulder and elbow
   // keep where they are
   Eigen::VectorXd rest = start;

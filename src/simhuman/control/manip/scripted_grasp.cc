@@ -5,50 +5,91 @@
 
 namespace simhuman::control::manip {
 
+namespace {
+
+// world/hand.h order of the 22 hand joints after the arm's 7: the palm arch, four fingers of
+// (abduction, MCP, PIP, DIP), then the thumb's CMC flexion, CMC abduction, MCP flexion, MCP
+// abduction and IP
+constexpr int kThumbFirst = 17;
+
+// the palm's outward normal, level (the right palm faces its frame's +y, the left its -y)
+Eigen::Vector3d PalmNormal(const mjData* d, const GraspIndex& ix) {
+  Eigen::Vector3d n(d->xmat[9 * ix.arm.hand_body + 1], d->xmat[9 * ix.arm.hand_body + 4],
+                    d->xmat[9 * ix.arm.hand_body + 7]);
+  if (!ix.arm.right) n = -n;
+  n.z() = 0;
+  return n.norm() > 1e-6 ? n.normalized() : n;
+}
+
+}  // namespace
+
 GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIndex& ix,
-                                const TabletopGoal& goal) {
+                                const TabletopGoal& goal, const TabletopOptions& pipeline,
+                                const ScriptedGraspOptions& o) {
+  const double grip_z = goal.planned_pos.z() + GripHeightM(goal, pipeline);
   struct State {
     int step = 0;
     int closing_from = -1;  // the step the palm touched (or the approach ran out)
+    bool have_goal = false;
+    Eigen::Vector3d palm_goal;
     std::shared_ptr<mjData> scratch;
   };
   auto st = std::make_shared<State>();
   st->scratch.reset(mj_makeData(m), mj_deleteData);
-  return [m, d, &ix, goal, st](const float* obs, float* act) {
+  return [m, d, &ix, goal, o, st, grip_z](const float* obs, float* act) {
     std::fill(act, act + kGraspActDim, 0.0f);
     float touch[kGraspTouchParts];
     GraspTouch(m, d, ix, goal.object_body, touch);
     const bool palm = touch[0] > 0 || touch[1] > 0;
-    if (st->closing_from < 0 && (palm || st->step >= 24)) st->closing_from = st->step;
-    if (st->closing_from < 0) {
-      // the palm toward the object's axis, level, until it touches
-      const Eigen::Vector3d c(d->xipos + 3 * goal.object_body);
-      const Eigen::Vector3d p(d->site_xpos + 3 * ix.arm.palm_site);
-      Eigen::Vector3d to = c - p;
-      to.z() = 0;
-      PalmPose pose;
-      pose.pos = p + to.normalized() *
-                         std::min(0.01, std::max(0.0, to.norm() - goal.half_width_m + 0.005));
-      pose.rot = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
-          d->xmat + 9 * ix.arm.hand_body);
-      mju_copy(st->scratch->qpos, d->qpos, m->nq);
-      const Eigen::VectorXd q = ix.arm.Get(d);
-      IkOptions io;
-      io.max_iterations = 30;
-      const IkResult r = SolvePalmIk(m, st->scratch.get(), ix.arm, pose, q, q, io);
-      for (int i = 0; i < ArmChain::kDofs; ++i) {
-        const double target = obs[kGraspDofs + ArmChain::kDofs + i];
-        act[i] = static_cast<float>(std::clamp((r.q[i] - target) / kArmStepRad, -1.0, 1.0));
-      }
-    } else {
-      // fingers first, then the thumb (0.25 s later); finger abduction stays
+    if (st->closing_from < 0 && (palm || st->step >= o.approach_steps)) {
+      st->closing_from = st->step;
+    }
+    // the palm: to the object's side along its normal, `press_m` into it, by inverse kinematics
+    // from the current targets, so the servos' lag does not stall the approach
+    const Eigen::Vector3d c(d->xipos + 3 * goal.object_body);
+    const Eigen::Vector3d p(d->site_xpos + 3 * ix.arm.palm_site);
+    const Eigen::Vector3d n = PalmNormal(d, ix);
+    if (!st->have_goal || st->closing_from < 0) {
+      const double gap = (c - p).dot(n) - goal.half_width_m;
+      st->palm_goal = p + n * (gap + o.press_m);
+      st->palm_goal.z() = grip_z;
+      st->have_goal = true;
+    }
+    Eigen::VectorXd target(ArmChain::kDofs);
+    for (int i = 0; i < ArmChain::kDofs; ++i) target[i] = obs[kGraspDofs + ArmChain::kDofs + i];
+    PalmPose pose;
+    pose.pos = st->palm_goal;
+    pose.rot = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
+        d->xmat + 9 * ix.arm.hand_body);
+    mju_copy(st->scratch->qpos, d->qpos, m->nq);
+    IkOptions io;
+    io.max_iterations = 30;
+    io.rot_weight_m = o.ik_rot_weight_m;
+    const IkResult r = SolvePalmIk(m, st->scratch.get(), ix.arm, pose, target, target, io);
+    for (int i = 0; i < ArmChain::kDofs; ++i) {
+      act[i] = static_cast<float>(std::clamp((r.q[i] - target[i]) / kArmStepRad, -1.0, 1.0));
+    }
+    if (st->closing_from >= 0) {
+      // each finger wraps from its base: the MCP flexes until a phalanx touches, the PIP once
+      // the proximal phalanx touches (or the MCP is well bent), the DIP once the middle one
+      // touches, so the fingertips never curl in under the object and push it out
       const int k = st->step - st->closing_from;
-      for (int i = ArmChain::kDofs; i < kGraspActDim; ++i) {
-        const int h = i - ArmChain::kDofs;  // world/hand.h order after the arm's three
-        const bool thumb = h >= 17;
-        const bool abduction = !thumb && h >= 1 && (h - 1) % 4 == 0;
-        if (abduction || h == 20) continue;
-        act[i] = thumb ? (k >= 10 ? 0.6f : 0.0f) : 0.6f;
+      const float rate = static_cast<float>(o.close_rate);
+      if (k >= o.finger_delay_steps) {
+        for (int f = 0; f < 4; ++f) {
+          const bool prox = touch[2 + 3 * f] > 0, mid = touch[3 + 3 * f] > 0,
+                     dist = touch[4 + 3 * f] > 0;
+          const int mcp = ArmChain::kDofs + 2 + 4 * f;  // after the palm arch and abduction
+          const bool mcp_bent = obs[mcp] > 0.9 * ix.hi[mcp];
+          act[mcp] = prox || mid || dist ? o.hold_rate : rate;
+          act[mcp + 1] = dist || mid ? o.hold_rate : prox || mcp_bent ? rate : 0.0f;
+          act[mcp + 2] = dist ? o.hold_rate : mid || obs[mcp + 1] > 0.9 * ix.hi[mcp + 1] ? rate : 0.0f;
+        }
+      }
+      if (k >= o.thumb_delay_steps) {
+        for (int h : {kThumbFirst, kThumbFirst + 2, kThumbFirst + 4}) {
+          act[ArmChain::kDofs + h] = touch[15] > 0 || touch[16] > 0 ? o.hold_rate : rate;
+        }
       }
     }
     ++st->step;

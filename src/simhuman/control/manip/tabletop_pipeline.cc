@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include <Eigen/Geometry>
+
 namespace simhuman::control::manip {
 
 const char* TabletopStageName(TabletopStage s) {
@@ -27,6 +29,11 @@ const char* TabletopStageName(TabletopStage s) {
       return "done";
   }
   return "?";
+}
+
+double GripHeightM(const TabletopGoal& g, const TabletopOptions& o) {
+  const double z = g.shape == GraspShape::kSphere ? g.half_width_m : g.height_m * o.grip_height_frac;
+  return std::clamp(z, o.grip_min_m, o.grip_max_m);
 }
 
 namespace {
@@ -154,32 +161,44 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
     if (!Step([&] { tr.Hold(still, d_); }))
       return Fail(TabletopStage::kReach, "unstable simulation");
   }
-  const double grip_z =
-      g_.shape == GraspShape::kSphere ? g_.half_width_m : std::min(0.055, g_.height_m / 3);
-  const Eigen::Vector3d centre = g_.planned_pos + Eigen::Vector3d(0, 0, grip_z);
+  const Eigen::Vector3d centre = g_.planned_pos + Eigen::Vector3d(0, 0, GripHeightM(g_, o_));
   std::vector<PalmPose> goals;
   std::vector<Eigen::Vector3d> dirs;
   for (int k = 0; k < o_.approach_angles; ++k) {
     const double theta = -M_PI + 2 * M_PI * k / o_.approach_angles;
-    goals.push_back(SideGraspPose(centre, g_.half_width_m + 0.03, theta, ix_.arm.right));
+    goals.push_back(SideGraspPose(centre, g_.half_width_m + o_.pregrasp_gap_m, theta, ix_.arm.right,
+                                  o_.palm_behind_m));
     dirs.push_back(ix_.arm.right ? goals.back().rot.col(1)
                                  : Eigen::Vector3d(-goals.back().rot.col(1)));
   }
-  core::StatusOr<ArmMotion> motion =
-      PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);
-  // too far upright: lean the trunk forward and plan again
+  // a far object: the trunk leans forward first, as a seated person does, so that the arm
+  // ends well inside its reach; then more while no arm pose reaches the object
   const std::string spine = world::AgentPrefix(ix_.arm.agent) + "abdomen_y";
   const int lean_act = mj_name2id(m_, mjOBJ_ACTUATOR, spine.c_str());
-  for (size_t k = 0; k < o_.lean_deg.size() && lean_act >= 0 && !motion.ok() &&
-                     absl::IsFailedPrecondition(motion.status());
-       ++k) {
+  const Eigen::Vector3d shoulder(d_->site_xpos + 3 * ix_.shoulder_site);
+  const double far = std::hypot(centre.x() - shoulder.x(), centre.y() - shoulder.y());
+  size_t lean = 0;
+  while (lean < o_.lean_deg.size() &&
+         far - o_.lean_shoulder_m * std::sin(o_.lean_deg[lean] * M_PI / 180) > o_.comfort_reach_m &&
+         lean_act >= 0) {
+    ++lean;
+  }
+  auto lean_to = [&](size_t k) {
     d_->ctrl[lean_act] = o_.lean_deg[k] * M_PI / 180;
     const Eigen::VectorXd arm_now = ix_.arm.Get(d_);
     for (int j = 0; j < 96; ++j) {
-      if (!Step([&] { tr.Hold(arm_now, d_); })) {
-        return Fail(TabletopStage::kReach, "unstable simulation");
-      }
+      if (!Step([&] { tr.Hold(arm_now, d_); })) return false;
     }
+    return true;
+  };
+  if (lean > 0 && !lean_to(std::min(lean, o_.lean_deg.size()) - 1))
+    return Fail(TabletopStage::kReach, "unstable simulation");
+  core::StatusOr<ArmMotion> motion =
+      PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);
+  for (; lean < o_.lean_deg.size() && lean_act >= 0 && !motion.ok() &&
+         absl::IsFailedPrecondition(motion.status());
+       ++lean) {
+    if (!lean_to(lean)) return Fail(TabletopStage::kReach, "unstable simulation");
     motion = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);
   }
   if (!motion.ok()) {
@@ -200,10 +219,17 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   const Eigen::Vector3d r_palm =
       rh.transpose() * (Eigen::Vector3d(d_->site_xpos + 3 * ix_.arm.palm_site) - ph);
   const Eigen::Vector3d base_goal = g_.target + Eigen::Vector3d(0, 0, o_.carry_clearance_m);
+  // the hand turns so that an object that tilted in the grip arrives upright
+  Eigen::Matrix3d upright = Eigen::Matrix3d::Identity();
+  if (g_.shape != GraspShape::kSphere) {
+    upright = Eigen::Quaterniond::FromTwoVectors(Rot(d_, g_.object_body).col(2),
+                                                 Eigen::Vector3d::UnitZ())
+                  .toRotationMatrix();
+  }
   std::vector<PalmPose> goals;
   for (int k = 0; k < o_.approach_angles; ++k) {
     const double theta = -M_PI + 2 * M_PI * k / o_.approach_angles;
-    const Eigen::Matrix3d r = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()) * rh;
+    const Eigen::Matrix3d r = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()) * upright * rh;
     const Eigen::Vector3d hand = base_goal - r * r_obj;
     goals.push_back({hand + r * r_palm, r});
   }

@@ -42,7 +42,14 @@ struct TabletopGoal {
 struct TabletopOptions {
   ArmMotionOptions motion;
   int approach_angles = 16;         ///< DASH's theta samples around the object
+  double pregrasp_gap_m = 0.05;     ///< the reach ends with the palm this far from the object
+  double palm_behind_m = 0.025;     ///< the palm's centre this far short of the object's axis
   int grasp_policy_steps = 60;      ///< 1.5 s at 40 Hz
+  /// The palm's centre at this fraction of a box's or cylinder's height (a sphere: its centre),
+  /// at most `grip_max_m` above its base
+  double grip_height_frac = 0.5;
+  double grip_max_m = 0.09;
+  double grip_min_m = 0.06;  ///< the palm (9.6 cm wide) clears the table
   double lift_m = 0.12;             ///< straight up after the grasp
   double carry_clearance_m = 0.03;  ///< the object's base this high over the target on arrival
   double lower_speed_mps = 0.06;    ///< placing descent
@@ -53,7 +60,15 @@ struct TabletopOptions {
   /// held) by these angles in turn, as a seated person does for a far object (DASH holds its
   /// trunk and names that as a cause of its planning failures).
   std::vector<double> lean_deg = {12, 24, 34, 44};
+  /// The trunk leans (by the first of `lean_deg` that does it) until the object is within this
+  /// horizontal distance of the shoulder; leaning by a moves the shoulder lean_shoulder_m sin a
+  /// forward.
+  double comfort_reach_m = 0.5;
+  double lean_shoulder_m = 0.45;
 };
+
+/// How high above the object's base the palm's centre grips it (TabletopOptions' grip_*).
+double GripHeightM(const TabletopGoal& goal, const TabletopOptions& options);
 
 /// Why a run ended.
 enum class TabletopStage { kReach, kGrasp, kLift, kTransport, kPlace, kRelease, kSettle, kDone };
