@@ -164,10 +164,23 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   const Eigen::Vector3d centre = g_.planned_pos + Eigen::Vector3d(0, 0, GripHeightM(g_, o_));
   std::vector<PalmPose> goals;
   std::vector<Eigen::Vector3d> dirs;
-  for (int k = 0; k < o_.approach_angles; ++k) {
-    const double theta = -M_PI + 2 * M_PI * k / o_.approach_angles;
+  // a box is taken flat on one of its side faces (its yaw plus quarter turns, and a little
+  // either side); round objects from all around
+  std::vector<double> thetas;
+  if (g_.shape == GraspShape::kBox) {
+    const Eigen::Matrix3d rb = Rot(d_, g_.object_body);
+    const double yaw = std::atan2(rb(1, 0), rb(0, 0));
+    for (int k = 0; k < 4; ++k) {
+      for (double off : {0.0, -o_.box_face_spread_rad, o_.box_face_spread_rad})
+        thetas.push_back(yaw + k * M_PI / 2 + off);
+    }
+  } else {
+    for (int k = 0; k < o_.approach_angles; ++k)
+      thetas.push_back(-M_PI + 2 * M_PI * k / o_.approach_angles);
+  }
+  for (double theta : thetas) {
     goals.push_back(SideGraspPose(centre, g_.half_width_m + o_.pregrasp_gap_m, theta, ix_.arm.right,
-                                  o_.palm_behind_m));
+                                  std::max(o_.palm_behind_m, g_.half_width_m - o_.palm_behind_margin_m)));
     dirs.push_back(ix_.arm.right ? goals.back().rot.col(1)
                                  : Eigen::Vector3d(-goals.back().rot.col(1)));
   }

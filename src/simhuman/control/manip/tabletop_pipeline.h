@@ -41,9 +41,14 @@ struct TabletopGoal {
 /// Settings of RunTabletop.
 struct TabletopOptions {
   ArmMotionOptions motion;
-  int approach_angles = 16;         ///< DASH's theta samples around the object
+  int approach_angles = 16;         ///< DASH's theta samples around a round object
+  double box_face_spread_rad = 0.15;  ///< a box: each face's normal and this far either side
   double pregrasp_gap_m = 0.05;     ///< the reach ends with the palm this far from the object
-  double palm_behind_m = 0.025;     ///< the palm's centre this far short of the object's axis
+  /// The palm's centre this far short of the object's axis along the fingers, and for a wide
+  /// object so far that its near side stays within `palm_behind_margin_m` of the palm's centre
+  /// (clear of the thumb's C)
+  double palm_behind_m = 0.025;
+  double palm_behind_margin_m = 0.005;
   int grasp_policy_steps = 60;      ///< 1.5 s at 40 Hz
   /// The palm's centre at this fraction of a box's or cylinder's height (a sphere: its centre),
   /// at most `grip_max_m` above its base
