@@ -50,14 +50,22 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
     double wrist;
   };
   std::vector<Candidate> free;
+  int unreached = 0, colliding = 0;
   for (size_t g = 0; g < goals.size(); ++g) {
-    const IkResult r = SolvePalmIk(m, s, arm, goals[g], start, rest);
-    if (!r.converged || Contacts(m, s, arm, r.q, o) > 0) continue;
-    free.push_back({r.q, static_cast<int>(g), r.q.tail<3>().norm()});
+    const IkResult r = SolvePalmIk(m, s, arm, goals[g], start, rest, o.ik);
+    if (!r.converged) {
+      ++unreached;
+    } else if (Contacts(m, s, arm, r.q, o) > 0) {
+      ++colliding;
+    } else {
+      free.push_back({r.q, static_cast<int>(g), r.q.tail<3>().norm()});
+    }
   }
   if (free.empty()) {
-    return absl::FailedPreconditionError("plan failure: no collision-free arm pose for any of " +
-                                         std::to_string(goals.size()) + " palm poses");
+    return absl::FailedPreconditionError(
+        "plan failure: no collision-free arm pose for any of " + std::to_string(goals.size()) +
+        " palm poses (" + std::to_string(unreached) + " out of the arm's reach, " +
+        std::to_string(colliding) + " in collision)");
   }
   // DASH: the pose with the wrist nearest its rest; the planner may reach any of the best few
   std::sort(free.begin(), free.end(),

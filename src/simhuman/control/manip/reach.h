@@ -28,6 +28,7 @@ struct ArmMotionOptions {
   double max_joint_speed = 3.0;          ///< rad/s per joint
   double reshape_fraction = 0.1;         ///< the final part of the path given the approach tangent
   double contact_tolerance_m = 0.002;    ///< penetration a pose may have and still be free
+  IkOptions ik;                          ///< the goal poses' inverse kinematics
   /// Bodies whose contacts with the arm do not count (the object in the hand during transport).
   std::vector<int> ignore_bodies;
 };
@@ -45,7 +46,8 @@ struct ArmMotion {
 /// SideGraspPose() over theta). `approach_dirs` (world, one per goal, or empty) is the palm's
 /// direction of travel on arrival at that goal (empty or zero: keep the path's own). `scratch` is a
 /// caller-owned mjData of the model (its state is overwritten). Errors name the stage:
-/// FailedPrecondition "plan failure: no collision-free arm pose for any of N palm poses", NotFound
+/// FailedPrecondition "plan failure: no collision-free arm pose for any of N palm poses (U out of
+/// the arm's reach, C in collision)", NotFound
 /// "plan failure: no collision-free path ..." (the planner's message), InvalidArgument for bad
 /// options.
 core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjData* scratch,

@@ -12,6 +12,8 @@ namespace simhuman::control::manip {
 struct ScriptedGraspOptions {
   int approach_steps = 40;     ///< the palm closes in this long at most before the hand closes
   double press_m = 0.006;      ///< the palm's goal lies this far inside the object's side
+  bool press_while_closing = true;  ///< the palm keeps pressing on the object as the hand closes
+  double ball_close_gap_m = 0.01;  ///< a sphere: the hand closes once the palm is this near
   int finger_delay_steps = 0;  ///< the four fingers start flexing this many steps after touch
   int thumb_delay_steps = 10;  ///< the thumb starts this many steps after touch
   float close_rate = 0.6;     ///< finger action while closing (x kFingerStepRad per step)

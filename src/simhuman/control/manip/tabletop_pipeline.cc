@@ -171,8 +171,8 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
     const Eigen::Matrix3d rb = Rot(d_, g_.object_body);
     const double yaw = std::atan2(rb(1, 0), rb(0, 0));
     for (int k = 0; k < 4; ++k) {
-      for (double off : {0.0, -o_.box_face_spread_rad, o_.box_face_spread_rad})
-        thetas.push_back(yaw + k * M_PI / 2 + off);
+      for (double off : {0.0, -1.0, 1.0, -2.0, 2.0})
+        thetas.push_back(yaw + k * M_PI / 2 + off * o_.box_face_spread_rad);
     }
   } else {
     for (int k = 0; k < o_.approach_angles; ++k)
@@ -190,13 +190,7 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   const int lean_act = mj_name2id(m_, mjOBJ_ACTUATOR, spine.c_str());
   const Eigen::Vector3d shoulder(d_->site_xpos + 3 * ix_.shoulder_site);
   const double far = std::hypot(centre.x() - shoulder.x(), centre.y() - shoulder.y());
-  size_t lean = 0;
-  while (lean < o_.lean_deg.size() &&
-         far - o_.lean_shoulder_m * std::sin(o_.lean_deg[lean] * M_PI / 180) > o_.comfort_reach_m &&
-         lean_act >= 0) {
-    ++lean;
-  }
-  auto lean_to = [&](size_t k) {
+  auto lean_to = [&](int k) {
     d_->ctrl[lean_act] = o_.lean_deg[k] * M_PI / 180;
     const Eigen::VectorXd arm_now = ix_.arm.Get(d_);
     for (int j = 0; j < 96; ++j) {
@@ -204,12 +198,18 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
     }
     return true;
   };
-  if (lean > 0 && !lean_to(std::min(lean, o_.lean_deg.size()) - 1))
-    return Fail(TabletopStage::kReach, "unstable simulation");
+  const int leans = lean_act >= 0 ? static_cast<int>(o_.lean_deg.size()) : 0;
+  int lean = -1;  // upright
+  if (leans > 0 && far > o_.comfort_reach_m) {
+    lean = 0;
+    while (lean + 1 < leans &&
+           far - o_.lean_shoulder_m * std::sin(o_.lean_deg[lean] * M_PI / 180) > o_.comfort_reach_m)
+      ++lean;
+    if (!lean_to(lean)) return Fail(TabletopStage::kReach, "unstable simulation");
+  }
   core::StatusOr<ArmMotion> motion =
       PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);
-  for (; lean < o_.lean_deg.size() && lean_act >= 0 && !motion.ok() &&
-         absl::IsFailedPrecondition(motion.status());
+  for (++lean; lean < leans && !motion.ok() && absl::IsFailedPrecondition(motion.status());
        ++lean) {
     if (!lean_to(lean)) return Fail(TabletopStage::kReach, "unstable simulation");
     motion = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);

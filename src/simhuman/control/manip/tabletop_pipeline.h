@@ -42,7 +42,7 @@ struct TabletopGoal {
 struct TabletopOptions {
   ArmMotionOptions motion;
   int approach_angles = 16;         ///< DASH's theta samples around a round object
-  double box_face_spread_rad = 0.15;  ///< a box: each face's normal and this far either side
+  double box_face_spread_rad = 0.15;  ///< a box: each face's normal and 1 and 2 times this either side
   double pregrasp_gap_m = 0.05;     ///< the reach ends with the palm this far from the object
   /// The palm's centre this far short of the object's axis along the fingers, and for a wide
   /// object so far that its near side stays within `palm_behind_margin_m` of the palm's centre
@@ -68,7 +68,7 @@ struct TabletopOptions {
   /// The trunk leans (by the first of `lean_deg` that does it) until the object is within this
   /// horizontal distance of the shoulder; leaning by a moves the shoulder lean_shoulder_m sin a
   /// forward.
-  double comfort_reach_m = 0.5;
+  double comfort_reach_m = 0.6;
   double lean_shoulder_m = 0.45;
 };
 
