@@ -57,7 +57,8 @@ TEST(GraspEnvTest, ClosingTheHandEarnsMoreThanOpeningIt) {
     StepInfo info;
     double ret = 0;
     for (int k = 0; k < 30; ++k) {
-      for (int j = 0; j < task.act_dim(); ++j) act[j] = j < 7 ? 0.0f : finger;
+      // the arm still, the four fingers flexing (or extending); the thumb keeps its C
+      for (int j = 0; j < task.act_dim(); ++j) act[j] = j < 7 || j >= 7 + 17 ? 0.0f : finger;
       task.Step(0, act.data(), obs.data(), &info);
       ret += info.reward;
     }

@@ -1,8 +1,12 @@
 #pragma once
 /// A training-free grasp for the pipeline's grasp stage, the baseline a learned policy is
-/// measured against: the palm closes in on the object's side by inverse kinematics until it
-/// touches, then the four fingers flex and the thumb opposes them (as in the shared notes'
-/// model-based prototype, which held 57 % of objects through a lift).
+/// measured against. The hand arrives open with the thumb pre-shaped into a C (grasp_task.h
+/// SetOpenHand); the palm closes in along its normal by inverse kinematics from the current
+/// targets until it touches (a ball: until it is within a centimetre); then each finger wraps
+/// from its base (the MCP until a phalanx touches, the PIP once the proximal phalanx touches,
+/// the DIP once the middle one does, so fingertips never curl in under the object and push it
+/// out), the thumb closes a quarter second later, and touching segments keep a slow squeeze
+/// while the palm keeps pressing.
 
 #include "simhuman/control/manip/tabletop_pipeline.h"
 
@@ -24,8 +28,8 @@ struct ScriptedGraspOptions {
 };
 
 /// The scripted grasp of `goal`'s object by arm `ix` in the simulation `m`/`d` (read at each
-/// call; the pipeline steps `d`), at the grip height of the pipeline's `pipeline` settings. The function keeps its own scratch data and step count; one
-/// per episode.
+/// call; the pipeline steps `d`), at the grip height of the pipeline's `pipeline` settings.
+/// The function keeps its own scratch data and step count; one per episode.
 GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIndex& ix,
                                 const TabletopGoal& goal, const TabletopOptions& pipeline,
                                 const ScriptedGraspOptions& options = {});

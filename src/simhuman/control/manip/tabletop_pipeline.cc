@@ -104,7 +104,9 @@ class Run {
     tr.Reset();
     while (d_->time - t0 < duration_s) {
       const double a = std::min(1.0, (d_->time - t0) / duration_s);
-      if (steps_ % 2 == 0) q = IkTo(p0 + (a * a * (3 - 2 * a)) * delta, q);
+      // a new IK target every ik_every_steps (the servos smooth between): the solve is the
+      // pipeline's costliest part
+      if (steps_ % std::max(1, o_.ik_every_steps) == 0) q = IkTo(p0 + (a * a * (3 - 2 * a)) * delta, q);
       if (!Step([&] { tr.Hold(q, d_); })) return false;
       if (stop && stop()) break;
     }

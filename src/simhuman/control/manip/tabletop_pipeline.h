@@ -58,6 +58,7 @@ struct TabletopOptions {
   double lift_m = 0.12;             ///< straight up after the grasp
   double carry_clearance_m = 0.03;  ///< the object's base this high over the target on arrival
   double lower_speed_mps = 0.06;    ///< placing descent
+  int ik_every_steps = 6;           ///< straight palm moves (lift, lower, retract) re-solve IK so often
   double release_s = 0.4;           ///< the fingers open over this long
   double settle_s = 2.0;            ///< the object must rest this long after the release
   double finger_squeeze_rad = 0.1;  ///< DASH: transport targets = grasp targets + 0.1 sign(e)
