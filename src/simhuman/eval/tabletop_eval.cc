@@ -120,7 +120,8 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, GoalOf(ts, *w));
     if (i == 0) raw = RawStepsPerSecond(w->model(), w->data());
     const control::manip::GraspPolicyFn grasp =
-        policy ? *policy : control::manip::MakeScriptedGrasp(w->model(), w->data(), ix, goal, pipeline);
+        policy ? *policy
+               : control::manip::MakeScriptedGrasp(w->model(), w->data(), ix, goal, pipeline);
     const control::manip::TabletopResult r =
         control::manip::RunTabletop(*w, ix, goal, grasp, pipeline);
     TabletopEpisode e;

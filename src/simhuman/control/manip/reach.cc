@@ -62,10 +62,10 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
     }
   }
   if (free.empty()) {
-    return absl::FailedPreconditionError(
-        "plan failure: no collision-free arm pose for any of " + std::to_string(goals.size()) +
-        " palm poses (" + std::to_string(unreached) + " out of the arm's reach, " +
-        std::to_string(colliding) + " in collision)");
+    return absl::FailedPreconditionError("plan failure: no collision-free arm pose for any of " +
+                                         std::to_string(goals.size()) + " palm poses (" +
+                                         std::to_string(unreached) + " out of the arm's reach, " +
+                                         std::to_string(colliding) + " in collision)");
   }
   // DASH: the pose with the wrist nearest its rest; the planner may reach any of the best few
   std::sort(free.begin(), free.end(),

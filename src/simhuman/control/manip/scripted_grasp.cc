@@ -66,8 +66,8 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     for (int i = 0; i < ArmChain::kDofs; ++i) target[i] = obs[kGraspDofs + ArmChain::kDofs + i];
     PalmPose pose;
     pose.pos = st->palm_goal;
-    pose.rot = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
-        d->xmat + 9 * ix.arm.hand_body);
+    pose.rot = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat +
+                                                                              9 * ix.arm.hand_body);
     mju_copy(st->scratch->qpos, d->qpos, m->nq);
     IkOptions io;
     io.max_iterations = 30;
@@ -90,7 +90,9 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
           const bool mcp_bent = obs[mcp] > 0.9 * ix.hi[mcp];
           act[mcp] = prox || mid || dist ? o.hold_rate : rate;
           act[mcp + 1] = dist || mid ? o.hold_rate : prox || mcp_bent ? rate : 0.0f;
-          act[mcp + 2] = dist ? o.hold_rate : mid || obs[mcp + 1] > 0.9 * ix.hi[mcp + 1] ? rate : 0.0f;
+          act[mcp + 2] = dist                                         ? o.hold_rate
+                         : mid || obs[mcp + 1] > 0.9 * ix.hi[mcp + 1] ? rate
+                                                                      : 0.0f;
         }
       }
       if (k >= o.thumb_delay_steps) {

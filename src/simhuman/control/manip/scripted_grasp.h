@@ -14,14 +14,14 @@ namespace simhuman::control::manip {
 
 /// Settings of the scripted grasp (steps are policy steps, 40 Hz).
 struct ScriptedGraspOptions {
-  int approach_steps = 40;     ///< the palm closes in this long at most before the hand closes
-  double press_m = 0.006;      ///< the palm's goal lies this far inside the object's side
+  int approach_steps = 40;          ///< the palm closes in this long at most before the hand closes
+  double press_m = 0.006;           ///< the palm's goal lies this far inside the object's side
   bool press_while_closing = true;  ///< the palm keeps pressing on the object as the hand closes
-  double ball_close_gap_m = 0.01;  ///< a sphere: the hand closes once the palm is this near
-  int finger_delay_steps = 0;  ///< the four fingers start flexing this many steps after touch
-  int thumb_delay_steps = 10;  ///< the thumb starts this many steps after touch
-  float close_rate = 0.6;     ///< finger action while closing (x kFingerStepRad per step)
-  float hold_rate = 0.05;      ///< a touching segment's action: a slow squeeze
+  double ball_close_gap_m = 0.01;   ///< a sphere: the hand closes once the palm is this near
+  int finger_delay_steps = 0;       ///< the four fingers start flexing this many steps after touch
+  int thumb_delay_steps = 10;       ///< the thumb starts this many steps after touch
+  float close_rate = 0.6;           ///< finger action while closing (x kFingerStepRad per step)
+  float hold_rate = 0.05;           ///< a touching segment's action: a slow squeeze
   /// IkOptions::rot_weight_m of the approach: the hand may turn a little to close the gap when
   /// the arm is near its limits
   double ik_rot_weight_m = 0.03;

@@ -1,11 +1,10 @@
 #include "simhuman/control/manip/tabletop_pipeline.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
-
-#include <Eigen/Geometry>
 
 namespace simhuman::control::manip {
 
@@ -32,7 +31,8 @@ const char* TabletopStageName(TabletopStage s) {
 }
 
 double GripHeightM(const TabletopGoal& g, const TabletopOptions& o) {
-  const double z = g.shape == GraspShape::kSphere ? g.half_width_m : g.height_m * o.grip_height_frac;
+  const double z =
+      g.shape == GraspShape::kSphere ? g.half_width_m : g.height_m * o.grip_height_frac;
   return std::clamp(z, o.grip_min_m, o.grip_max_m);
 }
 
@@ -106,7 +106,8 @@ class Run {
       const double a = std::min(1.0, (d_->time - t0) / duration_s);
       // a new IK target every ik_every_steps (the servos smooth between): the solve is the
       // pipeline's costliest part
-      if (steps_ % std::max(1, o_.ik_every_steps) == 0) q = IkTo(p0 + (a * a * (3 - 2 * a)) * delta, q);
+      if (steps_ % std::max(1, o_.ik_every_steps) == 0)
+        q = IkTo(p0 + (a * a * (3 - 2 * a)) * delta, q);
       if (!Step([&] { tr.Hold(q, d_); })) return false;
       if (stop && stop()) break;
     }
@@ -181,8 +182,9 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
       thetas.push_back(-M_PI + 2 * M_PI * k / o_.approach_angles);
   }
   for (double theta : thetas) {
-    goals.push_back(SideGraspPose(centre, g_.half_width_m + o_.pregrasp_gap_m, theta, ix_.arm.right,
-                                  std::max(o_.palm_behind_m, g_.half_width_m - o_.palm_behind_margin_m)));
+    goals.push_back(
+        SideGraspPose(centre, g_.half_width_m + o_.pregrasp_gap_m, theta, ix_.arm.right,
+                      std::max(o_.palm_behind_m, g_.half_width_m - o_.palm_behind_margin_m)));
     dirs.push_back(ix_.arm.right ? goals.back().rot.col(1)
                                  : Eigen::Vector3d(-goals.back().rot.col(1)));
   }
@@ -237,9 +239,9 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   // the hand turns so that an object that tilted in the grip arrives upright
   Eigen::Matrix3d upright = Eigen::Matrix3d::Identity();
   if (g_.shape != GraspShape::kSphere) {
-    upright = Eigen::Quaterniond::FromTwoVectors(Rot(d_, g_.object_body).col(2),
-                                                 Eigen::Vector3d::UnitZ())
-                  .toRotationMatrix();
+    upright =
+        Eigen::Quaterniond::FromTwoVectors(Rot(d_, g_.object_body).col(2), Eigen::Vector3d::UnitZ())
+            .toRotationMatrix();
   }
   std::vector<PalmPose> goals;
   for (int k = 0; k < o_.approach_angles; ++k) {

@@ -41,26 +41,27 @@ struct TabletopGoal {
 /// Settings of RunTabletop.
 struct TabletopOptions {
   ArmMotionOptions motion;
-  int approach_angles = 16;         ///< DASH's theta samples around a round object
-  double box_face_spread_rad = 0.15;  ///< a box: each face's normal and 1 and 2 times this either side
-  double pregrasp_gap_m = 0.05;     ///< the reach ends with the palm this far from the object
+  int approach_angles = 16;  ///< DASH's theta samples around a round object
+  double box_face_spread_rad =
+      0.15;                      ///< a box: each face's normal and 1 and 2 times this either side
+  double pregrasp_gap_m = 0.05;  ///< the reach ends with the palm this far from the object
   /// The palm's centre this far short of the object's axis along the fingers, and for a wide
   /// object so far that its near side stays within `palm_behind_margin_m` of the palm's centre
   /// (clear of the thumb's C)
   double palm_behind_m = 0.025;
   double palm_behind_margin_m = 0.005;
-  int grasp_policy_steps = 60;      ///< 1.5 s at 40 Hz
+  int grasp_policy_steps = 60;  ///< 1.5 s at 40 Hz
   /// The palm's centre at this fraction of a box's or cylinder's height (a sphere: its centre),
   /// at most `grip_max_m` above its base
   double grip_height_frac = 0.5;
   double grip_max_m = 0.09;
-  double grip_min_m = 0.06;  ///< the palm (9.6 cm wide) clears the table
+  double grip_min_m = 0.06;         ///< the palm (9.6 cm wide) clears the table
   double lift_m = 0.12;             ///< straight up after the grasp
   double carry_clearance_m = 0.03;  ///< the object's base this high over the target on arrival
   double lower_speed_mps = 0.06;    ///< placing descent
-  int ik_every_steps = 6;           ///< straight palm moves (lift, lower, retract) re-solve IK so often
-  double release_s = 0.4;           ///< the fingers open over this long
-  double settle_s = 2.0;            ///< the object must rest this long after the release
+  int ik_every_steps = 6;  ///< straight palm moves (lift, lower, retract) re-solve IK so often
+  double release_s = 0.4;  ///< the fingers open over this long
+  double settle_s = 2.0;   ///< the object must rest this long after the release
   double finger_squeeze_rad = 0.1;  ///< DASH: transport targets = grasp targets + 0.1 sign(e)
   /// When no arm pose reaches the object upright, the trunk leans forward (the pelvis stays
   /// held) by these angles in turn, as a seated person does for a far object (DASH holds its

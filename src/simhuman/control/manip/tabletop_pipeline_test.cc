@@ -54,9 +54,9 @@ Scene BoxScene(double width, double mass) {
 TEST(TabletopPipelineTest, EveryStageRunsAndReportsWhereItFailedIntegration) {
   Scene s = BoxScene(0.06, 1.0);
   const TabletopOptions options;
-  TabletopResult r =
-      RunTabletop(*s.world, s.ix, s.goal,
-                  MakeScriptedGrasp(s.world->model(), s.world->data(), s.ix, s.goal, options), options);
+  TabletopResult r = RunTabletop(
+      *s.world, s.ix, s.goal,
+      MakeScriptedGrasp(s.world->model(), s.world->data(), s.ix, s.goal, options), options);
   std::printf("result: %s (stage %s) steps %d wall %.2f s, final %.3f %.3f %.3f\n",
               r.end_reason.c_str(), TabletopStageName(r.failed_stage), r.sim_steps, r.wall_s,
               r.final_pos.x(), r.final_pos.y(), r.final_pos.z());
