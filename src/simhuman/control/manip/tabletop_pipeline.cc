@@ -165,29 +165,41 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
       return Fail(TabletopStage::kReach, "unstable simulation");
   }
   const Eigen::Vector3d centre = g_.planned_pos + Eigen::Vector3d(0, 0, GripHeightM(g_, o_));
-  std::vector<PalmPose> goals;
-  std::vector<Eigen::Vector3d> dirs;
+  // palm poses around the object at the given approach angles
+  auto poses = [&](const std::vector<double>& thetas) {
+    std::pair<std::vector<PalmPose>, std::vector<Eigen::Vector3d>> out;
+    for (double theta : thetas) {
+      out.first.push_back(
+          SideGraspPose(centre, g_.half_width_m + o_.pregrasp_gap_m, theta, ix_.arm.right,
+                        std::max(o_.palm_behind_m, g_.half_width_m - o_.palm_behind_margin_m)));
+      out.second.push_back(ix_.arm.right ? out.first.back().rot.col(1)
+                                         : Eigen::Vector3d(-out.first.back().rot.col(1)));
+    }
+    return out;
+  };
   // a box is taken flat on one of its side faces (its yaw plus quarter turns, and a little
-  // either side); round objects from all around
-  std::vector<double> thetas;
+  // either side) when the arm can; from all around (as round objects) when it cannot
+  std::vector<double> faces, around;
   if (g_.shape == GraspShape::kBox) {
     const Eigen::Matrix3d rb = Rot(d_, g_.object_body);
     const double yaw = std::atan2(rb(1, 0), rb(0, 0));
     for (int k = 0; k < 4; ++k) {
       for (double off : {0.0, -1.0, 1.0, -2.0, 2.0})
-        thetas.push_back(yaw + k * M_PI / 2 + off * o_.box_face_spread_rad);
+        faces.push_back(yaw + k * M_PI / 2 + off * o_.box_face_spread_rad);
     }
-  } else {
-    for (int k = 0; k < o_.approach_angles; ++k)
-      thetas.push_back(-M_PI + 2 * M_PI * k / o_.approach_angles);
   }
-  for (double theta : thetas) {
-    goals.push_back(
-        SideGraspPose(centre, g_.half_width_m + o_.pregrasp_gap_m, theta, ix_.arm.right,
-                      std::max(o_.palm_behind_m, g_.half_width_m - o_.palm_behind_margin_m)));
-    dirs.push_back(ix_.arm.right ? goals.back().rot.col(1)
-                                 : Eigen::Vector3d(-goals.back().rot.col(1)));
-  }
+  for (int k = 0; k < o_.approach_angles; ++k)
+    around.push_back(-M_PI + 2 * M_PI * k / o_.approach_angles);
+  const auto face_goals = poses(faces), around_goals = poses(around);
+  auto plan = [&]() {
+    if (!faces.empty()) {
+      core::StatusOr<ArmMotion> on_face =
+          PlanArmMotion(m_, d_, scratch_, ix_.arm, face_goals.first, face_goals.second, o_.motion);
+      if (on_face.ok() || !absl::IsFailedPrecondition(on_face.status())) return on_face;
+    }
+    return PlanArmMotion(m_, d_, scratch_, ix_.arm, around_goals.first, around_goals.second,
+                         o_.motion);
+  };
   // a far object: the trunk leans forward first, as a seated person does, so that the arm
   // ends well inside its reach; then more while no arm pose reaches the object
   const std::string spine = world::AgentPrefix(ix_.arm.agent) + "abdomen_y";
@@ -211,12 +223,11 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
       ++lean;
     if (!lean_to(lean)) return Fail(TabletopStage::kReach, "unstable simulation");
   }
-  core::StatusOr<ArmMotion> motion =
-      PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);
+  core::StatusOr<ArmMotion> motion = plan();
   for (++lean; lean < leans && !motion.ok() && absl::IsFailedPrecondition(motion.status());
        ++lean) {
     if (!lean_to(lean)) return Fail(TabletopStage::kReach, "unstable simulation");
-    motion = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, dirs, o_.motion);
+    motion = plan();
   }
   if (!motion.ok()) {
     return Fail(TabletopStage::kReach, std::string(motion.status().message()), true);
