@@ -41,14 +41,7 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     float touch[kGraspTouchParts];
     GraspTouch(m, d, ix, goal.object_body, touch);
     const bool palm = touch[0] > 0 || touch[1] > 0;
-    const double gap_now = (Eigen::Vector3d(d->xipos + 3 * goal.object_body) -
-                            Eigen::Vector3d(d->site_xpos + 3 * ix.arm.palm_site))
-                               .dot(PalmNormal(d, ix)) -
-                           goal.half_width_m;
-    // a ball rolls away from the lightest push: the hand closes around it just before the palm
-    // meets it
-    const bool near_ball = goal.shape == GraspShape::kSphere && gap_now < o.ball_close_gap_m;
-    if (st->closing_from < 0 && (palm || near_ball || st->step >= o.approach_steps)) {
+    if (st->closing_from < 0 && (palm || st->step >= o.approach_steps)) {
       st->closing_from = st->step;
     }
     // the palm: to the object's side along its normal, `press_m` into it, by inverse kinematics

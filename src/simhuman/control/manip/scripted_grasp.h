@@ -2,11 +2,10 @@
 /// A training-free grasp for the pipeline's grasp stage, the baseline a learned policy is
 /// measured against. The hand arrives open with the thumb pre-shaped into a C (grasp_task.h
 /// SetOpenHand); the palm closes in along its normal by inverse kinematics from the current
-/// targets until it touches (a ball: until it is within a centimetre); then each finger wraps
-/// from its base (the MCP until a phalanx touches, the PIP once the proximal phalanx touches,
-/// the DIP once the middle one does, so fingertips never curl in under the object and push it
-/// out), the thumb closes a quarter second later, and touching segments keep a slow squeeze
-/// while the palm keeps pressing.
+/// targets until it touches; then each finger wraps from its base (the MCP until a phalanx
+/// touches, the PIP once the proximal phalanx touches, the DIP once the middle one does, so
+/// fingertips never curl in under the object and push it out), the thumb closes a quarter
+/// second later, and touching segments keep a slow squeeze while the palm keeps pressing.
 
 #include "simhuman/control/manip/tabletop_pipeline.h"
 
@@ -17,7 +16,6 @@ struct ScriptedGraspOptions {
   int approach_steps = 40;          ///< the palm closes in this long at most before the hand closes
   double press_m = 0.006;           ///< the palm's goal lies this far inside the object's side
   bool press_while_closing = true;  ///< the palm keeps pressing on the object as the hand closes
-  double ball_close_gap_m = 0.01;   ///< a sphere: the hand closes once the palm is this near
   int finger_delay_steps = 0;       ///< the four fingers start flexing this many steps after touch
   int thumb_delay_steps = 10;       ///< the thumb starts this many steps after touch
   float close_rate = 0.6;           ///< finger action while closing (x kFingerStepRad per step)
