@@ -51,24 +51,30 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
   };
   std::vector<Candidate> free;
   int unreached = 0, colliding = 0;
-  for (size_t g = 0; g < goals.size(); ++g) {
-    // from the current pose first, then from spread-out seeds (an arm reaching far forward is
-    // often beyond a local solve from a hanging arm, or its first solution collides)
-    bool reached = false, found = false;
-    for (int k = 0; k <= std::max(0, o.ik_restarts) && !found; ++k) {
-      Eigen::VectorXd seed = start;
-      for (int i = 0; k > 0 && i < ArmChain::kDofs; ++i) {
-        const double u = std::fmod(0.5 + k * 0.618034 + i * 0.414214, 1.0);
-        seed[i] = arm.lo[i] + (0.15 + 0.7 * u) * (arm.hi[i] - arm.lo[i]);
+  // every pose from the current arm first; only when none is free, again from spread-out seeds
+  // (an arm reaching far forward is often beyond a local solve from a hanging arm, or its first
+  // solution collides), so the common case costs one solve per pose
+  for (int pass = 0; pass < 2 && free.empty(); ++pass) {
+    if (pass == 1 && o.ik_restarts < 1) break;
+    unreached = colliding = 0;
+    for (size_t g = 0; g < goals.size(); ++g) {
+      bool reached = false, found = false;
+      const int first = pass == 0 ? 0 : 1, last = pass == 0 ? 0 : o.ik_restarts;
+      for (int k = first; k <= last && !found; ++k) {
+        Eigen::VectorXd seed = start;
+        for (int i = 0; k > 0 && i < ArmChain::kDofs; ++i) {
+          const double u = std::fmod(0.5 + k * 0.618034 + i * 0.414214, 1.0);
+          seed[i] = arm.lo[i] + (0.15 + 0.7 * u) * (arm.hi[i] - arm.lo[i]);
+        }
+        const IkResult r = SolvePalmIk(m, s, arm, goals[g], seed, rest, o.ik);
+        if (!r.converged) continue;
+        reached = true;
+        if (Contacts(m, s, arm, r.q, o) > 0) continue;
+        free.push_back({r.q, static_cast<int>(g), r.q.tail<3>().norm()});
+        found = true;
       }
-      const IkResult r = SolvePalmIk(m, s, arm, goals[g], seed, rest, o.ik);
-      if (!r.converged) continue;
-      reached = true;
-      if (Contacts(m, s, arm, r.q, o) > 0) continue;
-      free.push_back({r.q, static_cast<int>(g), r.q.tail<3>().norm()});
-      found = true;
+      if (!found) ++(reached ? colliding : unreached);
     }
-    if (!found) ++(reached ? colliding : unreached);
   }
   if (free.empty()) {
     return absl::FailedPreconditionError("plan failure: no collision-free arm pose for any of " +

@@ -29,7 +29,7 @@ struct ArmMotionOptions {
   double reshape_fraction = 0.1;         ///< the final part of the path given the approach tangent
   double contact_tolerance_m = 0.002;    ///< penetration a pose may have and still be free
   IkOptions ik;                          ///< the goal poses' inverse kinematics
-  int ik_restarts = 8;                   ///< further IK seeds per goal when the first fails
+  int ik_restarts = 8;  ///< further IK seeds per goal when no goal is free from the current arm
   /// Bodies whose contacts with the arm do not count (the object in the hand during transport).
   std::vector<int> ignore_bodies;
 };
