@@ -325,6 +325,12 @@ TEST(CliIntegrationTest, TrainResumeAndCorruptCheckpoint) {
   EXPECT_NE(corrupt.exit_code, 0);
   EXPECT_EQ(corrupt.signal, 0);
   EXPECT_NE(corrupt.err.find("checkpoint.pt"), std::string::npos) << corrupt.err;
+  // without --task, the config file's task is trained (it was silently "walk")
+  const std::string cfg = dir + "_reach_config.json";
+  std::ofstream(cfg) << R"({"task": "reach", "num_envs": 16, "hidden": [64, 64]})";
+  Proc from_config = RunBin({"train", "--config", cfg, "--steps", "4k", "--out", dir + "_cfg"});
+  EXPECT_EQ(from_config.exit_code, 0) << from_config.err;
+  EXPECT_NE(from_config.out.find("task reach"), std::string::npos) << from_config.out;
   Proc walk_no_policy = RunBin({"eval", "--suite", "walk", "--episodes", "1"});
   EXPECT_EQ(walk_no_policy.exit_code, 2);
   EXPECT_NE(walk_no_policy.err.find("--policy"), std::string::npos);

@@ -184,7 +184,10 @@ CLI::App* AddTrainCommand(CLI::App& app, TrainFlags* tf, CLI::Option** steps, CL
   CLI::App* train_cmd = app.add_subcommand("train", "Train a policy with PPO (resumable)");
   std::string tasks;
   for (const std::string& t : learn::TaskNames()) tasks += (tasks.empty() ? "" : ", ") + t;
-  train_cmd->add_option("--task", tf->task, "Task: one of " + tasks)->capture_default_str();
+  train_cmd
+      ->add_option("--task", tf->task,
+                   "Task: one of " + tasks + " (default: the --config file's task, else walk)")
+      ->each([tf](const std::string&) { tf->task_given = true; });
   *steps = train_cmd->add_option("--steps", tf->steps, "Total env steps (30M, 500k)")
                ->capture_default_str();
   train_cmd->add_option("--out", tf->out, "Run folder of a new run");

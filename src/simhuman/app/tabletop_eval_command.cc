@@ -62,6 +62,21 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   for (const auto& [stage, n] : s->failures_by_stage) {
     out << "  failed at " << stage << ": " << n << std::endl;
   }
+  for (const auto& [task, t] : s->by_task) {
+    out << "  " << task << ": " << t.successes << "/" << t.episodes << " (" << t.plan_failures
+        << " plan failures)" << std::endl;
+  }
+  for (const char* kind : {"place", "stack"}) {
+    const eval::TabletopEvalSummary::Tally t = s->DashTally(kind);
+    if (t.episodes == 0) continue;
+    std::snprintf(
+        buf, sizeof(buf),
+        "DASH's protocol (a box or cylinder moved), %s: %.1f%% of %d, %.1f%% excluding "
+        "motion-planning failures",
+        kind, 100.0 * t.successes / t.episodes, t.episodes,
+        t.episodes > t.plan_failures ? 100.0 * t.successes / (t.episodes - t.plan_failures) : 0.0);
+    out << buf << std::endl;
+  }
   out << "wrote " << dir << "/summary.json and " << dir << "/episodes.jsonl" << std::endl;
   return kExitOk;
 }

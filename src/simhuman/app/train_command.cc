@@ -100,6 +100,7 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err,
                          absl::InvalidArgumentError("--out (or --resume) is required"));
     }
     learn::PpoConfig cfg;
+    bool config_names_task = false;
     if (!flags.config.empty()) {
       std::ifstream f(flags.config);
       if (!f) return ReportError(err, "train", absl::NotFoundError(flags.config + ": cannot open"));
@@ -110,8 +111,10 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err,
       auto c = learn::PpoConfig::FromJson(j);
       if (!c.ok()) return ReportError(err, "train", core::Annotate(c.status(), flags.config));
       cfg = *c;
+      config_names_task = j.contains("task");
     }
-    cfg.task = flags.task;
+    // --task wins; without it, the config's task (a grasp config trains grasping, not walking)
+    if (flags.task_given || !config_names_task) cfg.task = flags.task;
     cfg.total_steps = steps;
     if (flags.seed_given || flags.config.empty()) cfg.seed = flags.seed;
     if (flags.envs) cfg.num_envs = flags.envs;

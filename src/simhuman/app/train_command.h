@@ -20,7 +20,7 @@ struct TrainFlags {
   uint64_t seed = 1;
   int envs = 0;     ///< 0: the config's default
   int threads = 0;  ///< 0: the config's default
-  bool steps_given = false, seed_given = false;
+  bool steps_given = false, seed_given = false, task_given = false;
   bool quiet = false;     ///< no progress bar (logs still written)
   std::string amp_clips;  ///< comma-separated clip/BVH paths (AMP on; replaces the config's)
   std::string init_from;  ///< policy file to start a new run's policy from (fine-tuning)

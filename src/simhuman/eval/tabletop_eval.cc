@@ -67,8 +67,39 @@ double RawStepsPerSecond(const mjModel* m, const mjData* from) {
 
 }  // namespace
 
+TabletopEvalSummary::Tally TabletopEvalSummary::DashTally(const std::string& kind) const {
+  Tally t;
+  for (const char* shape : {"box", "cylinder"}) {
+    const auto it = by_task.find(kind + "/" + shape);
+    if (it == by_task.end()) continue;
+    t.episodes += it->second.episodes;
+    t.successes += it->second.successes;
+    t.plan_failures += it->second.plan_failures;
+  }
+  return t;
+}
+
+namespace {
+
+nlohmann::json TallyJson(const TabletopEvalSummary::Tally& t) {
+  const int planned = t.episodes - t.plan_failures;
+  return {{"episodes", t.episodes},
+          {"successes", t.successes},
+          {"plan_failures", t.plan_failures},
+          {"success_rate", t.episodes ? static_cast<double>(t.successes) / t.episodes : 0.0},
+          {"success_rate_excluding_plan_failures",
+           planned ? static_cast<double>(t.successes) / planned : 0.0}};
+}
+
+}  // namespace
+
 nlohmann::json TabletopEvalSummary::ToJson() const {
+  nlohmann::json tasks = nlohmann::json::object();
+  for (const auto& [key, t] : by_task) tasks[key] = TallyJson(t);
   return {{"episodes", episodes},
+          {"by_task", tasks},
+          {"dash_protocol",
+           {{"place", TallyJson(DashTally("place"))}, {"stack", TallyJson(DashTally("stack"))}}},
           {"successes", successes},
           {"plan_failures", plan_failures},
           {"success_rate", success_rate},
@@ -95,11 +126,8 @@ nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
 core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     const TabletopEvalOptions& o, const std::function<void(const TabletopEpisode&)>& on_episode) {
   if (o.episodes < 1) return absl::InvalidArgumentError("--episodes must be >= 1");
-  std::optional<control::manip::GraspPolicyFn> policy;
-  if (o.grasp != "scripted") {
-    SH_ASSIGN_OR_RETURN(control::manip::GraspPolicyFn p, control::LoadGraspPolicy(o.grasp));
-    policy = p;
-  }
+  SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
+                      control::LoadGraspPolicy(o.grasp));
   const control::manip::TabletopOptions pipeline;  // named: GCC 12 misreads a default temporary
   TabletopEvalSummary sum;
   int64_t steps = 0;
@@ -120,8 +148,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, GoalOf(ts, *w));
     if (i == 0) raw = RawStepsPerSecond(w->model(), w->data());
     const control::manip::GraspPolicyFn grasp =
-        policy ? *policy
-               : control::manip::MakeScriptedGrasp(w->model(), w->data(), ix, goal, pipeline);
+        make_grasp(w->model(), w->data(), ix, goal, pipeline);
     const control::manip::TabletopResult r =
         control::manip::RunTabletop(*w, ix, goal, grasp, pipeline);
     TabletopEpisode e;
@@ -142,6 +169,10 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     sum.successes += r.success;
     sum.plan_failures += r.plan_failure;
     if (!r.success) ++sum.failures_by_stage[e.failed_stage];
+    TabletopEvalSummary::Tally& t = sum.by_task[e.kind + "/" + e.shape];
+    ++t.episodes;
+    t.successes += r.success;
+    t.plan_failures += r.plan_failure;
     steps += r.sim_steps;
     wall += r.wall_s;
     if (on_episode) on_episode(e);
@@ -230,12 +261,9 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
   SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopGoalFromPlan(chain, w));
   SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(w, 0, true));
   const control::manip::TabletopOptions options;
-  control::manip::GraspPolicyFn grasp;
-  if (grasp_policy == "scripted") {
-    grasp = control::manip::MakeScriptedGrasp(w.model(), w.data(), ix, goal, options);
-  } else {
-    SH_ASSIGN_OR_RETURN(grasp, control::LoadGraspPolicy(grasp_policy));
-  }
+  SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
+                      control::LoadGraspPolicy(grasp_policy));
+  const control::manip::GraspPolicyFn grasp = make_grasp(w.model(), w.data(), ix, goal, options);
   const mjModel* m = w.model();
   if (trajectory) {
     *trajectory = control::Trajectory();

@@ -45,6 +45,15 @@ struct TabletopEvalSummary {
   double success_rate = 0;               ///< over all trials
   double success_rate_no_plan_fail = 0;  ///< excluding motion-planning failures (DASH reports it)
   std::map<std::string, int> failures_by_stage;
+  /// Per task, keyed "<kind>/<shape of the object moved>" (e.g. "stack/cylinder").
+  struct Tally {
+    int episodes = 0, successes = 0, plan_failures = 0;
+  };
+  std::map<std::string, Tally> by_task;
+  /// DASH's protocol beside ours: only episodes that move a box or a cylinder (DASH trained its
+  /// sphere policy "for qualitative demonstrations only", Appendix A.3.5, so its 200-scene
+  /// numbers move boxes and cylinders; spheres stay in its scenes as other objects).
+  Tally DashTally(const std::string& kind) const;
   double steps_per_s = 0;      ///< the whole pipeline (planning, policy, physics), no rendering
   double raw_steps_per_s = 0;  ///< mj_step alone on the same model, same run
   nlohmann::json ToJson() const;

@@ -12,9 +12,10 @@ TEST(TabletopEvalTest, EpisodesAndTheFailureTableAddUpIntegration) {
   TabletopEvalOptions o;
   o.episodes = 3;
   o.seed = 2;
-  int seen = 0;
+  int seen = 0, moved_round_or_box = 0, moved_sphere = 0;
   auto s = RunTabletopEval(o, [&](const TabletopEpisode& e) {
     ++seen;
+    (e.shape == "sphere" ? moved_sphere : moved_round_or_box)++;
     EXPECT_FALSE(e.end_reason.empty());
     EXPECT_EQ(e.success, e.failed_stage.empty());
     EXPECT_TRUE(e.kind == "place" || e.kind == "stack");
@@ -30,6 +31,17 @@ TEST(TabletopEvalTest, EpisodesAndTheFailureTableAddUpIntegration) {
   EXPECT_EQ(failed + s->successes, s->episodes);
   EXPECT_GT(s->raw_steps_per_s, 0);
   EXPECT_EQ(s->ToJson()["episodes"], 3);
+  // the per-task tallies add up, and DASH's protocol counts the boxes and cylinders moved
+  int tallied = 0, tallied_successes = 0;
+  for (const auto& [task, t] : s->by_task) {
+    tallied += t.episodes;
+    tallied_successes += t.successes;
+  }
+  EXPECT_EQ(tallied, 3);
+  EXPECT_EQ(tallied_successes, s->successes);
+  EXPECT_EQ(s->DashTally("place").episodes + s->DashTally("stack").episodes, moved_round_or_box);
+  EXPECT_EQ(3 - moved_round_or_box, moved_sphere);
+  EXPECT_TRUE(s->ToJson()["dash_protocol"].contains("stack"));
 }
 
 TEST(TabletopEvalTest, AnUnloadableGraspPolicyIsNamed) {

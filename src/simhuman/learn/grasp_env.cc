@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "simhuman/control/manip/scripted_grasp.h"
 #include "simhuman/world/objects.h"
 #include "simhuman/world/scene.h"
 #include "simhuman/world/seating.h"
@@ -48,9 +49,10 @@ int FingerDof(int finger, int joint) { return ArmChain::kDofs + 1 + 4 * finger +
 
 }  // namespace
 
-core::StatusOr<std::unique_ptr<GraspTask>> GraspTask::Create(int num_envs) {
+core::StatusOr<std::unique_ptr<GraspTask>> GraspTask::Create(int num_envs, bool residual) {
   if (num_envs <= 0) return absl::InvalidArgumentError("grasp task: --envs must be positive");
   std::unique_ptr<GraspTask> t(new GraspTask());
+  t->residual_ = residual;
   world::SceneSpec spec = world::TabletopBaseScene("grasp");
   SH_ASSIGN_OR_RETURN(core::SceneCatalog scene, world::BuildCatalog(spec));
   scene.objects.push_back(MakeObject());
@@ -70,7 +72,14 @@ core::StatusOr<std::unique_ptr<GraspTask>> GraspTask::Create(int num_envs) {
     const std::string g = world::ObjectBodyName(kObjectId) + "/" + std::to_string(k);
     t->object_geom_[k] = mj_name2id(m, mjOBJ_GEOM, g.c_str());
   }
-  if (t->object_body_ < 0 || t->object_geom_[2] < 0) {
+  for (int g = 0; g < m->ngeom; ++g) {
+    const char* name = mj_id2name(m, mjOBJ_GEOM, g);
+    if (m->geom_bodyid[g] == t->object_body_ && name &&
+        std::string(name).find("/rim") != std::string::npos) {
+      t->rim_geoms_.push_back(g);
+    }
+  }
+  if (t->object_body_ < 0 || t->object_geom_[2] < 0 || t->rim_geoms_.size() != 16) {
     return absl::InternalError("grasp task: the object's body or geoms are missing");
   }
   t->object_qpos_ = m->jnt_qposadr[m->body_jntadr[t->object_body_]];
@@ -131,6 +140,18 @@ void GraspTask::Shape(Env& e) const {
     }
     m->geom_pos[3 * g + 2] = half_h;
   }
+  // the cylinder's two rest rings follow its size; off for the other shapes
+  const bool cylinder = p.shape == GraspShape::kCylinder;
+  for (size_t k = 0; k < rim_geoms_.size(); ++k) {
+    const int g = rim_geoms_[k];
+    m->geom_contype[g] = m->geom_conaffinity[g] = cylinder ? 1 : 0;
+    if (!cylinder) continue;
+    const double r = p.width_m / 2, rf = m->geom_size[3 * g];
+    const double a = 2 * M_PI * static_cast<double>(k % 8) / 8;
+    m->geom_pos[3 * g + 0] = (r - rf) * std::cos(a);
+    m->geom_pos[3 * g + 1] = (r - rf) * std::sin(a);
+    m->geom_pos[3 * g + 2] = k < 8 ? rf : p.height_m - rf;
+  }
   // mass and inertia of the active solid (uniform density)
   const double mass = p.mass_kg;
   double ixx = 0, izz = 0;
@@ -156,22 +177,37 @@ void GraspTask::SetTableCollisions(Env& e, bool on) const {
   for (int g : table_geoms_) e.m->geom_contype[g] = e.m->geom_conaffinity[g] = on ? 1 : 0;
 }
 
-bool GraspTask::PlaceArm(Env& e, core::Rng& rng) const {
+control::manip::TabletopGoal GraspTask::Goal(const Env& e) const {
   const GraspProblem& p = e.problem;
-  const double half_w = p.shape == GraspShape::kSphere ? 0.75 * p.height_m / 2
-                        : p.shape == GraspShape::kBox  ? 0.4 * p.width_m
-                                                       : p.width_m / 2;
-  // the palm beside the object, at a height the hand can close around
-  const double grip_z = p.shape == GraspShape::kSphere ? half_w : std::min(0.055, p.height_m / 3);
-  const Eigen::Vector3d centre = p.planned_pos + Eigen::Vector3d(0, 0, grip_z);
+  control::manip::TabletopGoal g;
+  g.object_body = object_body_;
+  g.shape = p.shape;
+  g.half_width_m = p.shape == GraspShape::kSphere ? 0.75 * p.height_m / 2
+                   : p.shape == GraspShape::kBox  ? 0.4 * p.width_m
+                                                  : p.width_m / 2;
+  g.height_m = p.shape == GraspShape::kSphere ? 2 * g.half_width_m : p.height_m;
+  g.planned_pos = p.planned_pos;
+  return g;
+}
+
+bool GraspTask::PlaceArm(Env& e, core::Rng& rng) const {
+  // where the pipeline's reach leaves the hand (tabletop_pipeline.h): the palm at the grip
+  // height, the pre-grasp gap from the object's side, the object ahead of the palm's centre;
+  // each jittered by a centimetre or so
+  const control::manip::TabletopOptions pipe;
+  const control::manip::TabletopGoal g = Goal(e);
+  const Eigen::Vector3d centre =
+      g.planned_pos + Eigen::Vector3d(0, 0, control::manip::GripHeightM(g, pipe));
+  const double behind = std::max(pipe.palm_behind_m, g.half_width_m - pipe.palm_behind_margin_m);
   mju_copy(e.scratch->qpos, e.d->qpos, e.m->nq);
   const Eigen::VectorXd rest = ix_.arm.Get(e.d);
   for (int attempt = 0; attempt < 12; ++attempt) {
     // DASH's theta; approaches from behind the object (the far side) are rarely reachable
     const double yaw = rng.Uniform(-2.2, 1.2);
-    const double standoff = half_w + rng.Uniform(0.01, 0.04);
+    const double standoff = g.half_width_m + pipe.pregrasp_gap_m + rng.Uniform(-0.015, 0.015);
     const control::manip::PalmPose pose =
-        control::manip::SideGraspPose(centre, standoff, yaw, true, rng.Uniform(0.02, 0.05));
+        control::manip::SideGraspPose(centre + Eigen::Vector3d(0, 0, rng.Uniform(-0.01, 0.01)),
+                                      standoff, yaw, true, behind + rng.Uniform(-0.01, 0.01));
     const control::manip::IkResult r =
         control::manip::SolvePalmIk(e.m, e.scratch, ix_.arm, pose, rest, rest);
     if (!r.converged) continue;
@@ -223,6 +259,10 @@ void GraspTask::Reset(int i, uint64_t seed, float* obs) {
   e.s.shape = e.problem.shape;
   e.s.task_pos = e.problem.planned_pos;
   control::manip::HoldCurrentPose(e.d, ix_, &e.s);
+  if (residual_) {
+    const control::manip::TabletopOptions pipe;  // named: GCC 12 misreads a default temporary
+    e.scripted = control::manip::MakeScriptedGrasp(e.m, e.d, ix_, Goal(e), pipe);
+  }
   e.steps = 0;
   e.dropped_in_test = false;
   control::manip::GraspObservation(e.m, e.d, ix_, e.s, obs);
@@ -275,7 +315,16 @@ double GraspTask::Reward(Env& e, bool drop_test) {
 
 void GraspTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   Env& e = envs_[i];
-  control::manip::ApplyGraspAction(ix_, action, &e.s);
+  if (residual_) {
+    float obs_now[control::manip::kGraspObsDim], base[control::manip::kGraspActDim];
+    control::manip::GraspObservation(e.m, e.d, ix_, e.s, obs_now);
+    e.scripted(obs_now, base);
+    float sum[control::manip::kGraspActDim];
+    control::manip::AddGraspResidual(base, action, sum);
+    control::manip::ApplyGraspAction(ix_, sum, &e.s);
+  } else {
+    control::manip::ApplyGraspAction(ix_, action, &e.s);
+  }
   const bool drop_test = e.steps >= kGraspSteps;
   if (e.steps == kGraspSteps) {
     // the drop test: the table no longer holds the object, a downward pull of half its weight

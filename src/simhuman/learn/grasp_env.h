@@ -15,11 +15,16 @@
 ///
 /// Each env owns a copy of the model: the object's shape, size, mass and friction change per
 /// episode, and the drop test switches the table's collisions off.
+///
+/// The residual variant ("grasp-residual") learns a correction on top of the scripted grasp
+/// (control/manip/scripted_grasp.h): the targets move by the scripted action plus
+/// kGraspResidualScale times the policy's, so training starts from the scripted grasp's skill.
 
 #include <memory>
 #include <vector>
 
 #include "simhuman/control/manip/grasp_task.h"
+#include "simhuman/control/manip/tabletop_pipeline.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/learn/vec_env.h"
 #include "simhuman/world/sim_world.h"
@@ -36,9 +41,10 @@ struct GraspProblem {
 
 class GraspTask : public VecTask {
  public:
-  static core::StatusOr<std::unique_ptr<GraspTask>> Create(int num_envs);
+  /// `residual`: the policy's action is added to the scripted grasp's (the "grasp-residual" task).
+  static core::StatusOr<std::unique_ptr<GraspTask>> Create(int num_envs, bool residual = false);
   ~GraspTask() override;
-  std::string name() const override { return "grasp"; }
+  std::string name() const override { return residual_ ? "grasp-residual" : "grasp"; }
   int num_envs() const override { return static_cast<int>(envs_.size()); }
   int obs_dim() const override { return control::manip::kGraspObsDim; }
   int act_dim() const override { return control::manip::kGraspActDim; }
@@ -65,21 +71,25 @@ class GraspTask : public VecTask {
     mjData* scratch = nullptr;
     control::manip::GraspState s;
     GraspProblem problem;
+    control::manip::GraspPolicyFn scripted;  ///< the residual task's base action
     int steps = 0;
     bool dropped_in_test = false;
   };
   GraspTask() = default;
   void Shape(Env& e) const;                     // writes the problem's object into the env's model
   bool PlaceArm(Env& e, core::Rng& rng) const;  // IK to a side-grasp start; false if none
+  control::manip::TabletopGoal Goal(const Env& e) const;  // the problem as the pipeline's goal
   double Reward(Env& e, bool drop_test);
   void SetTableCollisions(Env& e, bool on) const;
 
+  bool residual_ = false;
   std::unique_ptr<world::SimWorld> world_;
   control::manip::GraspIndex ix_;
   std::vector<Env> envs_;
   std::vector<double> seated_qpos_, seated_ctrl_;
   int object_body_ = -1, object_qpos_ = -1, object_dof_ = -1;
   int object_geom_[3] = {-1, -1, -1};  // box, cylinder, sphere
+  std::vector<int> rim_geoms_;         // the cylinder's rest rings (world/model_builder.h)
   std::vector<int> table_geoms_;
   double table_top_z_ = 0;
 };

@@ -2,7 +2,9 @@
 
 namespace simhuman::learn {
 
-std::vector<std::string> TaskNames() { return {"walk", "reach", "carry", "grasp"}; }
+std::vector<std::string> TaskNames() {
+  return {"walk", "reach", "carry", "grasp", "grasp-residual"};
+}
 
 bool TaskHasSolverChoice(std::string_view name) { return name == "walk"; }
 

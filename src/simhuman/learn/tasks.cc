@@ -37,6 +37,14 @@ const std::vector<TaskDef>& Tasks() {
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "", false},
+      {"grasp-residual",
+       "the grasp task as a correction added to the scripted grasp's action (DASH's stage "
+       "started from a training-free grasp)",
+       [](int envs, const std::string&) -> core::StatusOr<std::unique_ptr<VecTask>> {
+         SH_ASSIGN_OR_RETURN(std::unique_ptr<GraspTask> t, GraspTask::Create(envs, true));
+         return std::unique_ptr<VecTask>(std::move(t));
+       },
+       "", false},
   };
   return tasks;
 }

@@ -1,5 +1,6 @@
 #include "simhuman/world/model_builder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -58,6 +59,37 @@ bool SameShape(const core::Shape& a, const core::Shape& b) {
          (a.pose.pos - b.pose.pos).norm() < 1e-12 && a.pose.quat.isApprox(b.pose.quat, 1e-12);
 }
 
+// A cylinder's face resting on a flat one touches it at one point in MuJoCo's general convex
+// collision, so a standing cylinder rocks and spins for ever (measured: 0.27 rad/s after 4 s).
+// Eight massless spheres inside its rim, flush with the face and the side and not drawn, give
+// each open face (not shared with another cylinder of the object) a ring of contacts to rest on.
+std::string CylinderRims(const core::CatalogObject& obj, const core::Shape& s,
+                         const std::string& contact, int* n) {
+  if (s.kind != core::ShapeKind::kCylinder || !obj.movable || !obj.collides) return "";
+  const double r = s.size.x(), hh = s.size.y();
+  const double rf = std::min(0.003, 0.2 * std::min(r, hh));
+  std::string out;
+  const Eigen::Vector3d axis = s.pose.quat * Eigen::Vector3d::UnitZ();
+  for (int end : {-1, 1}) {
+    const Eigen::Vector3d face = s.pose.pos + end * hh * axis;
+    bool shared = false;
+    for (const core::Shape& o : obj.shapes) {
+      if (&o == &s || o.kind != core::ShapeKind::kCylinder) continue;
+      const Eigen::Vector3d oa = o.pose.quat * Eigen::Vector3d::UnitZ();
+      for (int oe : {-1, 1}) shared |= (o.pose.pos + oe * o.size.y() * oa - face).norm() < 1e-9;
+    }
+    if (shared) continue;
+    for (int k = 0; k < 8; ++k) {
+      const double a = 2 * M_PI * k / 8;
+      const Eigen::Vector3d local((r - rf) * std::cos(a), (r - rf) * std::sin(a), end * (hh - rf));
+      out += "<geom name=\"obj/" + obj.id + "/rim" + std::to_string((*n)++) +
+             "\" type=\"sphere\" size=\"" + F(rf) + "\" pos=\"" +
+             V3(s.pose.pos + s.pose.quat * local) + "\" mass=\"0\" group=\"3\"" + contact + "/>\n";
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string AgentPrefix(int agent) { return agent == 0 ? "" : "h" + std::to_string(agent) + "/"; }
@@ -74,12 +106,21 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
     return absl::InvalidArgumentError("model option solver '" + options.solver +
                                       "' is unknown; valid: newton, pgs");
   }
+  if (options.cone != "pyramidal" && options.cone != "elliptic") {
+    return absl::InvalidArgumentError("model option cone '" + options.cone +
+                                      "' is unknown; valid: pyramidal, elliptic");
+  }
+  if (!(options.impratio >= 1) || !std::isfinite(options.impratio)) {
+    return absl::InvalidArgumentError("model option impratio " + F(options.impratio) +
+                                      " must be a finite number >= 1");
+  }
   std::ostringstream o;
   o << "<mujoco model=\"simhuman\">\n"
     << "<compiler angle=\"degree\" autolimits=\"true\"/>\n"
     << "<option timestep=\"" << F(options.timestep_s) << "\" iterations=\""
     << options.solver_iterations << "\" integrator=\"Euler\" solver=\""
-    << (options.solver == "pgs" ? "PGS" : "Newton") << "\"/>\n"
+    << (options.solver == "pgs" ? "PGS" : "Newton") << "\" cone=\"" << options.cone
+    << "\" impratio=\"" << F(options.impratio) << "\"/>\n"
     << "<size nconmax=\"1500\" njmax=\"4000\" nstack=\"3000000\"/>\n"
     << "<visual><global offwidth=\"" << options.offscreen_width << "\" offheight=\""
     << options.offscreen_height << "\"/><quality shadowsize=\"2048\"/>"
@@ -118,7 +159,7 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
                                         " must be a positive finite number");
     }
     const std::string sliding = F(obj.friction.value_or(kDefaultSlidingFriction));
-    int n = 0;
+    int n = 0, rims = 0;
     for (const core::Shape& s : obj.shapes) {
       if (!s.size.allFinite() || (s.size.array() < 0).any()) {
         return absl::InvalidArgumentError("object '" + obj.id + "': shape " + std::to_string(n) +
@@ -142,18 +183,19 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
       if (soft) o << " solref=\"0.04 1\" solimp=\"0.2 0.9 0.05\"";
       // mattresses give a little less than pillows
       if (cushion) o << " solref=\"0.03 1\" solimp=\"0.4 0.95 0.04\"";
+      std::string contact;
       if (obj.movable) {
         o << " mass=\"" << F(obj.mass_kg / std::max<size_t>(1, obj.shapes.size())) << "\"";
         // a hand is a patch, not a point: torsional friction lets two pressing palms resist
         // the object turning about the line between them (what carrying relies on)
-        o << " condim=\"4\" friction=\"" << sliding << " 0.05 0.01\"";
+        contact = " condim=\"4\" friction=\"" + sliding + " 0.05 0.01\"";
       } else if (obj.friction) {
-        o << " friction=\"" << sliding << " 0.02 0.01\"";
+        contact = " friction=\"" + sliding + " 0.02 0.01\"";
       }
       // MuJoCo combines two geoms' friction by the larger; priority 1 makes an object's own
       // coefficient the one its contacts use (with the table, the floor, a hand)
-      if (obj.friction) o << " priority=\"1\"";
-      o << "/>\n";
+      if (obj.friction) contact += " priority=\"1\"";
+      o << contact << "/>\n" << CylinderRims(obj, s, contact, &rims);
     }
     o << "</body>\n";
   }

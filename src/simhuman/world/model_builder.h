@@ -18,6 +18,11 @@ struct ModelOptions {
   /// MuJoCo constraint solver: "newton" (default) or "pgs" (a faster, looser fit of the same
   /// contact problem; the walking task can train with it).
   std::string solver = "newton";
+  /// Friction cone: "pyramidal" (default) or "elliptic" (truer to Coulomb; grasping uses it).
+  std::string cone = "pyramidal";
+  /// Ratio of frictional to normal constraint impedance (>= 1); above 1 friction slips less,
+  /// which a held object needs (MuJoCo's documentation suggests about 10 for grasps).
+  double impratio = 1;
   int offscreen_width = 640;  ///< framebuffer for headless rendering
   int offscreen_height = 480;
 };

@@ -113,4 +113,11 @@ void WriteGraspCtrl(const mjModel* m, mjData* d, const GraspIndex& ix, const Gra
   }
 }
 
+void AddGraspResidual(const float* base, const float* residual, float* out) {
+  for (int i = 0; i < kGraspActDim; ++i) {
+    const float r = std::isfinite(residual[i]) ? residual[i] : 0.0f;
+    out[i] = std::clamp(base[i] + static_cast<float>(kGraspResidualScale) * r, -1.0f, 1.0f);
+  }
+}
+
 }  // namespace simhuman::control::manip

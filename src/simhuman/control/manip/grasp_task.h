@@ -34,6 +34,13 @@ inline constexpr int kGraspObsDim =
 inline constexpr double kArmStepRad = 0.04;     ///< largest arm target change per policy step
 inline constexpr double kFingerStepRad = 0.12;  ///< largest finger target change per step
 
+/// A residual grasp policy's action is scaled by this before it is added to the scripted
+/// grasp's (scripted_grasp.h; the "grasp-residual" training task).
+inline constexpr double kGraspResidualScale = 0.5;
+
+/// out = base + kGraspResidualScale * residual, clipped to [-1, 1] (kGraspActDim floats each).
+void AddGraspResidual(const float* base, const float* residual, float* out);
+
 /// Shapes the policy is told about (the one-hot).
 enum class GraspShape { kBox = 0, kCylinder = 1, kSphere = 2 };
 

@@ -4,23 +4,37 @@
 #include <cmath>
 #include <memory>
 
+#include "simhuman/control/manip/scripted_grasp.h"
 #include "simhuman/control/policy/policy_net.h"
 
 namespace simhuman::control {
 
-core::StatusOr<manip::GraspPolicyFn> LoadGraspPolicy(const std::string& path) {
+namespace {
+
+manip::GraspPolicyFn Scripted(const mjModel* m, const mjData* d, const manip::GraspIndex& ix,
+                              const manip::TabletopGoal& goal,
+                              const manip::TabletopOptions& options) {
+  return manip::MakeScriptedGrasp(m, d, ix, goal, options);
+}
+
+}  // namespace
+
+core::StatusOr<GraspPolicyMaker> LoadGraspPolicy(const std::string& name_or_path) {
+  if (name_or_path == "scripted") return GraspPolicyMaker(Scripted);
+  const std::string& path = name_or_path;
   SH_ASSIGN_OR_RETURN(LoadedPolicy loaded, LoadPolicyFile(path));
-  if (loaded.meta.task != "grasp" || loaded.meta.obs_dim != manip::kGraspObsDim ||
+  const bool residual = loaded.meta.task == "grasp-residual";
+  if ((loaded.meta.task != "grasp" && !residual) || loaded.meta.obs_dim != manip::kGraspObsDim ||
       loaded.meta.act_dim != manip::kGraspActDim) {
     return absl::InvalidArgumentError(
         "grasp policy '" + path + "' is a '" + loaded.meta.task + "' policy with " +
         std::to_string(loaded.meta.obs_dim) + " observations and " +
-        std::to_string(loaded.meta.act_dim) + " actions; a grasp policy has " +
+        std::to_string(loaded.meta.act_dim) + " actions; a grasp or grasp-residual policy has " +
         std::to_string(manip::kGraspObsDim) + " and " + std::to_string(manip::kGraspActDim) +
-        " (train one with: simhuman train --task grasp)");
+        " (train one with: simhuman train --task grasp-residual), or use 'scripted'");
   }
   auto policy = std::make_shared<LoadedPolicy>(std::move(loaded));
-  return manip::GraspPolicyFn([policy](const float* obs, float* act) {
+  const manip::GraspPolicyFn learned = [policy](const float* obs, float* act) {
     std::fill(act, act + manip::kGraspActDim, 0.0f);
     for (int i = 0; i < manip::kGraspObsDim; ++i) {
       if (!std::isfinite(obs[i])) return;
@@ -34,6 +48,22 @@ core::StatusOr<manip::GraspPolicyFn> LoadGraspPolicy(const std::string& path) {
     } catch (const c10::Error&) {
       std::fill(act, act + manip::kGraspActDim, 0.0f);
     }
+  };
+  if (!residual) {
+    return GraspPolicyMaker([learned](const mjModel*, const mjData*, const manip::GraspIndex&,
+                                      const manip::TabletopGoal&,
+                                      const manip::TabletopOptions&) { return learned; });
+  }
+  return GraspPolicyMaker([learned](const mjModel* m, const mjData* d, const manip::GraspIndex& ix,
+                                    const manip::TabletopGoal& goal,
+                                    const manip::TabletopOptions& options) {
+    const manip::GraspPolicyFn base = Scripted(m, d, ix, goal, options);
+    return manip::GraspPolicyFn([base, learned](const float* obs, float* act) {
+      float b[manip::kGraspActDim], r[manip::kGraspActDim];
+      base(obs, b);
+      learned(obs, r);
+      manip::AddGraspResidual(b, r, act);
+    });
   });
 }
 
