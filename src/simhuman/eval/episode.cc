@@ -12,7 +12,9 @@
 #include "simhuman/core/json_io.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/core/version.h"
+#include "simhuman/world/embodiment.h"
 #include "simhuman/world/seating.h"
+#include "simhuman/world/tabletop.h"
 
 namespace simhuman::eval {
 
@@ -43,7 +45,14 @@ core::StatusOr<std::unique_ptr<world::SimWorld>> BuildWorld(const world::SceneSp
   if (placements.empty()) {
     return absl::InvalidArgumentError("scene '" + spec.name + "' has no humans");
   }
-  core::StatusOr<std::unique_ptr<world::SimWorld>> w = world::SimWorld::Create(catalog, placements);
+  // a dexterous hand gets the tabletop physics (240 Hz, elliptic friction cones)
+  bool dexterous = false;
+  for (const world::AgentSpec& a : placements) {
+    core::StatusOr<const world::Embodiment*> kind = world::FindEmbodiment(a.kind);
+    dexterous |= kind.ok() && ((*kind)->right_hand || (*kind)->left_hand);
+  }
+  core::StatusOr<std::unique_ptr<world::SimWorld>> w = world::SimWorld::Create(
+      catalog, placements, dexterous ? world::DexterousModelOptions() : world::ModelOptions());
   if (!w.ok()) return core::Annotate(w.status(), "scene '" + spec.name + "'");
   return w;
 }

@@ -140,8 +140,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     SH_ASSIGN_OR_RETURN(core::SceneCatalog catalog, world::BuildCatalog(ts.scene));
     SH_ASSIGN_OR_RETURN(world::AgentSpec human,
                         world::AgentFromHuman(ts.scene.humans[0], 0, catalog));
-    world::ModelOptions opt;
-    opt.timestep_s = 1.0 / 240;
+    const world::ModelOptions opt = world::DexterousModelOptions();
     SH_ASSIGN_OR_RETURN(std::unique_ptr<world::SimWorld> w,
                         world::SimWorld::Create(catalog, {human}, opt));
     SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(*w, 0, true));

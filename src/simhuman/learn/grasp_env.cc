@@ -57,8 +57,7 @@ core::StatusOr<std::unique_ptr<GraspTask>> GraspTask::Create(int num_envs, bool 
   SH_ASSIGN_OR_RETURN(core::SceneCatalog scene, world::BuildCatalog(spec));
   scene.objects.push_back(MakeObject());
   SH_ASSIGN_OR_RETURN(world::AgentSpec human, world::AgentFromHuman(spec.humans[0], 0, scene));
-  world::ModelOptions opt;
-  opt.timestep_s = 1.0 / 240;
+  const world::ModelOptions opt = world::DexterousModelOptions();
   SH_ASSIGN_OR_RETURN(t->world_, world::SimWorld::Create(scene, {human}, opt));
   SH_ASSIGN_OR_RETURN(t->ix_, control::manip::MakeGraspIndex(*t->world_, 0, true));
   mjModel* m = t->world_->mutable_model();

@@ -67,5 +67,28 @@ TEST(GraspEnvTest, ClosingTheHandEarnsMoreThanOpeningIt) {
   EXPECT_GT(run(0.6f), run(-0.6f));
 }
 
+// the residual task adds the policy's action to the scripted grasp's: with a zero action its
+// hand closes on the object (the scripted grasp), while the plain task's hand stays open
+TEST(GraspEnvTest, AZeroResidualRunsTheScriptedGraspIntegration) {
+  auto plain = GraspTask::Create(1);
+  auto residual = GraspTask::Create(1, /*residual=*/true);
+  ASSERT_TRUE(plain.ok() && residual.ok());
+  EXPECT_EQ((*residual)->name(), "grasp-residual");
+  auto flexion = [](GraspTask& task) {
+    std::vector<float> obs(task.obs_dim()), act(task.act_dim(), 0.0f);
+    task.Reset(0, 11, obs.data());
+    StepInfo info;
+    for (int k = 0; k < GraspTask::kGraspSteps; ++k) task.Step(0, act.data(), obs.data(), &info);
+    // the four fingers' MCP flexion (after the arm's 7, the palm arch and each abduction)
+    double sum = 0;
+    for (int f = 0; f < 4; ++f) {
+      sum += task.data(0)->qpos[task.index().qpos[control::manip::ArmChain::kDofs + 2 + 4 * f]];
+    }
+    return sum / 4;
+  };
+  EXPECT_LT(std::abs(flexion(**plain)), 0.05);
+  EXPECT_GT(flexion(**residual), 0.3);
+}
+
 }  // namespace
 }  // namespace simhuman::learn

@@ -54,6 +54,22 @@ std::string Rgba(const core::CatalogObject& o, bool part) {
   return F(rgba[0] * k) + " " + F(rgba[1] * k) + " " + F(rgba[2] * k) + " " + F(rgba[3]);
 }
 
+// a solid's volume (m^3)
+double Volume(const core::Shape& s) {
+  const Eigen::Vector3d& z = s.size;
+  switch (s.kind) {
+    case core::ShapeKind::kBox:
+      return 8 * z.x() * z.y() * z.z();
+    case core::ShapeKind::kSphere:
+      return 4.0 / 3 * M_PI * z.x() * z.x() * z.x();
+    case core::ShapeKind::kCylinder:
+      return M_PI * z.x() * z.x() * 2 * z.y();
+    case core::ShapeKind::kCapsule:
+      return M_PI * z.x() * z.x() * (2 * z.y() + 4.0 / 3 * z.x());
+  }
+  return 0;
+}
+
 bool SameShape(const core::Shape& a, const core::Shape& b) {
   return a.kind == b.kind && (a.size - b.size).norm() < 1e-12 &&
          (a.pose.pos - b.pose.pos).norm() < 1e-12 && a.pose.quat.isApprox(b.pose.quat, 1e-12);
@@ -159,6 +175,11 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
                                         " must be a positive finite number");
     }
     const std::string sliding = F(obj.friction.value_or(kDefaultSlidingFriction));
+    // a movable object's mass spread over its solids by volume: uniform density, so a cylinder
+    // built as a thin top slab over the rest has its centre of mass at half its height (an
+    // equal share per solid put half the mass in the slab, the centre at 0.7 of the height)
+    double volume = 0;
+    for (const core::Shape& s : obj.shapes) volume += Volume(s);
     int n = 0, rims = 0;
     for (const core::Shape& s : obj.shapes) {
       if (!s.size.allFinite() || (s.size.array() < 0).any()) {
@@ -185,7 +206,8 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
       if (cushion) o << " solref=\"0.03 1\" solimp=\"0.4 0.95 0.04\"";
       std::string contact;
       if (obj.movable) {
-        o << " mass=\"" << F(obj.mass_kg / std::max<size_t>(1, obj.shapes.size())) << "\"";
+        const double share = volume > 0 ? Volume(s) / volume : 1.0 / obj.shapes.size();
+        o << " mass=\"" << F(obj.mass_kg * share) << "\"";
         // a hand is a patch, not a point: torsional friction lets two pressing palms resist
         // the object turning about the line between them (what carrying relies on)
         contact = " condim=\"4\" friction=\"" + sliding + " 0.05 0.01\"";

@@ -207,6 +207,14 @@ Eigen::Vector3d TabletopRightShoulderWorld() {
                              kTabletopShoulderAbovePelvisM);
 }
 
+ModelOptions DexterousModelOptions() {
+  ModelOptions o;
+  o.timestep_s = 1.0 / 240;
+  o.cone = "elliptic";
+  o.impratio = 3;
+  return o;
+}
+
 SceneSpec TabletopBaseScene(const std::string& name) {
   SceneSpec s;
   s.name = name;

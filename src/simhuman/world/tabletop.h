@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "simhuman/core/status.h"
+#include "simhuman/world/model_builder.h"
 #include "simhuman/world/scene.h"
 
 namespace simhuman::world {
@@ -111,6 +112,12 @@ core::StatusOr<TabletopScene> GenerateTabletop(uint64_t seed, std::string_view k
 
 /// The table, chair and seated human of the layout above, without objects; `name` as given.
 SceneSpec TabletopBaseScene(const std::string& name);
+
+/// Physics of a world with a dexterous hand (the tabletop suites, `run` at a table, the grasp
+/// training task): 240 Hz as DASH, and elliptic friction cones with impratio 3, under which
+/// grasped objects slip less (measured on 59 box and cylinder tasks: 30 done against 22 with
+/// MuJoCo's default pyramidal cones; docs/BENCHMARKS.md).
+ModelOptions DexterousModelOptions();
 
 /// A table-frame point (x, y, z up from the table top) in the world of the layout above.
 Eigen::Vector3d TableToWorld(const Eigen::Vector3d& p_table);

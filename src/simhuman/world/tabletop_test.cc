@@ -273,6 +273,13 @@ TEST(TabletopTest, StandingObjectsComeToRest) {
     ASSERT_TRUE(w.ok()) << w.status();
     mjModel* m = (*w)->mutable_model();
     mjData* d = (*w)->data();
+    // uniform density: each object's centre of mass at half its height (a cylinder's was at 0.7)
+    for (const ObjectSpec& o : t->scene.objects) {
+      const int b = mj_name2id(m, mjOBJ_BODY, ObjectBodyName(o.id).c_str());
+      if (b < 0 || m->body_jntnum[b] != 1) continue;
+      const double h = o.type == "sphere" ? 2 * o.size.at("radius") : o.size.at("height");
+      EXPECT_NEAR(d->xipos[3 * b + 2] - TableTop(), h / 2, 0.002) << o.id;
+    }
     // a nudge, as a hand setting it down gives: every object starts tilted 3 degrees
     for (const ObjectSpec& o : t->scene.objects) {
       const int b = mj_name2id(m, mjOBJ_BODY, ObjectBodyName(o.id).c_str());
