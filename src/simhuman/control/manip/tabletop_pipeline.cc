@@ -86,28 +86,36 @@ class Run {
     return true;
   }
   // the arm angles that put the palm at `p` with the hand's current rotation
-  Eigen::VectorXd IkTo(const Eigen::Vector3d& p, const Eigen::VectorXd& from) {
+  Eigen::VectorXd IkTo(const Eigen::Vector3d& p, const Eigen::VectorXd& from,
+                       const Eigen::Matrix3d* rot = nullptr) {
     mju_copy(scratch_->qpos, d_->qpos, m_->nq);
     PalmPose pose;
     pose.pos = p;
-    pose.rot = Rot(d_, ix_.arm.hand_body);
+    pose.rot = rot ? *rot : Rot(d_, ix_.arm.hand_body);
     IkOptions io;
     io.max_iterations = 40;
     return SolvePalmIk(m_, scratch_, ix_.arm, pose, from, from, io).q;
   }
-  // moves the palm by `delta` (world) over `duration_s`, straight, by IK every 10 ms
+  // moves the palm by `delta` (world) over `duration_s`, straight, by IK every ik_every_steps;
+  // with `turn`, the hand also turns by it (world frame) on the way
   bool MovePalm(ArmTracker& tr, const Eigen::Vector3d& delta, double duration_s,
-                const std::function<bool()>& stop) {
+                const std::function<bool()>& stop, const Eigen::Matrix3d* turn = nullptr) {
     const Eigen::Vector3d p0(d_->site_xpos + 3 * ix_.arm.palm_site);
+    const Eigen::Matrix3d r0 = Rot(d_, ix_.arm.hand_body);
+    const Eigen::Quaterniond full(turn ? *turn : Eigen::Matrix3d::Identity());
     Eigen::VectorXd q = ix_.arm.Get(d_);
     const double t0 = d_->time;
     tr.Reset();
     while (d_->time - t0 < duration_s) {
       const double a = std::min(1.0, (d_->time - t0) / duration_s);
+      const double smooth = a * a * (3 - 2 * a);
       // a new IK target every ik_every_steps (the servos smooth between): the solve is the
       // pipeline's costliest part
-      if (steps_ % std::max(1, o_.ik_every_steps) == 0)
-        q = IkTo(p0 + (a * a * (3 - 2 * a)) * delta, q);
+      if (steps_ % std::max(1, o_.ik_every_steps) == 0) {
+        const Eigen::Matrix3d r =
+            Eigen::Quaterniond::Identity().slerp(smooth, full).toRotationMatrix() * r0;
+        q = IkTo(p0 + smooth * delta, q, turn ? &r : nullptr);
+      }
       if (!Step([&] { tr.Hold(q, d_); })) return false;
       if (stop && stop()) break;
     }
@@ -200,12 +208,14 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
     return PlanArmMotion(m_, d_, scratch_, ix_.arm, around_goals.first, around_goals.second,
                          o_.motion);
   };
-  // a far object: the trunk leans forward first, as a seated person does, so that the arm
-  // ends well inside its reach; then more while no arm pose reaches the object
+  // a far object or target: the trunk leans forward first, as a seated person does, so that
+  // the arm ends well inside its reach at both; then more while no arm pose reaches the object
   const std::string spine = world::AgentPrefix(ix_.arm.agent) + "abdomen_y";
   const int lean_act = mj_name2id(m_, mjOBJ_ACTUATOR, spine.c_str());
   const Eigen::Vector3d shoulder(d_->site_xpos + 3 * ix_.shoulder_site);
-  const double far = std::hypot(centre.x() - shoulder.x(), centre.y() - shoulder.y());
+  const double far =
+      std::max(std::hypot(centre.x() - shoulder.x(), centre.y() - shoulder.y()),
+               std::hypot(g_.target.x() - shoulder.x(), g_.target.y() - shoulder.y()));
   auto lean_to = [&](int k) {
     d_->ctrl[lean_act] = o_.lean_deg[k] * M_PI / 180;
     const Eigen::VectorXd arm_now = ix_.arm.Get(d_);
@@ -316,7 +326,23 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
     return finish(Fail(TabletopStage::kGrasp, "grasp miss: the object did not rise with the hand"));
   }
   if (auto f = Transport(tr)) return finish(*f);
-  // place: down until the object bears on its support
+  // place: the object upright (it tilts in the grip on the way) with its centre of mass over the
+  // target, turning the hand about that centre; then down until it bears on its support
+  for (int k = 0; k < o_.align_passes; ++k) {
+    const Eigen::Vector3d c = ObjectCom();
+    Eigen::Vector3d err = g_.target - c;
+    err.z() = 0;
+    const Eigen::Matrix3d turn = g_.shape == GraspShape::kSphere
+                                     ? Eigen::Matrix3d::Identity()
+                                     : Eigen::Quaterniond::FromTwoVectors(
+                                           Rot(d_, g_.object_body).col(2), Eigen::Vector3d::UnitZ())
+                                           .toRotationMatrix();
+    if (err.norm() < o_.align_tol_m && Eigen::AngleAxisd(turn).angle() < o_.align_tilt_rad) break;
+    const Eigen::Vector3d p(d_->site_xpos + 3 * ix_.arm.palm_site);
+    if (!MovePalm(tr, c + turn * (p - c) - p + err, o_.align_s, {}, &turn)) {
+      return finish(Fail(TabletopStage::kPlace, "unstable simulation"));
+    }
+  }
   const double drop = o_.carry_clearance_m + 0.04;
   if (!MovePalm(tr, Eigen::Vector3d(0, 0, -drop), drop / o_.lower_speed_mps,
                 [&] { return Supported(); })) {

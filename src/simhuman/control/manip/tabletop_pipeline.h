@@ -59,6 +59,14 @@ struct TabletopOptions {
   double lift_m = 0.12;             ///< straight up after the grasp
   double carry_clearance_m = 0.03;  ///< the object's base this high over the target on arrival
   double lower_speed_mps = 0.06;    ///< placing descent
+  /// Before the descent the hand turns the object upright and shifts its centre of mass over
+  /// the target, reading the object's pose (it tilts and slips in the grip during transport;
+  /// DASH's placing policy reads it at 20 Hz): up to `align_passes` moves of `align_s` each,
+  /// until within `align_tol_m` and `align_tilt_rad`
+  int align_passes = 2;
+  double align_s = 0.3;
+  double align_tol_m = 0.005;
+  double align_tilt_rad = 0.05;
   int ik_every_steps = 6;  ///< straight palm moves (lift, lower, retract) re-solve IK so often
   double release_s = 0.4;  ///< the fingers open over this long
   double settle_s = 2.0;   ///< the object must rest this long after the release
