@@ -48,7 +48,7 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
             "training config 'gamma' = 0 is invalid; valid range is (0, 1]");
   EXPECT_EQ(
       Error(json{{"task", "fly"}}),
-      "training config 'task' = \"fly\" is invalid; valid values are: walk, reach, carry, grasp");
+      "training config 'task' = \"fly\" is invalid; valid values are: walk, reach, carry, grasp, grasp-residual");
   EXPECT_EQ(Error(json{{"hidden", json::array()}}),
             "training config 'hidden' = [] is invalid; it needs at least 1 entry");
   EXPECT_THAT(Error(json{{"amp_disc_hidden", {256, -1}}}),
