@@ -46,9 +46,9 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
             "training config 'num_envs' = 5000 is invalid; valid range is [1, 4096]");
   EXPECT_EQ(Error(json{{"gamma", 0}}),
             "training config 'gamma' = 0 is invalid; valid range is (0, 1]");
-  EXPECT_EQ(
-      Error(json{{"task", "fly"}}),
-      "training config 'task' = \"fly\" is invalid; valid values are: walk, reach, carry, grasp, grasp-residual");
+  EXPECT_EQ(Error(json{{"task", "fly"}}),
+            "training config 'task' = \"fly\" is invalid; valid values are: walk, reach, carry, "
+            "grasp, grasp-residual");
   EXPECT_EQ(Error(json{{"hidden", json::array()}}),
             "training config 'hidden' = [] is invalid; it needs at least 1 entry");
   EXPECT_THAT(Error(json{{"amp_disc_hidden", {256, -1}}}),
