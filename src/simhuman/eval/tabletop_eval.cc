@@ -13,13 +13,11 @@
 #include "simhuman/world/tabletop.h"
 
 namespace simhuman::eval {
-namespace {
 
 using control::manip::GraspShape;
 
-// the pipeline's goal for a generated scene's task
-core::StatusOr<control::manip::TabletopGoal> GoalOf(const world::TabletopScene& ts,
-                                                    const world::SimWorld& w) {
+core::StatusOr<control::manip::TabletopGoal> TabletopSceneGoal(const world::TabletopScene& ts,
+                                                               const world::SimWorld& w) {
   const world::ObjectSpec* obj = nullptr;
   for (const world::ObjectSpec& o : ts.scene.objects) {
     if (o.id == ts.task.object_id) obj = &o;
@@ -52,6 +50,8 @@ core::StatusOr<control::manip::TabletopGoal> GoalOf(const world::TabletopScene& 
   }
   return g;
 }
+
+namespace {
 
 double RawStepsPerSecond(const mjModel* m, const mjData* from) {
   mjData* d = mj_makeData(m);
@@ -144,7 +144,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     SH_ASSIGN_OR_RETURN(std::unique_ptr<world::SimWorld> w,
                         world::SimWorld::Create(catalog, {human}, opt));
     SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(*w, 0, true));
-    SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, GoalOf(ts, *w));
+    SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopSceneGoal(ts, *w));
     if (i == 0) raw = RawStepsPerSecond(w->model(), w->data());
     const control::manip::GraspPolicyFn grasp =
         make_grasp(w->model(), w->data(), ix, goal, pipeline);

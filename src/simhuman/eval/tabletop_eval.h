@@ -17,6 +17,7 @@
 #include "simhuman/core/status.h"
 #include "simhuman/plan/contact_chain.h"
 #include "simhuman/world/sim_world.h"
+#include "simhuman/world/tabletop.h"
 
 namespace simhuman::eval {
 
@@ -66,6 +67,11 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     const std::function<void(const TabletopEpisode&)>& on_episode = {});
 
 nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e);
+
+/// The pipeline's goal for a generated scene's task in `world` (built from that scene): the
+/// object's body, shape, sizes and planned base position, the target and the support body.
+core::StatusOr<control::manip::TabletopGoal> TabletopSceneGoal(const world::TabletopScene& ts,
+                                                               const world::SimWorld& world);
 
 /// The grasp policy to use: `flag` when given, else assets/policies/grasp.pt when the checkout
 /// has it, else "scripted".

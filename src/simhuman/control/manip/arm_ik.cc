@@ -185,4 +185,15 @@ PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double 
   return pose;
 }
 
+PalmPose TopGraspPose(const Eigen::Vector3d& top, double standoff_m, double yaw_rad, bool right,
+                      double behind_m) {
+  const Eigen::Vector3d f(std::cos(yaw_rad), std::sin(yaw_rad), 0);
+  PalmPose pose;
+  pose.rot.col(2) = -f;  // fingertips to wrist
+  pose.rot.col(1) = Eigen::Vector3d(0, 0, right ? -1.0 : 1.0);
+  pose.rot.col(0) = pose.rot.col(1).cross(pose.rot.col(2));
+  pose.pos = top + standoff_m * Eigen::Vector3d::UnitZ() - behind_m * f;
+  return pose;
+}
+
 }  // namespace simhuman::control::manip

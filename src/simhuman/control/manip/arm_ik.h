@@ -86,4 +86,12 @@ int ArmContacts(const mjModel* m, mjData* scratch, const ArmChain& arm, const Ei
 PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double yaw_rad, bool right,
                        double behind_m = 0.035);
 
+/// A top-grasp palm pose over a round object whose top is at `top`: the palm faces down from
+/// `standoff_m` above it, the fingers point along the horizontal direction at `yaw_rad` (0: +x)
+/// and the palm point sits `behind_m` back from the top along the fingers (so the object lies
+/// under the base of the fingers, which wrap down around it). The same for either hand (the
+/// left hand's palm faces its frame's -y; its thumb then points to the fingers' right).
+PalmPose TopGraspPose(const Eigen::Vector3d& top, double standoff_m, double yaw_rad, bool right,
+                      double behind_m = 0.01);
+
 }  // namespace simhuman::control::manip

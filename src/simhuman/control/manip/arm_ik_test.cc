@@ -118,5 +118,27 @@ TEST(ArmIkTest, ThePalmInsideTheTableIsAContact) {
   mj_deleteData(d);
 }
 
+TEST(ArmIkTest, ATopGraspPoseHasThePalmDownOverTheTopAndTheFingersAlongTheYaw) {
+  const Eigen::Vector3d top(1.0, -0.1, 0.85);
+  for (bool right : {true, false}) {
+    for (double yaw : {0.0, 0.7, -2.0}) {
+      const PalmPose p = TopGraspPose(top, 0.04, yaw, right, 0.03);
+      EXPECT_TRUE((p.rot.transpose() * p.rot).isIdentity(1e-12));
+      EXPECT_NEAR(p.rot.determinant(), 1.0, 1e-12);
+      // out of the palm: the right palm faces its frame's +y, the left its -y; both face down
+      const Eigen::Vector3d palm_out = right ? p.rot.col(1) : Eigen::Vector3d(-p.rot.col(1));
+      EXPECT_TRUE(palm_out.isApprox(Eigen::Vector3d(0, 0, -1), 1e-12));
+      // fingers (hand -z) horizontal along the yaw; the thumb (hand +x) to the fingers' left for
+      // the right hand (palm down), to their right for the left hand
+      const Eigen::Vector3d f(std::cos(yaw), std::sin(yaw), 0);
+      EXPECT_TRUE((-p.rot.col(2)).isApprox(f, 1e-12));
+      const Eigen::Vector3d left_of_f(-f.y(), f.x(), 0);
+      EXPECT_TRUE(p.rot.col(0).isApprox(right ? left_of_f : Eigen::Vector3d(-left_of_f), 1e-12));
+      // the palm point: 4 cm above the top, 3 cm back from it along the fingers
+      EXPECT_TRUE(p.pos.isApprox(top + Eigen::Vector3d(0, 0, 0.04) - 0.03 * f, 1e-12));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace simhuman::control::manip

@@ -59,6 +59,18 @@ void SetOpenHand(const GraspIndex& ix, mjData* d) {
   }
 }
 
+void SetClawHand(const GraspIndex& ix, mjData* d) {
+  // world/hand.h order after the arm: palm arch, then (abduction, MCP, PIP, DIP) per finger
+  // (index, middle, ring, little; positive abduction toward the little finger), then the thumb
+  // (CMC flexion, CMC abduction, MCP flexion, MCP abduction, IP); degrees
+  constexpr double deg[22] = {10, -15, 25, 25, 10, 0,  25, 25,  10, 8, 25,
+                              25, 10,  18, 25, 25, 10, 40, -20, 40, 0, 40};
+  for (int k = 0; k < 22; ++k) {
+    const int i = ArmChain::kDofs + k;
+    d->qpos[ix.qpos[i]] = std::clamp(deg[k] * M_PI / 180, ix.lo[i], ix.hi[i]);
+  }
+}
+
 void HoldCurrentPose(const mjData* d, const GraspIndex& ix, GraspState* s) {
   for (int i = 0; i < kGraspDofs; ++i) s->target[i] = d->qpos[ix.qpos[i]];
 }

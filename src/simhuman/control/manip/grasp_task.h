@@ -70,6 +70,11 @@ struct GraspState {
 /// palm's way. Only qpos; run kinematics after.
 void SetOpenHand(const GraspIndex& ix, mjData* d);
 
+/// Sets the hand's 22 joints in `d` to the pre-shape of a top grasp of a round object (a claw):
+/// fingers spread and a little curled, the thumb opened across from them, so that the hand can
+/// come down over the object and close around it below its widest part. Only qpos.
+void SetClawHand(const GraspIndex& ix, mjData* d);
+
 /// Targets equal to the current joint angles (the start of a stage).
 void HoldCurrentPose(const mjData* d, const GraspIndex& ix, GraspState* s);
 

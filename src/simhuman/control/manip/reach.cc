@@ -11,15 +11,113 @@ double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-// contacts of the arm with anything but the ignored bodies (the object in hand)
+// the object carried in the hand: where its free joint is and its pose in the hand's frame
+struct Carried {
+  int body = -1, qpos = -1;
+  Eigen::Vector3d pos = Eigen::Vector3d::Zero();  // in the hand frame
+  Eigen::Quaterniond rot = Eigen::Quaterniond::Identity();
+
+  // fixed from the hand and object poses in `d`
+  static Carried From(const mjModel* m, const mjData* d, const ArmChain& arm, int body) {
+    Carried c;
+    const int j = body >= 0 ? m->body_jntadr[body] : -1;
+    if (j < 0 || m->jnt_type[j] != mjJNT_FREE) return c;
+    c.body = body;
+    c.qpos = m->jnt_qposadr[j];
+    const Eigen::Quaterniond qh(d->xquat[4 * arm.hand_body], d->xquat[4 * arm.hand_body + 1],
+                                d->xquat[4 * arm.hand_body + 2], d->xquat[4 * arm.hand_body + 3]);
+    const Eigen::Quaterniond qo(d->xquat[4 * body], d->xquat[4 * body + 1], d->xquat[4 * body + 2],
+                                d->xquat[4 * body + 3]);
+    c.pos = qh.conjugate() *
+            (Eigen::Vector3d(d->xpos + 3 * body) - Eigen::Vector3d(d->xpos + 3 * arm.hand_body));
+    c.rot = qh.conjugate() * qo;
+    return c;
+  }
+  // moves the object in `s` with the hand (after mj_kinematics of the arm's pose)
+  void Place(mjData* s, const ArmChain& arm) const {
+    const Eigen::Quaterniond qh(s->xquat[4 * arm.hand_body], s->xquat[4 * arm.hand_body + 1],
+                                s->xquat[4 * arm.hand_body + 2], s->xquat[4 * arm.hand_body + 3]);
+    const Eigen::Vector3d p = Eigen::Vector3d(s->xpos + 3 * arm.hand_body) + qh * pos;
+    const Eigen::Quaterniond q = qh * rot;
+    for (int k = 0; k < 3; ++k) s->qpos[qpos + k] = p[k];
+    s->qpos[qpos + 3] = q.w();
+    s->qpos[qpos + 4] = q.x();
+    s->qpos[qpos + 5] = q.y();
+    s->qpos[qpos + 6] = q.z();
+  }
+};
+
+// contacts of the arm with anything but the ignored bodies (the object in hand), and of the
+// carried object with anything but the arm
 int Contacts(const mjModel* m, mjData* s, const ArmChain& arm, const Eigen::VectorXd& q,
-             const ArmMotionOptions& o) {
-  if (o.ignore_bodies.empty()) return ArmContacts(m, s, arm, q, -1, o.contact_tolerance_m);
+             const ArmMotionOptions& o, const Carried& carried) {
+  if (carried.body >= 0) {
+    arm.Set(s, q);
+    mj_kinematics(m, s);
+    carried.Place(s, arm);
+  }
   int best = 1 << 30;
-  // ArmContacts ignores one body: count with each ignored and keep what no ignore explains
-  for (int b : o.ignore_bodies)
-    best = std::min(best, ArmContacts(m, s, arm, q, b, o.contact_tolerance_m));
+  if (o.ignore_bodies.empty()) {
+    best = ArmContacts(m, s, arm, q, -1, o.contact_tolerance_m);
+  } else {
+    // ArmContacts ignores one body: count with each ignored and keep what no ignore explains
+    for (int b : o.ignore_bodies)
+      best = std::min(best, ArmContacts(m, s, arm, q, b, o.contact_tolerance_m));
+  }
+  if (carried.body < 0) return best;
+  // the contacts of the last ArmContacts call (the object placed with the hand)
+  for (int c = 0; c < s->ncon; ++c) {
+    const mjContact& con = s->contact[c];
+    if (con.dist > -o.contact_tolerance_m) continue;
+    const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
+    if (b1 != carried.body && b2 != carried.body) continue;
+    const int other = b1 == carried.body ? b2 : b1;
+    if (std::find(arm.bodies.begin(), arm.bodies.end(), other) == arm.bodies.end()) ++best;
+  }
   return best;
+}
+
+}  // namespace
+
+namespace {
+
+struct Candidate {
+  Eigen::VectorXd q;
+  int goal;
+  double wrist;
+};
+
+struct FreePoseCount {
+  int unreached = 0, colliding = 0;
+};
+
+// Collision-free arm poses for the palm poses `goals`, appended to `free`: pass 0 solves each
+// pose once from the current arm, pass 1 from ik_restarts spread-out seeds; `count` tells how
+// many poses had no solution and how many only colliding ones.
+void CollectFreePoses(const mjModel* m, mjData* s, const ArmChain& arm,
+                      const std::vector<PalmPose>& goals, const Eigen::VectorXd& start,
+                      const Eigen::VectorXd& rest, const ArmMotionOptions& o,
+                      const Carried& carried, int pass, std::vector<Candidate>* free,
+                      FreePoseCount* count) {
+  *count = {};
+  for (size_t g = 0; g < goals.size(); ++g) {
+    bool reached = false, found = false;
+    const int first = pass == 0 ? 0 : 1, last = pass == 0 ? 0 : o.ik_restarts;
+    for (int k = first; k <= last && !found; ++k) {
+      Eigen::VectorXd seed = start;
+      for (int i = 0; k > 0 && i < ArmChain::kDofs; ++i) {
+        const double u = std::fmod(0.5 + k * 0.618034 + i * 0.414214, 1.0);
+        seed[i] = arm.lo[i] + (0.15 + 0.7 * u) * (arm.hi[i] - arm.lo[i]);
+      }
+      const IkResult r = SolvePalmIk(m, s, arm, goals[g], seed, rest, o.ik);
+      if (!r.converged) continue;
+      reached = true;
+      if (Contacts(m, s, arm, r.q, o, carried) > 0) continue;
+      free->push_back({r.q, static_cast<int>(g), r.q.tail<3>().norm()});
+      found = true;
+    }
+    if (!found) ++(reached ? count->colliding : count->unreached);
+  }
 }
 
 }  // namespace
@@ -37,6 +135,7 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
   }
   const auto t0 = std::chrono::steady_clock::now();
   mju_copy(s->qpos, d->qpos, m->nq);
+  const Carried carried = Carried::From(m, d, arm, o.carried_body);
   // a joint pressed against its (soft) limit may sit a hair beyond it: plan from the limit
   Eigen::VectorXd start = arm.Get(d);
   for (int i = 0; i < ArmChain::kDofs; ++i) start[i] = std::clamp(start[i], arm.lo[i], arm.hi[i]);
@@ -44,59 +143,58 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
   // keep where they are
   Eigen::VectorXd rest = start;
   rest.tail<3>().setZero();
-  struct Candidate {
-    Eigen::VectorXd q;
-    int goal;
-    double wrist;
-  };
   std::vector<Candidate> free;
-  int unreached = 0, colliding = 0;
-  // every pose from the current arm first; only when none is free, again from spread-out seeds
-  // (an arm reaching far forward is often beyond a local solve from a hanging arm, or its first
-  // solution collides), so the common case costs one solve per pose
-  for (int pass = 0; pass < 2 && free.empty(); ++pass) {
-    if (pass == 1 && o.ik_restarts < 1) break;
-    unreached = colliding = 0;
-    for (size_t g = 0; g < goals.size(); ++g) {
-      bool reached = false, found = false;
-      const int first = pass == 0 ? 0 : 1, last = pass == 0 ? 0 : o.ik_restarts;
-      for (int k = first; k <= last && !found; ++k) {
-        Eigen::VectorXd seed = start;
-        for (int i = 0; k > 0 && i < ArmChain::kDofs; ++i) {
-          const double u = std::fmod(0.5 + k * 0.618034 + i * 0.414214, 1.0);
-          seed[i] = arm.lo[i] + (0.15 + 0.7 * u) * (arm.hi[i] - arm.lo[i]);
-        }
-        const IkResult r = SolvePalmIk(m, s, arm, goals[g], seed, rest, o.ik);
-        if (!r.converged) continue;
-        reached = true;
-        if (Contacts(m, s, arm, r.q, o) > 0) continue;
-        free.push_back({r.q, static_cast<int>(g), r.q.tail<3>().norm()});
-        found = true;
-      }
-      if (!found) ++(reached ? colliding : unreached);
-    }
+  FreePoseCount count;
+  // every pose from the current arm first; only when none is free (or no path reaches the ones
+  // found), again from spread-out seeds (an arm reaching far forward is often beyond a local
+  // solve from a hanging arm, or its first solution collides), so the common case costs one
+  // solve per pose
+  CollectFreePoses(m, s, arm, goals, start, rest, o, carried, 0, &free, &count);
+  bool restarted = false;
+  if (free.empty() && o.ik_restarts > 0) {
+    CollectFreePoses(m, s, arm, goals, start, rest, o, carried, 1, &free, &count);
+    restarted = true;
   }
   if (free.empty()) {
-    return absl::FailedPreconditionError("plan failure: no collision-free arm pose for any of " +
-                                         std::to_string(goals.size()) + " palm poses (" +
-                                         std::to_string(unreached) + " out of the arm's reach, " +
-                                         std::to_string(colliding) + " in collision)");
+    return absl::FailedPreconditionError(
+        "plan failure: no collision-free arm pose for any of " + std::to_string(goals.size()) +
+        " palm poses (" + std::to_string(count.unreached) + " out of the arm's reach, " +
+        std::to_string(count.colliding) + " in collision)");
   }
-  // DASH: the pose with the wrist nearest its rest; the planner may reach any of the best few
-  std::sort(free.begin(), free.end(),
-            [](const Candidate& a, const Candidate& b) { return a.wrist < b.wrist; });
-  if (free.size() > 4) free.resize(4);
-  std::vector<Eigen::VectorXd> qs;
-  for (const Candidate& c : free) qs.push_back(c.q);
   Eigen::VectorXd lo(ArmChain::kDofs), hi(ArmChain::kDofs);
   for (int i = 0; i < ArmChain::kDofs; ++i) {
     lo[i] = arm.lo[i];
     hi[i] = arm.hi[i];
   }
-  const ValidityFn valid = [&](const Eigen::VectorXd& q) { return Contacts(m, s, arm, q, o) == 0; };
+  const ValidityFn valid = [&](const Eigen::VectorXd& q) {
+    return Contacts(m, s, arm, q, o, carried) == 0;
+  };
   PlannerOptions po = o.planner;
   if (po.start_escape_rad <= 0) po.start_escape_rad = 0.05;  // a start resting on the table
-  core::StatusOr<PlanResult> plan = PlanJointPath(start, qs, lo, hi, valid, po);
+  // DASH: the pose with the wrist nearest its rest; the planner may reach any of the best few
+  auto best = [](std::vector<Candidate> c) {
+    std::sort(c.begin(), c.end(),
+              [](const Candidate& a, const Candidate& b) { return a.wrist < b.wrist; });
+    if (c.size() > 4) c.resize(4);
+    return c;
+  };
+  free = best(free);
+  auto search = [&]() {
+    std::vector<Eigen::VectorXd> qs;
+    for (const Candidate& c : free) qs.push_back(c.q);
+    return PlanJointPath(start, qs, lo, hi, valid, po);
+  };
+  core::StatusOr<PlanResult> plan = search();
+  if (!plan.ok() && absl::IsNotFound(plan.status()) && !restarted && o.ik_restarts > 0) {
+    // the poses found from the current arm lie where no path reaches them: others, once
+    std::vector<Candidate> more;
+    FreePoseCount ignored;
+    CollectFreePoses(m, s, arm, goals, start, rest, o, carried, 1, &more, &ignored);
+    if (!more.empty()) {
+      free = best(more);
+      plan = search();
+    }
+  }
   if (!plan.ok()) {
     return core::Annotate(plan.status(), "plan failure");
   }

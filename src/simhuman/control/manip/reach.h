@@ -20,9 +20,19 @@
 
 namespace simhuman::control::manip {
 
+/// The arm planner's defaults: a budget of 20,000 validity checks (about 2 s of full-model
+/// collision checks on the seated humanoid), so that a plan's outcome does not depend on the
+/// machine's load, with a 10 s wall-clock backstop.
+inline PlannerOptions ArmPlannerDefaults() {
+  PlannerOptions p;
+  p.max_validity_checks = 20000;
+  p.time_limit_s = 10;
+  return p;
+}
+
 /// Settings of PlanArmMotion.
 struct ArmMotionOptions {
-  PlannerOptions planner;                ///< RRTConnect budget, seed, resolution, shortcutting
+  PlannerOptions planner = ArmPlannerDefaults();  ///< RRTConnect budget, seed, shortcutting
   double terminal_palm_speed_mps = 0.4;  ///< DASH: the palm still moves at 0.4 m/s on arrival
   double mean_path_speed = 1.2;          ///< rad/s of joint-space arc length (sets the duration)
   double max_joint_speed = 3.0;          ///< rad/s per joint
@@ -32,6 +42,10 @@ struct ArmMotionOptions {
   int ik_restarts = 8;  ///< further IK seeds per goal when no goal is free from the current arm
   /// Bodies whose contacts with the arm do not count (the object in the hand during transport).
   std::vector<int> ignore_bodies;
+  /// The object in the hand (transport; -1: none): it moves with the hand, its pose relative to
+  /// the hand kept from the start, and its contacts with anything but the arm and hand (another
+  /// object it would knock over, the table) make a pose invalid as the arm's own do.
+  int carried_body = -1;
 };
 
 /// A planned arm motion.

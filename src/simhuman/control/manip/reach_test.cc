@@ -103,5 +103,31 @@ TEST(ReachTest, AnUnreachablePalmPoseIsAPlanFailure) {
   mj_deleteData(s);
 }
 
+TEST(ReachTest, ACarriedObjectMovesWithTheHandInTheCollisionCheck) {
+  // the can floats under the table's board (as if held there); the palm's goal lies 20 cm above
+  // the hanging hand, which the arm reaches freely, but which lifts the can through the board
+  auto w = TableScene(Eigen::Vector3d(0.2, 0.2, -0.25));
+  const mjModel* m = w->model();
+  mjData* d = w->data();
+  mj_forward(m, d);
+  const ArmChain arm = *MakeArmChain(*w, 0, true);
+  const int can = mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName("cylinder002").c_str());
+  mjData* s = mj_makeData(m);
+  PalmPose up;
+  up.pos = Eigen::Vector3d(d->site_xpos + 3 * arm.palm_site) + Eigen::Vector3d(0, 0, 0.2);
+  up.rot =
+      Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * arm.hand_body);
+  ArmMotionOptions o;
+  o.ignore_bodies = {can};  // as the transport ignores the held object's contacts with the hand
+  auto arm_only = PlanArmMotion(m, d, s, arm, {up}, {}, o);
+  ASSERT_TRUE(arm_only.ok()) << arm_only.status();
+  o.carried_body = can;
+  auto carried = PlanArmMotion(m, d, s, arm, {up}, {}, o);
+  ASSERT_FALSE(carried.ok());
+  EXPECT_NE(carried.status().message().find("1 in collision"), std::string::npos)
+      << carried.status();
+  mj_deleteData(s);
+}
+
 }  // namespace
 }  // namespace simhuman::control::manip

@@ -216,10 +216,16 @@ core::StatusOr<RawPlan> RunRrtConnect(const Eigen::VectorXd& start,
                                            upper);
   });
 
+  // every check counts against the check budget
+  int64_t checks = 0;
+  const ValidityFn counted = [&](const Eigen::VectorXd& q) {
+    ++checks;
+    return valid(q);
+  };
   auto si = std::make_shared<ob::SpaceInformation>(space);
-  si->setStateValidityChecker([&](const ob::State* s) { return valid(ToEigen(s, n)); });
+  si->setStateValidityChecker([&](const ob::State* s) { return counted(ToEigen(s, n)); });
   si->setMotionValidator(
-      std::make_shared<SegmentMotionValidator>(si.get(), n, &valid, options.resolution_rad));
+      std::make_shared<SegmentMotionValidator>(si.get(), n, &counted, options.resolution_rad));
   si->setup();
 
   auto pdef = std::make_shared<ob::ProblemDefinition>(si);
@@ -240,14 +246,19 @@ core::StatusOr<RawPlan> RunRrtConnect(const Eigen::VectorXd& start,
   planner->setup();
 
   const Clock::time_point t0 = Clock::now();
-  const ob::PlannerStatus status =
-      planner->solve(ob::timedPlannerTerminationCondition(options.time_limit_s));
+  const int64_t max_checks = options.max_validity_checks;
+  const ob::PlannerTerminationCondition out_of_checks(
+      [&checks, max_checks] { return max_checks > 0 && checks >= max_checks; });
+  const ob::PlannerStatus status = planner->solve(ob::plannerOrTerminationCondition(
+      ob::timedPlannerTerminationCondition(options.time_limit_s), out_of_checks));
   RawPlan raw;
   raw.time_s = std::chrono::duration<double>(Clock::now() - t0).count();
   if (status == ob::PlannerStatus::TIMEOUT || status == ob::PlannerStatus::APPROXIMATE_SOLUTION) {
-    return absl::NotFoundError(absl::StrCat("planner: no collision-free path within ",
-                                            Num(options.time_limit_s), " s (", goals.size(),
-                                            " valid goal(s))"));
+    const std::string budget = max_checks > 0 && checks >= max_checks
+                                   ? absl::StrCat(max_checks, " validity checks")
+                                   : Num(options.time_limit_s) + " s";
+    return absl::NotFoundError(absl::StrCat("planner: no collision-free path within ", budget, " (",
+                                            goals.size(), " valid goal(s))"));
   }
   if (status != ob::PlannerStatus::EXACT_SOLUTION || !pdef->hasExactSolution()) {
     return absl::InternalError("planner: RRTConnect returned '" + status.asString() + "'");
@@ -269,6 +280,10 @@ absl::Status PlannerOptions::Validate() const {
   if (!(resolution_rad > 0 && resolution_rad <= 1.0)) {
     return absl::InvalidArgumentError("planner: resolution_rad = " + Num(resolution_rad) +
                                       " must be in (0, 1] rad");
+  }
+  if (max_validity_checks < 0) {
+    return absl::InvalidArgumentError(absl::StrCat(
+        "planner: max_validity_checks = ", max_validity_checks, " must be >= 0 (0: no budget)"));
   }
   if (shortcut_iterations < 0) {
     return absl::InvalidArgumentError(

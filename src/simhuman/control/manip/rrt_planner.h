@@ -39,7 +39,11 @@ namespace simhuman::control::manip {
 /// Planner settings. Units: seconds and radians (joint-space distances are Euclidean).
 struct PlannerOptions {
   double time_limit_s = 1.0;  ///< wall-clock budget of the RRTConnect search
-  uint64_t seed = 1;          ///< sampler and shortcut seed
+  /// A budget of state-validity checks for the search (0: none). When it binds before the
+  /// clock, the outcome does not depend on the machine's speed or load: the same inputs and seed
+  /// find the same path or fail alike (a wall-clock budget fails more plans on a busy machine).
+  int64_t max_validity_checks = 0;
+  uint64_t seed = 1;  ///< sampler and shortcut seed
   /// straight motions are checked so that consecutive checked states differ by at most this
   /// much in every joint (see SegmentValid)
   double resolution_rad = 0.02;
@@ -79,7 +83,8 @@ struct PlanResult {
 ///    vector); lower > upper or non-finite bounds, NaN, or start/goal values outside the bounds
 ///    (naming the joint, the value and the bounds); an invalid start without start_escape_rad;
 ///    every goal invalid.
-///  - NotFound: "no collision-free path within X s" when the search runs out of time.
+///  - NotFound: "no collision-free path within X s" (or "within N validity checks") when the
+///    search runs out of its budget.
 ///  - Internal: an exception from OMPL (its message).
 core::StatusOr<PlanResult> PlanJointPath(const Eigen::VectorXd& start,
                                          const std::vector<Eigen::VectorXd>& goals,

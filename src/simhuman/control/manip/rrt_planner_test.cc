@@ -211,5 +211,43 @@ TEST(RrtPlanner, StartOnAGoalIsATrivialPath) {
   EXPECT_EQ(r->path.Length(), 0.0);
 }
 
+TEST(RrtPlanner, AValidityCheckBudgetEndsTheSearchAlikeOnEveryRun) {
+  // the goal sits inside a closed shell: no path exists, so the budget ends the search
+  const Eigen::VectorXd goal = Eigen::VectorXd::Constant(3, 1.0);
+  int64_t calls = 0;
+  auto valid = [&](const Eigen::VectorXd& q) {
+    ++calls;
+    const double d = (q - goal).cwiseAbs().maxCoeff();
+    return !(d > 0.2 && d < 0.4);
+  };
+  PlannerOptions opt;
+  opt.time_limit_s = 60;  // the clock never binds: the result cannot depend on the machine
+  opt.max_validity_checks = 2000;
+  std::vector<int64_t> used;
+  for (int run = 0; run < 2; ++run) {
+    calls = 0;
+    auto plan = PlanJointPath(Eigen::VectorXd::Zero(3), {goal}, Eigen::VectorXd::Constant(3, -2),
+                              Eigen::VectorXd::Constant(3, 2), valid, opt);
+    ASSERT_FALSE(plan.ok());
+    EXPECT_EQ(plan.status().code(), absl::StatusCode::kNotFound);
+    EXPECT_TRUE(Has(plan.status(), "within 2000 validity checks")) << plan.status();
+    used.push_back(calls);
+  }
+  // the budget bounds the search (a check in flight may finish a segment), and binds alike
+  EXPECT_GE(used[0], 2000);
+  EXPECT_LT(used[0], 2000 + 1000);
+  EXPECT_EQ(used[0], used[1]);
+  // a reachable goal is still found within such a budget
+  auto free_space = [](const Eigen::VectorXd&) { return true; };
+  EXPECT_TRUE(PlanJointPath(Eigen::VectorXd::Zero(3), {goal}, Eigen::VectorXd::Constant(3, -2),
+                            Eigen::VectorXd::Constant(3, 2), free_space, opt)
+                  .ok());
+  opt.max_validity_checks = -1;
+  auto bad = PlanJointPath(Eigen::VectorXd::Zero(3), {goal}, Eigen::VectorXd::Constant(3, -2),
+                           Eigen::VectorXd::Constant(3, 2), free_space, opt);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_TRUE(Has(bad.status(), "max_validity_checks")) << bad.status();
+}
+
 }  // namespace
 }  // namespace simhuman::control::manip

@@ -27,16 +27,19 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
                                 const TabletopGoal& goal, const TabletopOptions& pipeline,
                                 const ScriptedGraspOptions& o) {
   const double grip_z = goal.planned_pos.z() + GripHeightM(goal, pipeline);
+  const bool top = TopGrasp(goal, pipeline);
   struct State {
     int step = 0;
     int closing_from = -1;  // the step the palm touched (or the approach ran out)
+    double grip_z = 0;      // the palm's height: where the reach left it
     bool have_goal = false;
     Eigen::Vector3d palm_goal;
     std::shared_ptr<mjData> scratch;
   };
   auto st = std::make_shared<State>();
   st->scratch.reset(mj_makeData(m), mj_deleteData);
-  return [m, d, &ix, goal, o, st, grip_z](const float* obs, float* act) {
+  return [m, d, &ix, goal, o, st, grip_z, top, behind = pipeline.top_palm_behind_m](
+             const float* obs, float* act) {
     std::fill(act, act + kGraspActDim, 0.0f);
     float touch[kGraspTouchParts];
     GraspTouch(m, d, ix, goal.object_body, touch);
@@ -49,10 +52,22 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     const Eigen::Vector3d c(d->xipos + 3 * goal.object_body);
     const Eigen::Vector3d p(d->site_xpos + 3 * ix.arm.palm_site);
     const Eigen::Vector3d n = PalmNormal(d, ix);
+    // the reach may take a far object higher than the default grip height
+    if (st->step == 0) st->grip_z = std::abs(p.z() - grip_z) < 0.02 ? grip_z : p.z();
     if (!st->have_goal || st->closing_from < 0 || o.press_while_closing) {
-      const double gap = (c - p).dot(n) - goal.half_width_m;
-      st->palm_goal = p + n * (gap + o.press_m);
-      st->palm_goal.z() = grip_z;
+      if (top) {
+        // down onto the top (the table holds it still), the palm point `behind` back from it
+        // along the fingers
+        Eigen::Vector3d f(-d->xmat[9 * ix.arm.hand_body + 2], -d->xmat[9 * ix.arm.hand_body + 5],
+                          0);
+        if (f.norm() > 1e-6) f.normalize();
+        st->palm_goal = c - behind * f;
+        st->palm_goal.z() = c.z() + goal.half_width_m - o.press_m;
+      } else {
+        const double gap = (c - p).dot(n) - goal.half_width_m;
+        st->palm_goal = p + n * (gap + o.press_m);
+        st->palm_goal.z() = st->grip_z;
+      }
       st->have_goal = true;
     }
     Eigen::VectorXd target(ArmChain::kDofs);
@@ -88,7 +103,7 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
                                                                       : 0.0f;
         }
       }
-      if (k >= o.thumb_delay_steps) {
+      if (k >= (top ? 0 : o.thumb_delay_steps)) {
         for (int h : {kThumbFirst, kThumbFirst + 2, kThumbFirst + 4}) {
           act[ArmChain::kDofs + h] = touch[15] > 0 || touch[16] > 0 ? o.hold_rate : rate;
         }

@@ -5,7 +5,10 @@
 /// targets until it touches; then each finger wraps from its base (the MCP until a phalanx
 /// touches, the PIP once the proximal phalanx touches, the DIP once the middle one does, so
 /// fingertips never curl in under the object and push it out), the thumb closes a quarter
-/// second later, and touching segments keep a slow squeeze while the palm keeps pressing.
+/// second later, and touching segments keep a slow squeeze while the palm keeps pressing. The
+/// palm closes in at the height where the reach left it (the grip height, or higher up on a far
+/// object). With TabletopOptions::sphere_top_grasp a sphere is taken from above: the palm comes
+/// down on its top and the thumb closes with the fingers.
 
 #include "simhuman/control/manip/tabletop_pipeline.h"
 

@@ -36,6 +36,10 @@ double GripHeightM(const TabletopGoal& g, const TabletopOptions& o) {
   return std::clamp(z, o.grip_min_m, o.grip_max_m);
 }
 
+bool TopGrasp(const TabletopGoal& g, const TabletopOptions& o) {
+  return o.sphere_top_grasp && g.shape == GraspShape::kSphere;
+}
+
 namespace {
 
 Eigen::Matrix3d Rot(const mjData* d, int body) {
@@ -164,15 +168,20 @@ class Run {
 
 std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   // the hand pre-shapes first (0.25 s), then the arm moves with it open
+  const bool top = TopGrasp(g_, o_);
   mju_copy(scratch_->qpos, d_->qpos, m_->nq);
-  SetOpenHand(ix_, scratch_);
+  if (top) {
+    SetClawHand(ix_, scratch_);
+  } else {
+    SetOpenHand(ix_, scratch_);
+  }
   for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) s_.target[i] = scratch_->qpos[ix_.qpos[i]];
   const Eigen::VectorXd still = ix_.arm.Get(d_);
   for (int k = 0; k < 60; ++k) {
     if (!Step([&] { tr.Hold(still, d_); }))
       return Fail(TabletopStage::kReach, "unstable simulation");
   }
-  const Eigen::Vector3d centre = g_.planned_pos + Eigen::Vector3d(0, 0, GripHeightM(g_, o_));
+  Eigen::Vector3d centre = g_.planned_pos + Eigen::Vector3d(0, 0, GripHeightM(g_, o_));
   // palm poses around the object at the given approach angles
   auto poses = [&](const std::vector<double>& thetas) {
     std::pair<std::vector<PalmPose>, std::vector<Eigen::Vector3d>> out;
@@ -182,6 +191,18 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
                         std::max(o_.palm_behind_m, g_.half_width_m - o_.palm_behind_margin_m)));
       out.second.push_back(ix_.arm.right ? out.first.back().rot.col(1)
                                          : Eigen::Vector3d(-out.first.back().rot.col(1)));
+    }
+    return out;
+  };
+  // a sphere from above, the fingers pointing any way round
+  auto top_poses = [&]() {
+    std::pair<std::vector<PalmPose>, std::vector<Eigen::Vector3d>> out;
+    const Eigen::Vector3d top_pt = g_.planned_pos + Eigen::Vector3d(0, 0, 2 * g_.half_width_m);
+    for (int k = 0; k < o_.top_yaws; ++k) {
+      out.first.push_back(TopGraspPose(top_pt, o_.top_standoff_m,
+                                       -M_PI + 2 * M_PI * k / o_.top_yaws, ix_.arm.right,
+                                       o_.top_palm_behind_m));
+      out.second.push_back(-Eigen::Vector3d::UnitZ());
     }
     return out;
   };
@@ -198,12 +219,15 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   }
   for (int k = 0; k < o_.approach_angles; ++k)
     around.push_back(-M_PI + 2 * M_PI * k / o_.approach_angles);
-  const auto face_goals = poses(faces), around_goals = poses(around);
+  std::pair<std::vector<PalmPose>, std::vector<Eigen::Vector3d>> face_goals, around_goals;
   auto plan = [&]() {
     if (!faces.empty()) {
       core::StatusOr<ArmMotion> on_face =
           PlanArmMotion(m_, d_, scratch_, ix_.arm, face_goals.first, face_goals.second, o_.motion);
-      if (on_face.ok() || !absl::IsFailedPrecondition(on_face.status())) return on_face;
+      // no free pose on a face, or no path to the ones found: from all around
+      if (on_face.ok() ||
+          !(absl::IsFailedPrecondition(on_face.status()) || absl::IsNotFound(on_face.status())))
+        return on_face;
     }
     return PlanArmMotion(m_, d_, scratch_, ix_.arm, around_goals.first, around_goals.second,
                          o_.motion);
@@ -233,11 +257,33 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
       ++lean;
     if (!lean_to(lean)) return Fail(TabletopStage::kReach, "unstable simulation");
   }
-  core::StatusOr<ArmMotion> motion = plan();
-  for (++lean; lean < leans && !motion.ok() && absl::IsFailedPrecondition(motion.status());
-       ++lean) {
+  // a plan at the grip height; when no arm pose or path reaches it, the object higher up (the
+  // arm lies on the table on the way to a far object's middle; a seated person takes it higher,
+  // the forearm clear of the table)
+  const double grip = centre.z() - g_.planned_pos.z();
+  const double high = g_.height_m - o_.grip_below_top_m;
+  auto plan_failed = [](const core::StatusOr<ArmMotion>& r) {
+    return !r.ok() && (absl::IsFailedPrecondition(r.status()) || absl::IsNotFound(r.status()));
+  };
+  auto plan_at_heights = [&]() {
+    centre.z() = g_.planned_pos.z() + grip;
+    face_goals = poses(faces);
+    around_goals = top ? top_poses() : poses(around);
+    core::StatusOr<ArmMotion> r = plan();
+    if (plan_failed(r) && !top && high > grip + 0.01) {
+      centre.z() = g_.planned_pos.z() + high;
+      face_goals = poses(faces);
+      around_goals = poses(around);
+      core::StatusOr<ArmMotion> higher = plan();
+      if (higher.ok()) return higher;
+    }
+    return r;
+  };
+  core::StatusOr<ArmMotion> motion = plan_at_heights();
+  // leaning further while no arm pose is free or no path reaches one
+  for (++lean; lean < leans && plan_failed(motion); ++lean) {
     if (!lean_to(lean)) return Fail(TabletopStage::kReach, "unstable simulation");
-    motion = plan();
+    motion = plan_at_heights();
   }
   if (!motion.ok()) {
     return Fail(TabletopStage::kReach, std::string(motion.status().message()), true);
@@ -274,6 +320,7 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   ArmMotionOptions mo = o_.motion;
   mo.terminal_palm_speed_mps = 0;  // DASH: transport ends at rest over the target
   mo.ignore_bodies.push_back(g_.object_body);
+  if (o_.transport_checks_object) mo.carried_body = g_.object_body;
   core::StatusOr<ArmMotion> motion = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, {}, mo);
   if (!motion.ok()) {
     return Fail(TabletopStage::kTransport, std::string(motion.status().message()), true);
@@ -351,7 +398,11 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
   // release: the fingers open, the arm holds
   const Eigen::VectorXd hold = ix_.arm.Get(d_);
   mju_copy(scratch_->qpos, d_->qpos, m_->nq);
-  SetOpenHand(ix_, scratch_);
+  if (TopGrasp(g_, o_)) {
+    SetClawHand(ix_, scratch_);  // what came down over the object clears it
+  } else {
+    SetOpenHand(ix_, scratch_);
+  }
   std::array<double, kGraspDofs> from = s_.target;
   const double t0 = d_->time;
   while (d_->time - t0 < o_.release_s) {

@@ -55,10 +55,22 @@ struct TabletopOptions {
   /// at most `grip_max_m` above its base
   double grip_height_frac = 0.5;
   double grip_max_m = 0.09;
-  double grip_min_m = 0.06;         ///< the palm (9.6 cm wide) clears the table
-  double lift_m = 0.12;             ///< straight up after the grasp
-  double carry_clearance_m = 0.03;  ///< the object's base this high over the target on arrival
-  double lower_speed_mps = 0.06;    ///< placing descent
+  double grip_min_m = 0.06;  ///< the palm (9.6 cm wide) clears the table
+  /// When no arm pose or path reaches the grip height even at the furthest lean, the palm's
+  /// centre goes this far below the object's top instead (the palm's upper edge near the top)
+  double grip_below_top_m = 0.045;
+  /// A sphere is taken from above (TopGraspPose, the claw pre-shape): the palm comes down on its
+  /// top, which the table holds still, and the fingers close over its far side with the thumb
+  /// behind it. Off by default: on 21 sphere tasks it lifted 6 balls (the side grasp none, a
+  /// ball rolls away from the first touch) but placed none either, and added plan failures
+  /// (docs/BENCHMARKS.md, issue 15 session 17).
+  bool sphere_top_grasp = false;
+  double top_standoff_m = 0.04;      ///< the reach ends with the palm this far above the top
+  double top_palm_behind_m = 0.035;  ///< the palm point this far back from the top (along fingers)
+  int top_yaws = 12;                 ///< finger directions tried around the vertical
+  double lift_m = 0.12;              ///< straight up after the grasp
+  double carry_clearance_m = 0.03;   ///< the object's base this high over the target on arrival
+  double lower_speed_mps = 0.06;     ///< placing descent
   /// Before the descent the hand turns the object upright and shifts its centre of mass over
   /// the target, reading the object's pose (it tilts and slips in the grip during transport;
   /// DASH's placing policy reads it at 20 Hz): up to `align_passes` moves of `align_s` each,
@@ -70,6 +82,10 @@ struct TabletopOptions {
   int ik_every_steps = 6;  ///< straight palm moves (lift, lower, retract) re-solve IK so often
   double release_s = 0.4;  ///< the fingers open over this long
   double settle_s = 2.0;   ///< the object must rest this long after the release
+  /// Transport plans keep the object in the hand clear of other objects and the table (it moves
+  /// with the hand in the collision check), so it does not knock the bottom object over on the
+  /// way; off: only the arm is checked.
+  bool transport_checks_object = true;
   double finger_squeeze_rad = 0.1;  ///< DASH: transport targets = grasp targets + 0.1 sign(e)
   /// When no arm pose reaches the object upright, the trunk leans forward (the pelvis stays
   /// held) by these angles in turn, as a seated person does for a far object (DASH holds its
@@ -84,6 +100,9 @@ struct TabletopOptions {
 
 /// How high above the object's base the palm's centre grips it (TabletopOptions' grip_*).
 double GripHeightM(const TabletopGoal& goal, const TabletopOptions& options);
+
+/// Whether `goal`'s object is taken from above (a sphere with sphere_top_grasp).
+bool TopGrasp(const TabletopGoal& goal, const TabletopOptions& options);
 
 /// Why a run ended.
 enum class TabletopStage { kReach, kGrasp, kLift, kTransport, kPlace, kRelease, kSettle, kDone };
