@@ -48,6 +48,7 @@ struct Args {
   double t_from = 0, t_to = 1e9;
   bool carried_check = true, top_grasp = false;
   int grasp_steps = 0;
+  double squeeze = -1, path_speed = 0;
   bool no_spheres = false, profile = false;  ///< frames only in this window (s)
 };
 
@@ -79,6 +80,10 @@ Args Parse(int argc, char** argv) {
       a.t_to = std::atof(v.c_str());
     } else if (k == "--carried-check") {
       a.carried_check = v == "1";
+    } else if (k == "--squeeze") {
+      a.squeeze = std::atof(v.c_str());
+    } else if (k == "--path-speed") {
+      a.path_speed = std::atof(v.c_str());
     } else if (k == "--grasp-steps") {
       a.grasp_steps = std::atoi(v.c_str());
     } else if (k == "--profile") {
@@ -123,6 +128,8 @@ int main(int argc, char** argv) {
     pipeline.transport_checks_object = a.carried_check;
     pipeline.sphere_top_grasp = a.top_grasp;
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
+    if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
+    if (a.path_speed > 0) pipeline.motion.mean_path_speed = a.path_speed;
     auto grasp = sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, g, pipeline);
     std::unique_ptr<sh::render::OffscreenRenderer> r;
     std::vector<std::vector<uint8_t>> frames;
