@@ -11,6 +11,12 @@ double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
+// body `b`'s orientation in `d` (after kinematics)
+Eigen::Quaterniond BodyQuat(const mjData* d, int b) {
+  return Eigen::Quaterniond(d->xquat[4 * b], d->xquat[4 * b + 1], d->xquat[4 * b + 2],
+                            d->xquat[4 * b + 3]);
+}
+
 // the object carried in the hand: where its free joint is and its pose in the hand's frame
 struct Carried {
   int body = -1, qpos = -1;
@@ -24,10 +30,7 @@ struct Carried {
     if (j < 0 || m->jnt_type[j] != mjJNT_FREE) return c;
     c.body = body;
     c.qpos = m->jnt_qposadr[j];
-    const Eigen::Quaterniond qh(d->xquat[4 * arm.hand_body], d->xquat[4 * arm.hand_body + 1],
-                                d->xquat[4 * arm.hand_body + 2], d->xquat[4 * arm.hand_body + 3]);
-    const Eigen::Quaterniond qo(d->xquat[4 * body], d->xquat[4 * body + 1], d->xquat[4 * body + 2],
-                                d->xquat[4 * body + 3]);
+    const Eigen::Quaterniond qh = BodyQuat(d, arm.hand_body), qo = BodyQuat(d, body);
     c.pos = qh.conjugate() *
             (Eigen::Vector3d(d->xpos + 3 * body) - Eigen::Vector3d(d->xpos + 3 * arm.hand_body));
     c.rot = qh.conjugate() * qo;
@@ -35,8 +38,7 @@ struct Carried {
   }
   // moves the object in `s` with the hand (after mj_kinematics of the arm's pose)
   void Place(mjData* s, const ArmChain& arm) const {
-    const Eigen::Quaterniond qh(s->xquat[4 * arm.hand_body], s->xquat[4 * arm.hand_body + 1],
-                                s->xquat[4 * arm.hand_body + 2], s->xquat[4 * arm.hand_body + 3]);
+    const Eigen::Quaterniond qh = BodyQuat(s, arm.hand_body);
     const Eigen::Vector3d p = Eigen::Vector3d(s->xpos + 3 * arm.hand_body) + qh * pos;
     const Eigen::Quaterniond q = qh * rot;
     for (int k = 0; k < 3; ++k) s->qpos[qpos + k] = p[k];
@@ -76,10 +78,6 @@ int Contacts(const mjModel* m, mjData* s, const ArmChain& arm, const Eigen::Vect
   }
   return best;
 }
-
-}  // namespace
-
-namespace {
 
 struct Candidate {
   Eigen::VectorXd q;
