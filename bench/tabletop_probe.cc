@@ -46,9 +46,12 @@ struct Args {
   double frame_s = 0.2;
   double cam_distance_m = 0.55, cam_azimuth_deg = 150, cam_elevation_deg = -25;
   double t_from = 0, t_to = 1e9;
+  double trace_from = -1, trace_to = -1;
+  bool trace_arm = false, hold_rotation = true;
+  double rot_weight = -1;  ///< print object forces and tilts in this window (s)
   bool carried_check = true, top_grasp = false;
   int grasp_steps = 0;
-  double squeeze = -1, path_speed = 0;
+  double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1;
   bool no_spheres = false, profile = false;  ///< frames only in this window (s)
 };
 
@@ -78,6 +81,20 @@ Args Parse(int argc, char** argv) {
       a.t_from = std::atof(v.c_str());
     } else if (k == "--t-to") {
       a.t_to = std::atof(v.c_str());
+    } else if (k == "--trace-from") {
+      a.trace_from = std::atof(v.c_str());
+    } else if (k == "--trace-arm") {
+      a.trace_arm = v == "1";
+    } else if (k == "--trace-to") {
+      a.trace_to = std::atof(v.c_str());
+    } else if (k == "--min-inertia") {
+      a.min_inertia = std::atof(v.c_str());
+    } else if (k == "--hold-rotation") {
+      a.hold_rotation = v == "1";
+    } else if (k == "--rot-weight") {
+      a.rot_weight = std::atof(v.c_str());
+    } else if (k == "--clearance") {
+      a.clearance = std::atof(v.c_str());
     } else if (k == "--carried-check") {
       a.carried_check = v == "1";
     } else if (k == "--squeeze") {
@@ -129,13 +146,77 @@ int main(int argc, char** argv) {
     pipeline.sphere_top_grasp = a.top_grasp;
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
+    if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
+    if (a.min_inertia >= 0) pipeline.tracker.min_inertia = a.min_inertia;
     if (a.path_speed > 0) pipeline.motion.mean_path_speed = a.path_speed;
-    auto grasp = sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, g, pipeline);
+    sh::control::manip::ScriptedGraspOptions so;
+    so.hold_rotation = a.hold_rotation;
+    if (a.rot_weight > 0) so.ik_rot_weight_m = a.rot_weight;
+    auto grasp = sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, g, pipeline, so);
     std::unique_ptr<sh::render::OffscreenRenderer> r;
     std::vector<std::vector<uint8_t>> frames;
     constexpr int kW = 320, kH = 240;
     double next = 0;
     sh::control::manip::StepHook hook;
+    if (a.trace_from >= 0) {
+      // each 20 ms: the object's and its support's tilt, and the force the human's bodies put
+      // on the object (world frame, N)
+      double next_trace = a.trace_from;
+      const int human_root = m->body_rootid[ix->arm.hand_body];
+      Eigen::Matrix3d rel0 = Eigen::Matrix3d::Zero(), rh0;
+      hook = [&, human_root](const mjData* d) {
+        if (d->time + 1e-9 < next_trace || d->time > a.trace_to) return;
+        next_trace += 0.02;
+        Eigen::Vector3d f_hand = Eigen::Vector3d::Zero();
+        int n_hand = 0;
+        for (int c = 0; c < d->ncon; ++c) {
+          const mjContact& con = d->contact[c];
+          const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
+          int other;
+          double sign;
+          if (b1 == g.object_body) {
+            other = b2;
+            sign = -1;  // the contact force acts on geom2 along the frame; geom1 gets minus
+          } else if (b2 == g.object_body) {
+            other = b1;
+            sign = 1;
+          } else {
+            continue;
+          }
+          if (m->body_rootid[other] != human_root) continue;
+          mjtNum f6[6];
+          mj_contactForce(m, d, c, f6);
+          const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> fr(con.frame);
+          f_hand += sign * (fr.transpose() * Eigen::Vector3d(f6[0], f6[1], f6[2]));
+          ++n_hand;
+        }
+        auto tilt = [&](int b) {
+          return b < 0 ? 0.0 : std::acos(std::clamp(d->xmat[9 * b + 8], -1.0, 1.0)) * 180 / M_PI;
+        };
+        // the object's rotation relative to the hand since the trace began, degrees
+        const int hb = ix->arm.hand_body;
+        const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> rh(d->xmat + 9 * hb),
+            ro(d->xmat + 9 * g.object_body);
+        const Eigen::Matrix3d rel = rh.transpose() * ro;
+        if (rel0.isZero()) {
+          rel0 = rel;
+          rh0 = rh;
+        }
+        const double turned = Eigen::AngleAxisd(rh0.transpose() * rh).angle() * 180 / M_PI;
+        const double slip = Eigen::AngleAxisd(rel0.transpose() * rel).angle() * 180 / M_PI;
+        std::printf("  t %.2f tilt obj %5.1f sup %5.1f hand turned %5.1f slip %5.1f obj (%.3f %.3f %.3f)  hand force (%6.1f %6.1f %6.1f) n=%d\n",
+                    d->time, tilt(g.object_body), tilt(g.support_body), turned, slip, d->xipos[3 * g.object_body],
+                    d->xipos[3 * g.object_body + 1], d->xipos[3 * g.object_body + 2], f_hand.x(),
+                    f_hand.y(), f_hand.z(), n_hand);
+        if (a.trace_arm) {
+          std::printf("     arm q");
+          for (int j = 0; j < 7; ++j) std::printf(" %6.2f", d->qpos[ix->arm.qpos[j]]);
+          std::printf("  tau");
+          for (int j = 0; j < 7; ++j) std::printf(" %6.1f", d->actuator_force[ix->arm.actuator[j]]);
+          std::printf("\n");
+        }
+      };
+    }
     if (!a.sheet_dir.empty()) {
       auto made = sh::render::OffscreenRenderer::Create(m, kW, kH);
       if (made.ok()) r = std::move(*made);

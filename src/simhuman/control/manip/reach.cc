@@ -254,8 +254,10 @@ void ArmTracker::Drive(const Eigen::VectorXd& q_ref, const Eigen::VectorXd& qd_r
   }
   const Eigen::VectorXd acc =
       tracker_.DesiredAcceleration(q, qd, q_ref, qd_ref, qdd_ref, m_->opt.timestep);
-  const Eigen::VectorXd tau = id_.Torque(d, acc);
+  Eigen::VectorXd tau = id_.Torque(d, acc);
+  const double floor = tracker_.gains().min_inertia;
   for (int i = 0; i < ArmChain::kDofs; ++i) {
+    if (floor > 0) tau[i] += std::max(0.0, floor - d->qM[m_->dof_Madr[arm_.dof[i]]]) * acc[i];
     const int a = arm_.actuator[i];
     d->ctrl[a] = q[i] + tau[i] / m_->actuator_gainprm[mjNGAIN * a];
   }

@@ -129,5 +129,67 @@ TEST(ReachTest, ACarriedObjectMovesWithTheHandInTheCollisionCheck) {
   mj_deleteData(s);
 }
 
+// Holding the arm reached out over the table while a load the inverse dynamics does not know
+// about comes on at once (30 N, an object of 3 kg, 6 cm out of the palm, as the table stops
+// bearing it): the largest sag of the forearm and wrist joints in the next 0.5 s.
+double LoadedWristSag(double min_inertia) {
+  auto w = TableScene(Eigen::Vector3d(0.3, -0.2, 0));  // the can out of the way
+  const mjModel* m = w->model();
+  mjData* d = w->data();
+  const GraspIndex gi = *MakeGraspIndex(*w, 0, true);
+  const ArmChain& arm = gi.arm;
+  SetOpenHand(gi, d);
+  mj_forward(m, d);
+  mjData* s = mj_makeData(m);
+  mju_copy(s->qpos, d->qpos, m->nq);
+  const PalmPose goal =
+      SideGraspPose(world::TableToWorld(Eigen::Vector3d(0.05, 0.2, 0.09)), 0.0, M_PI / 2, true);
+  const IkResult ik = SolvePalmIk(m, s, arm, goal, arm.Get(d), arm.Get(d));
+  mj_deleteData(s);
+  EXPECT_LT(ik.pos_err_m, 0.01);
+  arm.Set(d, ik.q);
+  mj_forward(m, d);
+  for (int k = 0; k < kGraspDofs; ++k) d->ctrl[gi.actuator[k]] = d->qpos[gi.qpos[k]];
+  TrackerGains gains;
+  gains.min_inertia = min_inertia;
+  auto tracker = ArmTracker::Create(m, arm, gains);
+  EXPECT_TRUE(tracker.ok()) << tracker.status();
+  double sag = 0;
+  for (int k = 0; k < static_cast<int>(1.0 / m->opt.timestep); ++k) {
+    mj_step1(m, d);
+    tracker->Hold(ik.q, d);
+    mj_step2(m, d);
+  }
+  // the load comes on at once (the table stops bearing the object as the lift begins)
+  for (int k = 0; k < static_cast<int>(0.5 / m->opt.timestep); ++k) {
+    mj_step1(m, d);
+    // the load: 30 N down at a point 6 cm out of the palm
+    const int hb = arm.hand_body;
+    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> rh(d->xmat + 9 * hb);
+    const Eigen::Vector3d at = Eigen::Vector3d(d->site_xpos + 3 * arm.palm_site) +
+                               0.06 * rh.col(1) * (arm.right ? 1 : -1);
+    const Eigen::Vector3d f(0, 0, -30);
+    const Eigen::Vector3d tau = (at - Eigen::Vector3d(d->xipos + 3 * hb)).cross(f);
+    for (int i = 0; i < 3; ++i) {
+      d->xfrc_applied[6 * hb + i] = f[i];
+      d->xfrc_applied[6 * hb + 3 + i] = tau[i];
+    }
+    tracker->Hold(ik.q, d);
+    mj_step2(m, d);
+    for (int j = 4; j < ArmChain::kDofs; ++j) {
+      sag = std::max(sag, std::abs(d->qpos[arm.qpos[j]] - ik.q[j]));
+    }
+  }
+  return sag;
+}
+
+TEST(ReachTest, AnInertiaFloorHoldsTheWristUnderALoadItDoesNotModelIntegration) {
+  const double soft = LoadedWristSag(0.0), stiff = LoadedWristSag(0.03);
+  std::printf("forearm and wrist sag under 30 N: %.3f rad without the floor, %.3f with it\n",
+              soft, stiff);
+  EXPECT_LT(stiff, 0.08);
+  EXPECT_LT(stiff, 0.6 * soft);
+}
+
 }  // namespace
 }  // namespace simhuman::control::manip

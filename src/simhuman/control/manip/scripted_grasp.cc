@@ -34,6 +34,7 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     double grip_z = 0;      // the palm's height: where the reach left it
     bool have_goal = false;
     Eigen::Vector3d palm_goal;
+    Eigen::Matrix3d hand_rot;  // the hand's rotation as the reach left it
     std::shared_ptr<mjData> scratch;
   };
   auto st = std::make_shared<State>();
@@ -53,7 +54,12 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     const Eigen::Vector3d p(d->site_xpos + 3 * ix.arm.palm_site);
     const Eigen::Vector3d n = PalmNormal(d, ix);
     // the reach may take a far object higher than the default grip height
-    if (st->step == 0) st->grip_z = std::abs(p.z() - grip_z) < 0.02 ? grip_z : p.z();
+    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> hand_rot(
+        d->xmat + 9 * ix.arm.hand_body);
+    if (st->step == 0) {
+      st->grip_z = std::abs(p.z() - grip_z) < 0.02 ? grip_z : p.z();
+      st->hand_rot = hand_rot;
+    }
     if (!st->have_goal || st->closing_from < 0 || o.press_while_closing) {
       if (top) {
         // down onto the top (the table holds it still), the palm point `behind` back from it
@@ -74,8 +80,9 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     for (int i = 0; i < ArmChain::kDofs; ++i) target[i] = obs[kGraspDofs + ArmChain::kDofs + i];
     PalmPose pose;
     pose.pos = st->palm_goal;
-    pose.rot = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat +
-                                                                              9 * ix.arm.hand_body);
+    // the hand keeps the rotation the reach gave it (the measured one would follow every push
+    // of a contact and of the object's weight, and the hand would turn away step by step)
+    pose.rot = o.hold_rotation ? st->hand_rot : Eigen::Matrix3d(hand_rot);
     mju_copy(st->scratch->qpos, d->qpos, m->nq);
     IkOptions io;
     io.max_iterations = 30;

@@ -26,6 +26,9 @@ struct ScriptedGraspOptions {
   /// IkOptions::rot_weight_m of the approach: the hand may turn a little to close the gap when
   /// the arm is near its limits
   double ik_rot_weight_m = 0.03;
+  /// The approach's rotation target is the hand's rotation when the grasp began; false: its
+  /// current rotation (it then drifts with every push on the hand)
+  bool hold_rotation = true;
 };
 
 /// The scripted grasp of `goal`'s object by arm `ix` in the simulation `m`/`d` (read at each

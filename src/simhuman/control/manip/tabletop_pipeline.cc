@@ -100,8 +100,8 @@ class Run {
     io.max_iterations = 40;
     return SolvePalmIk(m_, scratch_, ix_.arm, pose, from, from, io).q;
   }
-  // moves the palm by `delta` (world) over `duration_s`, straight, by IK every ik_every_steps;
-  // with `turn`, the hand also turns by it (world frame) on the way
+  // moves the palm by `delta` (world) over `duration_s`, straight, by IK every ik_every_steps,
+  // the hand keeping its rotation; with `turn`, the hand also turns by it (world frame)
   bool MovePalm(ArmTracker& tr, const Eigen::Vector3d& delta, double duration_s,
                 const std::function<bool()>& stop, const Eigen::Matrix3d* turn = nullptr) {
     const Eigen::Vector3d p0(d_->site_xpos + 3 * ix_.arm.palm_site);
@@ -118,7 +118,9 @@ class Run {
       if (steps_ % std::max(1, o_.ik_every_steps) == 0) {
         const Eigen::Matrix3d r =
             Eigen::Quaterniond::Identity().slerp(smooth, full).toRotationMatrix() * r0;
-        q = IkTo(p0 + smooth * delta, q, turn ? &r : nullptr);
+        // the rotation is the one the move started with (the measured one would follow a
+        // hand that sags under the object: the wrist then gives way step by step)
+        q = IkTo(p0 + smooth * delta, q, &r);
       }
       if (!Step([&] { tr.Hold(q, d_); })) return false;
       if (stop && stop()) break;
@@ -334,7 +336,7 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
 
 TabletopResult Run::Go(const GraspPolicyFn& policy) {
   const auto wall0 = std::chrono::steady_clock::now();
-  core::StatusOr<ArmTracker> tracker = ArmTracker::Create(m_, ix_.arm);
+  core::StatusOr<ArmTracker> tracker = ArmTracker::Create(m_, ix_.arm, o_.tracker);
   if (!tracker.ok()) return Fail(TabletopStage::kReach, std::string(tracker.status().message()));
   ArmTracker& tr = *tracker;
   auto finish = [&](TabletopResult r) {

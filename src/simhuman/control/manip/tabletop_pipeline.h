@@ -41,6 +41,7 @@ struct TabletopGoal {
 /// Settings of RunTabletop.
 struct TabletopOptions {
   ArmMotionOptions motion;
+  TrackerGains tracker;  ///< the arm's tracking (reach, lift, transport, place, retract)
   int approach_angles = 16;  ///< DASH's theta samples around a round object
   double box_face_spread_rad =
       0.15;                      ///< a box: each face's normal and 1 and 2 times this either side
@@ -69,7 +70,9 @@ struct TabletopOptions {
   double top_palm_behind_m = 0.035;  ///< the palm point this far back from the top (along fingers)
   int top_yaws = 12;                 ///< finger directions tried around the vertical
   double lift_m = 0.12;              ///< straight up after the grasp
-  double carry_clearance_m = 0.03;   ///< the object's base this high over the target on arrival
+  /// The object's base this high over the target on arrival (at 3 cm an object that slipped
+  /// down in the grip on the way struck the bottom object of a stack and tipped it)
+  double carry_clearance_m = 0.06;
   double lower_speed_mps = 0.06;     ///< placing descent
   /// Before the descent the hand turns the object upright and shifts its centre of mass over
   /// the target, reading the object's pose (it tilts and slips in the grip during transport;

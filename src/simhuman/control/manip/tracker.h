@@ -45,6 +45,11 @@ struct TrackerGains {
   /// per-joint clamp of the error integral (rad s): bounds the integral term to
   /// ki * integral_limit (rad/s^2) and its wind-up
   double integral_limit_rad_s = 0.1;
+  /// kg m^2: each joint's own inertia in the inverse dynamics is taken as at least this, i.e.
+  /// the light forearm and wrist joints get at least kp * min_inertia N m/rad of stiffness (a
+  /// held object, which the inverse dynamics does not model, outweighs their own inertia many
+  /// times and they gave way under it; a person stiffens the wrist). 0 leaves the model alone.
+  double min_inertia = 0.03;
 
   /// InvalidArgument naming the field when out of range.
   absl::Status Validate() const;
