@@ -48,7 +48,9 @@ struct Args {
   double t_from = 0, t_to = 1e9;
   double trace_from = -1, trace_to = -1;
   bool trace_arm = false, hold_rotation = true;
-  double rot_weight = -1;  ///< print object forces and tilts in this window (s)
+  double rot_weight = -1, press_m = -1, terminal_speed = -1;
+  bool press_closing = true;
+  int approach_steps = 0;  ///< print object forces and tilts in this window (s)
   bool carried_check = true, top_grasp = false;
   int grasp_steps = 0;
   double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1;
@@ -89,6 +91,14 @@ Args Parse(int argc, char** argv) {
       a.trace_to = std::atof(v.c_str());
     } else if (k == "--min-inertia") {
       a.min_inertia = std::atof(v.c_str());
+    } else if (k == "--terminal-speed") {
+      a.terminal_speed = std::atof(v.c_str());
+    } else if (k == "--press-closing") {
+      a.press_closing = v == "1";
+    } else if (k == "--press-m") {
+      a.press_m = std::atof(v.c_str());
+    } else if (k == "--approach-steps") {
+      a.approach_steps = std::atoi(v.c_str());
     } else if (k == "--hold-rotation") {
       a.hold_rotation = v == "1";
     } else if (k == "--rot-weight") {
@@ -147,10 +157,14 @@ int main(int argc, char** argv) {
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
+    if (a.terminal_speed >= 0) pipeline.motion.terminal_palm_speed_mps = a.terminal_speed;
     if (a.min_inertia >= 0) pipeline.tracker.min_inertia = a.min_inertia;
     if (a.path_speed > 0) pipeline.motion.mean_path_speed = a.path_speed;
     sh::control::manip::ScriptedGraspOptions so;
     so.hold_rotation = a.hold_rotation;
+    so.press_while_closing = a.press_closing;
+    if (a.press_m >= 0) so.press_m = a.press_m;
+    if (a.approach_steps > 0) so.approach_steps = a.approach_steps;
     if (a.rot_weight > 0) so.ik_rot_weight_m = a.rot_weight;
     auto grasp = sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, g, pipeline, so);
     std::unique_ptr<sh::render::OffscreenRenderer> r;

@@ -42,6 +42,20 @@ bool TopGrasp(const TabletopGoal& g, const TabletopOptions& o) {
 
 namespace {
 
+// "palm, 3 fingers, thumb": the hand parts touching the object (HandTouchParts() order: two
+// palm parts, three phalanges for each of four fingers, then the thumb's)
+std::string GripSummary(const float* touch) {
+  const bool palm = touch[0] > 0 || touch[1] > 0;
+  int fingers = 0;
+  for (int f = 0; f < 4; ++f) {
+    fingers += touch[2 + 3 * f] > 0 || touch[3 + 3 * f] > 0 || touch[4 + 3 * f] > 0;
+  }
+  bool thumb = false;
+  for (int k = 14; k < kGraspTouchParts; ++k) thumb = thumb || touch[k] > 0;
+  return std::string(palm ? "palm" : "no palm") + ", " + std::to_string(fingers) +
+         (fingers == 1 ? " finger, " : " fingers, ") + (thumb ? "thumb" : "no thumb");
+}
+
 Eigen::Matrix3d Rot(const mjData* d, int body) {
   return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * body);
 }
@@ -358,6 +372,10 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
       if (!Step({})) return finish(Fail(TabletopStage::kGrasp, "unstable simulation"));
     }
   }
+  // what touched the object when the grasp ended (said in a grasp miss's end reason)
+  float touch[kGraspTouchParts];
+  GraspTouch(m_, d_, ix_, g_.object_body, touch);
+  const std::string grip = GripSummary(touch);
   // the grip is held by targets the fingers cannot reach (DASH's tracking-error trick)
   for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) {
     const double e = s_.target[i] - d_->qpos[ix_.qpos[i]];
@@ -372,7 +390,10 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
     return finish(Fail(TabletopStage::kLift, "unstable simulation"));
   }
   if (!InHand() || ObjectCom().z() - z0 < 0.5 * o_.lift_m) {
-    return finish(Fail(TabletopStage::kGrasp, "grasp miss: the object did not rise with the hand"));
+    return finish(Fail(TabletopStage::kGrasp,
+                       "grasp miss: the object did not rise with the hand (touching it at the "
+                       "end of the grasp: " +
+                           grip + ")"));
   }
   if (auto f = Transport(tr)) return finish(*f);
   // place: the object upright (it tilts in the grip on the way) with its centre of mass over the
