@@ -48,9 +48,9 @@ struct Args {
   double t_from = 0, t_to = 1e9;
   double trace_from = -1, trace_to = -1;
   bool trace_arm = false, hold_rotation = true;
-  double rot_weight = -1, press_m = -1, terminal_speed = -1;
+  double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   bool press_closing = true;
-  int approach_steps = 0;  ///< print object forces and tilts in this window (s)
+  int approach_steps = 0, thumb_delay = -1;  ///< print object forces and tilts in this window (s)
   bool carried_check = true, top_grasp = false;
   int grasp_steps = 0;
   double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1;
@@ -93,6 +93,10 @@ Args Parse(int argc, char** argv) {
       a.min_inertia = std::atof(v.c_str());
     } else if (k == "--terminal-speed") {
       a.terminal_speed = std::atof(v.c_str());
+    } else if (k == "--comfort-reach") {
+      a.comfort_reach = std::atof(v.c_str());
+    } else if (k == "--thumb-delay") {
+      a.thumb_delay = std::atoi(v.c_str());
     } else if (k == "--press-closing") {
       a.press_closing = v == "1";
     } else if (k == "--press-m") {
@@ -157,6 +161,7 @@ int main(int argc, char** argv) {
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
+    if (a.comfort_reach > 0) pipeline.comfort_reach_m = a.comfort_reach;
     if (a.terminal_speed >= 0) pipeline.motion.terminal_palm_speed_mps = a.terminal_speed;
     if (a.min_inertia >= 0) pipeline.tracker.min_inertia = a.min_inertia;
     if (a.path_speed > 0) pipeline.motion.mean_path_speed = a.path_speed;
@@ -165,6 +170,7 @@ int main(int argc, char** argv) {
     so.press_while_closing = a.press_closing;
     if (a.press_m >= 0) so.press_m = a.press_m;
     if (a.approach_steps > 0) so.approach_steps = a.approach_steps;
+    if (a.thumb_delay >= 0) so.thumb_delay_steps = a.thumb_delay;
     if (a.rot_weight > 0) so.ik_rot_weight_m = a.rot_weight;
     auto grasp = sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, g, pipeline, so);
     std::unique_ptr<sh::render::OffscreenRenderer> r;
@@ -279,8 +285,10 @@ int main(int argc, char** argv) {
       std::printf("  object at table (%.2f, %.2f), target (%.2f, %.2f, %.2f)\n", t.x(), t.y(),
                   tt.x(), tt.y(), tt.z());
     }
-    std::printf("ep %3d %-5s %-8s w=%.3f h=%.3f m=%.2f  %s\n", i, kind.c_str(), ShapeName(g.shape),
-                2 * g.half_width_m, g.height_m, m->body_mass[g.object_body],
+    const Eigen::Vector3d at = sh::world::WorldToTable(g.planned_pos);
+    std::printf("ep %3d %-5s %-8s w=%.3f h=%.3f m=%.2f at (%5.2f %5.2f)  %s\n", i, kind.c_str(),
+                ShapeName(g.shape), 2 * g.half_width_m, g.height_m, m->body_mass[g.object_body],
+                at.x(), at.y(),
                 (std::string(sh::control::manip::TabletopStageName(res.failed_stage)) + ": " +
                  res.end_reason)
                     .c_str());
