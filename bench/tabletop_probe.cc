@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -133,6 +134,72 @@ Args Parse(int argc, char** argv) {
   return a;
 }
 
+// Every 20 ms within --trace-from/--trace-to: the object's and its support's tilt, the hand's
+// turn and the object's turn in the hand since the trace began, and the force the human's
+// bodies put on the object (world frame, N); with --trace-arm the arm's angles and torques.
+sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
+                                       const sh::control::manip::GraspIndex& ix,
+                                       const sh::control::manip::TabletopGoal& g) {
+  auto next_trace = std::make_shared<double>(a.trace_from);
+  const int human_root = m->body_rootid[ix.arm.hand_body];
+  auto rel0 = std::make_shared<Eigen::Matrix3d>(Eigen::Matrix3d::Zero());
+  auto rh0 = std::make_shared<Eigen::Matrix3d>();
+  return [a, m, &ix, g, human_root, next_trace, rel0, rh0](const mjData* d) {
+    if (d->time + 1e-9 < *next_trace || d->time > a.trace_to) return;
+    *next_trace += 0.02;
+    Eigen::Vector3d f_hand = Eigen::Vector3d::Zero();
+    int n_hand = 0;
+    for (int c = 0; c < d->ncon; ++c) {
+      const mjContact& con = d->contact[c];
+      const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
+      int other;
+      double sign;
+      if (b1 == g.object_body) {
+        other = b2;
+        sign = -1;  // the contact force acts on geom2 along the frame; geom1 gets minus
+      } else if (b2 == g.object_body) {
+        other = b1;
+        sign = 1;
+      } else {
+        continue;
+      }
+      if (m->body_rootid[other] != human_root) continue;
+      mjtNum f6[6];
+      mj_contactForce(m, d, c, f6);
+      const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> fr(con.frame);
+      f_hand += sign * (fr.transpose() * Eigen::Vector3d(f6[0], f6[1], f6[2]));
+      ++n_hand;
+    }
+    auto tilt = [&](int b) {
+      return b < 0 ? 0.0 : std::acos(std::clamp(d->xmat[9 * b + 8], -1.0, 1.0)) * 180 / M_PI;
+    };
+    // the object's rotation relative to the hand since the trace began, degrees
+    const int hb = ix.arm.hand_body;
+    const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> rh(d->xmat + 9 * hb),
+        ro(d->xmat + 9 * g.object_body);
+    const Eigen::Matrix3d rel = rh.transpose() * ro;
+    if (rel0->isZero()) {
+      *rel0 = rel;
+      *rh0 = rh;
+    }
+    const double turned = Eigen::AngleAxisd(rh0->transpose() * rh).angle() * 180 / M_PI;
+    const double slip = Eigen::AngleAxisd(rel0->transpose() * rel).angle() * 180 / M_PI;
+    std::printf(
+        "  t %.2f tilt obj %5.1f sup %5.1f hand turned %5.1f slip %5.1f obj (%.3f %.3f %.3f)  hand "
+        "force (%6.1f %6.1f %6.1f) n=%d\n",
+        d->time, tilt(g.object_body), tilt(g.support_body), turned, slip,
+        d->xipos[3 * g.object_body], d->xipos[3 * g.object_body + 1],
+        d->xipos[3 * g.object_body + 2], f_hand.x(), f_hand.y(), f_hand.z(), n_hand);
+    if (a.trace_arm) {
+      std::printf("     arm q");
+      for (int j = 0; j < 7; ++j) std::printf(" %6.2f", d->qpos[ix.arm.qpos[j]]);
+      std::printf("  tau");
+      for (int j = 0; j < 7; ++j) std::printf(" %6.1f", d->actuator_force[ix.arm.actuator[j]]);
+      std::printf("\n");
+    }
+  };
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -178,65 +245,7 @@ int main(int argc, char** argv) {
     constexpr int kW = 320, kH = 240;
     double next = 0;
     sh::control::manip::StepHook hook;
-    if (a.trace_from >= 0) {
-      // each 20 ms: the object's and its support's tilt, and the force the human's bodies put
-      // on the object (world frame, N)
-      double next_trace = a.trace_from;
-      const int human_root = m->body_rootid[ix->arm.hand_body];
-      Eigen::Matrix3d rel0 = Eigen::Matrix3d::Zero(), rh0;
-      hook = [&, human_root](const mjData* d) {
-        if (d->time + 1e-9 < next_trace || d->time > a.trace_to) return;
-        next_trace += 0.02;
-        Eigen::Vector3d f_hand = Eigen::Vector3d::Zero();
-        int n_hand = 0;
-        for (int c = 0; c < d->ncon; ++c) {
-          const mjContact& con = d->contact[c];
-          const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
-          int other;
-          double sign;
-          if (b1 == g.object_body) {
-            other = b2;
-            sign = -1;  // the contact force acts on geom2 along the frame; geom1 gets minus
-          } else if (b2 == g.object_body) {
-            other = b1;
-            sign = 1;
-          } else {
-            continue;
-          }
-          if (m->body_rootid[other] != human_root) continue;
-          mjtNum f6[6];
-          mj_contactForce(m, d, c, f6);
-          const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> fr(con.frame);
-          f_hand += sign * (fr.transpose() * Eigen::Vector3d(f6[0], f6[1], f6[2]));
-          ++n_hand;
-        }
-        auto tilt = [&](int b) {
-          return b < 0 ? 0.0 : std::acos(std::clamp(d->xmat[9 * b + 8], -1.0, 1.0)) * 180 / M_PI;
-        };
-        // the object's rotation relative to the hand since the trace began, degrees
-        const int hb = ix->arm.hand_body;
-        const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> rh(d->xmat + 9 * hb),
-            ro(d->xmat + 9 * g.object_body);
-        const Eigen::Matrix3d rel = rh.transpose() * ro;
-        if (rel0.isZero()) {
-          rel0 = rel;
-          rh0 = rh;
-        }
-        const double turned = Eigen::AngleAxisd(rh0.transpose() * rh).angle() * 180 / M_PI;
-        const double slip = Eigen::AngleAxisd(rel0.transpose() * rel).angle() * 180 / M_PI;
-        std::printf("  t %.2f tilt obj %5.1f sup %5.1f hand turned %5.1f slip %5.1f obj (%.3f %.3f %.3f)  hand force (%6.1f %6.1f %6.1f) n=%d\n",
-                    d->time, tilt(g.object_body), tilt(g.support_body), turned, slip, d->xipos[3 * g.object_body],
-                    d->xipos[3 * g.object_body + 1], d->xipos[3 * g.object_body + 2], f_hand.x(),
-                    f_hand.y(), f_hand.z(), n_hand);
-        if (a.trace_arm) {
-          std::printf("     arm q");
-          for (int j = 0; j < 7; ++j) std::printf(" %6.2f", d->qpos[ix->arm.qpos[j]]);
-          std::printf("  tau");
-          for (int j = 0; j < 7; ++j) std::printf(" %6.1f", d->actuator_force[ix->arm.actuator[j]]);
-          std::printf("\n");
-        }
-      };
-    }
+    if (a.trace_from >= 0) hook = TraceHook(a, m, *ix, g);
     if (!a.sheet_dir.empty()) {
       auto made = sh::render::OffscreenRenderer::Create(m, kW, kH);
       if (made.ok()) r = std::move(*made);

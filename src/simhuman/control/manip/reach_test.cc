@@ -166,8 +166,8 @@ double LoadedWristSag(double min_inertia) {
     // the load: 30 N down at a point 6 cm out of the palm
     const int hb = arm.hand_body;
     const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> rh(d->xmat + 9 * hb);
-    const Eigen::Vector3d at = Eigen::Vector3d(d->site_xpos + 3 * arm.palm_site) +
-                               0.06 * rh.col(1) * (arm.right ? 1 : -1);
+    const Eigen::Vector3d at =
+        Eigen::Vector3d(d->site_xpos + 3 * arm.palm_site) + 0.06 * rh.col(1) * (arm.right ? 1 : -1);
     const Eigen::Vector3d f(0, 0, -30);
     const Eigen::Vector3d tau = (at - Eigen::Vector3d(d->xipos + 3 * hb)).cross(f);
     for (int i = 0; i < 3; ++i) {
@@ -185,8 +185,8 @@ double LoadedWristSag(double min_inertia) {
 
 TEST(ReachTest, AnInertiaFloorHoldsTheWristUnderALoadItDoesNotModelIntegration) {
   const double soft = LoadedWristSag(0.0), stiff = LoadedWristSag(0.03);
-  std::printf("forearm and wrist sag under 30 N: %.3f rad without the floor, %.3f with it\n",
-              soft, stiff);
+  std::printf("forearm and wrist sag under 30 N: %.3f rad without the floor, %.3f with it\n", soft,
+              stiff);
   EXPECT_LT(stiff, 0.08);
   EXPECT_LT(stiff, 0.6 * soft);
 }

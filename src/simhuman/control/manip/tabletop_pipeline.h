@@ -41,7 +41,7 @@ struct TabletopGoal {
 /// Settings of RunTabletop.
 struct TabletopOptions {
   ArmMotionOptions motion;
-  TrackerGains tracker;  ///< the arm's tracking (reach, lift, transport, place, retract)
+  TrackerGains tracker;      ///< the arm's tracking (reach, lift, transport, place, retract)
   int approach_angles = 16;  ///< DASH's theta samples around a round object
   double box_face_spread_rad =
       0.15;                      ///< a box: each face's normal and 1 and 2 times this either side
@@ -73,7 +73,7 @@ struct TabletopOptions {
   /// The object's base this high over the target on arrival (at 3 cm an object that slipped
   /// down in the grip on the way struck the bottom object of a stack and tipped it)
   double carry_clearance_m = 0.06;
-  double lower_speed_mps = 0.06;     ///< placing descent
+  double lower_speed_mps = 0.06;  ///< placing descent
   /// Before the descent the hand turns the object upright and shifts its centre of mass over
   /// the target, reading the object's pose (it tilts and slips in the grip during transport;
   /// DASH's placing policy reads it at 20 Hz): up to `align_passes` moves of `align_s` each,

@@ -18,12 +18,11 @@ Eigen::VectorXd NextVelocity(const Eigen::VectorXd& q, const Eigen::VectorXd& qd
 }
 
 absl::Status TrackerGains::Validate() const {
-  const std::pair<const char*, double> fields[] = {
-      {"kp", kp},
-                                                      {"kd", kd},
-                                                      {"ki", ki},
-                                                      {"integral_limit_rad_s", integral_limit_rad_s},
-                                                      {"min_inertia", min_inertia}};
+  const std::pair<const char*, double> fields[] = {{"kp", kp},
+                                                   {"kd", kd},
+                                                   {"ki", ki},
+                                                   {"integral_limit_rad_s", integral_limit_rad_s},
+                                                   {"min_inertia", min_inertia}};
   for (const auto& [name, value] : fields) {
     if (!(value >= 0 && std::isfinite(value))) {
       return absl::InvalidArgumentError(
