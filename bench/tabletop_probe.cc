@@ -48,8 +48,11 @@ struct Args {
   double cam_distance_m = 0.55, cam_azimuth_deg = 150, cam_elevation_deg = -25;
   double t_from = 0, t_to = 1e9;
   double trace_from = -1, trace_to = -1;
+  bool trace_contacts = false;
+  double trace_dt = 0.02;
   bool trace_arm = false, hold_rotation = true;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
+  double grip_frac = -1, grip_max = -1;
   bool press_closing = true;
   int approach_steps = 0, thumb_delay = -1;  ///< print object forces and tilts in this window (s)
   bool carried_check = true, top_grasp = false;
@@ -86,6 +89,10 @@ Args Parse(int argc, char** argv) {
       a.t_to = std::atof(v.c_str());
     } else if (k == "--trace-from") {
       a.trace_from = std::atof(v.c_str());
+    } else if (k == "--trace-dt") {
+      a.trace_dt = std::atof(v.c_str());
+    } else if (k == "--trace-contacts") {
+      a.trace_contacts = v == "1";
     } else if (k == "--trace-arm") {
       a.trace_arm = v == "1";
     } else if (k == "--trace-to") {
@@ -94,6 +101,10 @@ Args Parse(int argc, char** argv) {
       a.min_inertia = std::atof(v.c_str());
     } else if (k == "--terminal-speed") {
       a.terminal_speed = std::atof(v.c_str());
+    } else if (k == "--grip-frac") {
+      a.grip_frac = std::atof(v.c_str());
+    } else if (k == "--grip-max") {
+      a.grip_max = std::atof(v.c_str());
     } else if (k == "--comfort-reach") {
       a.comfort_reach = std::atof(v.c_str());
     } else if (k == "--thumb-delay") {
@@ -146,7 +157,7 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
   auto rh0 = std::make_shared<Eigen::Matrix3d>();
   return [a, m, &ix, g, human_root, next_trace, rel0, rh0](const mjData* d) {
     if (d->time + 1e-9 < *next_trace || d->time > a.trace_to) return;
-    *next_trace += 0.02;
+    *next_trace += a.trace_dt;
     Eigen::Vector3d f_hand = Eigen::Vector3d::Zero();
     int n_hand = 0;
     for (int c = 0; c < d->ncon; ++c) {
@@ -163,6 +174,7 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
       } else {
         continue;
       }
+      if (a.trace_contacts) std::printf("    contact with %s\n", mj_id2name(m, mjOBJ_BODY, other));
       if (m->body_rootid[other] != human_root) continue;
       mjtNum f6[6];
       mj_contactForce(m, d, c, f6);
@@ -190,6 +202,7 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
         d->time, tilt(g.object_body), tilt(g.support_body), turned, slip,
         d->xipos[3 * g.object_body], d->xipos[3 * g.object_body + 1],
         d->xipos[3 * g.object_body + 2], f_hand.x(), f_hand.y(), f_hand.z(), n_hand);
+    if (a.trace_contacts) std::printf("    palm z %.3f\n", d->site_xpos[3 * ix.arm.palm_site + 2]);
     if (a.trace_arm) {
       std::printf("     arm q");
       for (int j = 0; j < 7; ++j) std::printf(" %6.2f", d->qpos[ix.arm.qpos[j]]);
@@ -229,6 +242,8 @@ int main(int argc, char** argv) {
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
     if (a.comfort_reach > 0) pipeline.comfort_reach_m = a.comfort_reach;
+    if (a.grip_frac > 0) pipeline.grip_height_frac = a.grip_frac;
+    if (a.grip_max > 0) pipeline.grip_max_m = a.grip_max;
     if (a.terminal_speed >= 0) pipeline.motion.terminal_palm_speed_mps = a.terminal_speed;
     if (a.min_inertia >= 0) pipeline.tracker.min_inertia = a.min_inertia;
     if (a.path_speed > 0) pipeline.motion.mean_path_speed = a.path_speed;
