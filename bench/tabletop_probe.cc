@@ -53,6 +53,7 @@ struct Args {
   bool trace_arm = false, hold_rotation = true;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   double grip_frac = -1, grip_max = -1;
+  int shortcuts = -1;
   bool press_closing = true;
   int approach_steps = 0, thumb_delay = -1;  ///< print object forces and tilts in this window (s)
   bool carried_check = true, top_grasp = false;
@@ -101,6 +102,8 @@ Args Parse(int argc, char** argv) {
       a.min_inertia = std::atof(v.c_str());
     } else if (k == "--terminal-speed") {
       a.terminal_speed = std::atof(v.c_str());
+    } else if (k == "--shortcuts") {
+      a.shortcuts = std::atoi(v.c_str());
     } else if (k == "--grip-frac") {
       a.grip_frac = std::atof(v.c_str());
     } else if (k == "--grip-max") {
@@ -243,6 +246,7 @@ int main(int argc, char** argv) {
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
     if (a.comfort_reach > 0) pipeline.comfort_reach_m = a.comfort_reach;
     if (a.grip_frac > 0) pipeline.grip_height_frac = a.grip_frac;
+    if (a.shortcuts >= 0) pipeline.motion.planner.shortcut_iterations = a.shortcuts;
     if (a.grip_max > 0) pipeline.grip_max_m = a.grip_max;
     if (a.terminal_speed >= 0) pipeline.motion.terminal_palm_speed_mps = a.terminal_speed;
     if (a.min_inertia >= 0) pipeline.tracker.min_inertia = a.min_inertia;
