@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,100 +47,65 @@ struct Args {
   std::string shape, kind, sheet_dir;
   double frame_s = 0.2;
   double cam_distance_m = 0.55, cam_azimuth_deg = 150, cam_elevation_deg = -25;
-  double t_from = 0, t_to = 1e9;
-  double trace_from = -1, trace_to = -1;
-  bool trace_contacts = false;
-  double trace_dt = 0.02;
-  bool trace_arm = false, hold_rotation = true;
+  double t_from = 0, t_to = 1e9;                           ///< frames only in this window (s)
+  double trace_from = -1, trace_to = -1, trace_dt = 0.02;  ///< the trace's window and step (s)
+  bool trace_contacts = false, trace_arm = false;
+  // pipeline and scripted-grasp settings (negative or 0: the default)
+  bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   double grip_frac = -1, grip_max = -1;
-  int shortcuts = -1;
-  bool press_closing = true;
-  int approach_steps = 0, thumb_delay = -1;  ///< print object forces and tilts in this window (s)
-  bool carried_check = true, top_grasp = false;
-  int grasp_steps = 0;
   double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1;
-  bool no_spheres = false, profile = false;  ///< frames only in this window (s)
+  int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
+  bool no_spheres = false, profile = false;
 };
 
+// every flag takes one value; booleans are "1" (true) or anything else (false)
 Args Parse(int argc, char** argv) {
   Args a;
+  const std::map<std::string, double*> doubles = {{"--frame-s", &a.frame_s},
+                                                  {"--cam-distance", &a.cam_distance_m},
+                                                  {"--cam-elevation", &a.cam_elevation_deg},
+                                                  {"--cam-azimuth", &a.cam_azimuth_deg},
+                                                  {"--t-from", &a.t_from},
+                                                  {"--t-to", &a.t_to},
+                                                  {"--trace-from", &a.trace_from},
+                                                  {"--trace-to", &a.trace_to},
+                                                  {"--trace-dt", &a.trace_dt},
+                                                  {"--rot-weight", &a.rot_weight},
+                                                  {"--press-m", &a.press_m},
+                                                  {"--terminal-speed", &a.terminal_speed},
+                                                  {"--comfort-reach", &a.comfort_reach},
+                                                  {"--grip-frac", &a.grip_frac},
+                                                  {"--grip-max", &a.grip_max},
+                                                  {"--squeeze", &a.squeeze},
+                                                  {"--path-speed", &a.path_speed},
+                                                  {"--clearance", &a.clearance},
+                                                  {"--min-inertia", &a.min_inertia}};
+  const std::map<std::string, int*> ints = {{"--from", &a.from},
+                                            {"--to", &a.to},
+                                            {"--shortcuts", &a.shortcuts},
+                                            {"--approach-steps", &a.approach_steps},
+                                            {"--thumb-delay", &a.thumb_delay},
+                                            {"--grasp-steps", &a.grasp_steps}};
+  const std::map<std::string, bool*> bools = {
+      {"--trace-contacts", &a.trace_contacts}, {"--trace-arm", &a.trace_arm},
+      {"--hold-rotation", &a.hold_rotation},   {"--press-closing", &a.press_closing},
+      {"--carried-check", &a.carried_check},   {"--top-grasp", &a.top_grasp},
+      {"--no-spheres", &a.no_spheres},         {"--profile", &a.profile}};
+  const std::map<std::string, std::string*> strings = {
+      {"--shape", &a.shape}, {"--kind", &a.kind}, {"--sheet-dir", &a.sheet_dir}};
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if (k == "--seed") {
       a.seed = std::strtoull(v.c_str(), nullptr, 10);
-    } else if (k == "--from") {
-      a.from = std::atoi(v.c_str());
-    } else if (k == "--to") {
-      a.to = std::atoi(v.c_str());
-    } else if (k == "--shape") {
-      a.shape = v;
-    } else if (k == "--kind") {
-      a.kind = v;
-    } else if (k == "--sheet-dir") {
-      a.sheet_dir = v;
-    } else if (k == "--cam-distance") {
-      a.cam_distance_m = std::atof(v.c_str());
-    } else if (k == "--cam-elevation") {
-      a.cam_elevation_deg = std::atof(v.c_str());
-    } else if (k == "--cam-azimuth") {
-      a.cam_azimuth_deg = std::atof(v.c_str());
-    } else if (k == "--t-from") {
-      a.t_from = std::atof(v.c_str());
-    } else if (k == "--t-to") {
-      a.t_to = std::atof(v.c_str());
-    } else if (k == "--trace-from") {
-      a.trace_from = std::atof(v.c_str());
-    } else if (k == "--trace-dt") {
-      a.trace_dt = std::atof(v.c_str());
-    } else if (k == "--trace-contacts") {
-      a.trace_contacts = v == "1";
-    } else if (k == "--trace-arm") {
-      a.trace_arm = v == "1";
-    } else if (k == "--trace-to") {
-      a.trace_to = std::atof(v.c_str());
-    } else if (k == "--min-inertia") {
-      a.min_inertia = std::atof(v.c_str());
-    } else if (k == "--terminal-speed") {
-      a.terminal_speed = std::atof(v.c_str());
-    } else if (k == "--shortcuts") {
-      a.shortcuts = std::atoi(v.c_str());
-    } else if (k == "--grip-frac") {
-      a.grip_frac = std::atof(v.c_str());
-    } else if (k == "--grip-max") {
-      a.grip_max = std::atof(v.c_str());
-    } else if (k == "--comfort-reach") {
-      a.comfort_reach = std::atof(v.c_str());
-    } else if (k == "--thumb-delay") {
-      a.thumb_delay = std::atoi(v.c_str());
-    } else if (k == "--press-closing") {
-      a.press_closing = v == "1";
-    } else if (k == "--press-m") {
-      a.press_m = std::atof(v.c_str());
-    } else if (k == "--approach-steps") {
-      a.approach_steps = std::atoi(v.c_str());
-    } else if (k == "--hold-rotation") {
-      a.hold_rotation = v == "1";
-    } else if (k == "--rot-weight") {
-      a.rot_weight = std::atof(v.c_str());
-    } else if (k == "--clearance") {
-      a.clearance = std::atof(v.c_str());
-    } else if (k == "--carried-check") {
-      a.carried_check = v == "1";
-    } else if (k == "--squeeze") {
-      a.squeeze = std::atof(v.c_str());
-    } else if (k == "--path-speed") {
-      a.path_speed = std::atof(v.c_str());
-    } else if (k == "--grasp-steps") {
-      a.grasp_steps = std::atoi(v.c_str());
-    } else if (k == "--profile") {
-      a.profile = v == "1";
-    } else if (k == "--no-spheres") {
-      a.no_spheres = v == "1";
-    } else if (k == "--top-grasp") {
-      a.top_grasp = v == "1";
-    } else if (k == "--frame-s") {
-      a.frame_s = std::atof(v.c_str());
+    } else if (doubles.count(k)) {
+      *doubles.at(k) = std::atof(v.c_str());
+    } else if (ints.count(k)) {
+      *ints.at(k) = std::atoi(v.c_str());
+    } else if (bools.count(k)) {
+      *bools.at(k) = v == "1";
+    } else if (strings.count(k)) {
+      *strings.at(k) = v;
     } else {
       std::fprintf(stderr, "unknown flag %s\n", k.c_str());
       std::exit(2);
