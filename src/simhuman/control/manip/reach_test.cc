@@ -36,6 +36,14 @@ std::unique_ptr<world::SimWorld> TableScene(const Eigen::Vector3d& can_table) {
   return std::move(*w);
 }
 
+// the right arm's and hand's index, the hand opened (SetOpenHand) and the kinematics run
+GraspIndex OpenTheHand(world::SimWorld& w) {
+  const GraspIndex gi = *MakeGraspIndex(w, 0, true);
+  SetOpenHand(gi, w.data());
+  mj_forward(w.model(), w.data());
+  return gi;
+}
+
 std::vector<PalmPose> Around(const Eigen::Vector3d& centre, double standoff) {
   std::vector<PalmPose> out;
   for (int k = 0; k < 16; ++k)
@@ -48,10 +56,8 @@ TEST(ReachTest, TheArmReachesAPreGraspBesideAnObjectAndTracksItIntegration) {
   auto w = TableScene(can_table);
   const mjModel* m = w->model();
   mjData* d = w->data();
-  const GraspIndex gi = *MakeGraspIndex(*w, 0, true);
+  const GraspIndex gi = OpenTheHand(*w);
   const ArmChain& arm = gi.arm;
-  SetOpenHand(gi, d);
-  mj_forward(m, d);
   for (int k = 0; k < kGraspDofs; ++k) d->ctrl[gi.actuator[k]] = d->qpos[gi.qpos[k]];
   mjData* s = mj_makeData(m);
   const Eigen::Vector3d centre = world::TableToWorld(can_table) + Eigen::Vector3d(0, 0, 0.055);
@@ -136,10 +142,8 @@ double LoadedWristSag(double min_inertia) {
   auto w = TableScene(Eigen::Vector3d(0.3, -0.2, 0));  // the can out of the way
   const mjModel* m = w->model();
   mjData* d = w->data();
-  const GraspIndex gi = *MakeGraspIndex(*w, 0, true);
+  const GraspIndex gi = OpenTheHand(*w);
   const ArmChain& arm = gi.arm;
-  SetOpenHand(gi, d);
-  mj_forward(m, d);
   mjData* s = mj_makeData(m);
   mju_copy(s->qpos, d->qpos, m->nq);
   const PalmPose goal =
