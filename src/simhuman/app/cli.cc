@@ -155,6 +155,11 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
                    "walk suites: MuJoCo solver, newton or pgs (e.g. to check a policy trained "
                    "with physics_solver pgs)")
       ->capture_default_str();
+  eval_cmd
+      ->add_option("--scales", ev->scales,
+                   "walk suites: body length scales, one run each with success per scale "
+                   "(e.g. 0.6,0.8,1.0,1.2; each in [0.5, 1.5]; default 1)")
+      ->delimiter(',');
   eval_cmd->add_flag("--resume", ev->resume,
                      "Plan suites: continue the run in --out, running only its missing episodes");
   return eval_cmd;

@@ -126,31 +126,15 @@ int LanguageEval(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
 }
 
 // the `walk` and `walk-step` suites: the walking policy alone (eval/walk_eval.h)
-int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
-  if (flags.policy.empty()) {
-    return ReportError(
-        err, kCommand,
-        absl::InvalidArgumentError("--suite " + flags.suite + " needs --policy <file>"));
-  }
-  if (flags.physics_solver != "newton" && flags.physics_solver != "pgs") {
-    return ReportError(err, kCommand,
-                       absl::InvalidArgumentError("--physics-solver '" + flags.physics_solver +
-                                                  "' is unknown; valid: newton, pgs"));
-  }
-  eval::WalkEvalOptions o;
-  o.step_suite = flags.suite == "walk-step";
-  o.physics_solver = flags.physics_solver;
-  o.policy = flags.policy;
-  o.episodes = flags.episodes;
-  o.seed = flags.seed;
-  o.video_every = flags.video_every;
-  o.video = flags.video;
-  o.sheet_dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
+// one run of a walk suite at `o.scale`; writes its files under o.sheet_dir
+int WalkEvalOnce(const EvalFlags& flags, eval::WalkEvalOptions o, std::ostream& out,
+                 std::ostream& err, eval::WalkEvalSummary* result) {
   absl::Status dir = MakeOutputDir(o.sheet_dir);
   if (!dir.ok()) return ReportError(err, kCommand, dir);
   std::ofstream lines(o.sheet_dir + "/episodes.jsonl", std::ios::trunc);
   out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes, seed "
-      << o.seed << ", policy " << o.policy << " -> " << o.sheet_dir << std::endl;
+      << o.seed << ", scale " << o.scale << ", policy " << o.policy << " -> " << o.sheet_dir
+      << std::endl;
   out << Row("%4s %7s %8s %-4s %-4s %7s %8s %8s %9s %9s %8s %7s", "ep", "dist_m", "bear_deg", "ok",
              "fell", "time_s", "end_cm", "end_deg", "speed_ms", "skate_ms", "turn_deg", "arm_deg")
       << std::endl;
@@ -175,6 +159,63 @@ int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err
              summary->foot_skate_mps, 100 * summary->final_dist_m, summary->final_yaw_err_deg,
              summary->max_turn_deg, 100 * summary->no_turn_rate, summary->arm_raise_deg)
       << std::endl;
+  out << "human-norm gait metrics (steady walking only; docs/EVAL_PROTOCOLS.md):\n"
+      << eval::MotionNormsReport(summary->motion) << std::flush;
+  *result = *summary;
+  return kExitOk;
+}
+
+int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err) {
+  if (flags.policy.empty()) {
+    return ReportError(
+        err, kCommand,
+        absl::InvalidArgumentError("--suite " + flags.suite + " needs --policy <file>"));
+  }
+  if (flags.physics_solver != "newton" && flags.physics_solver != "pgs") {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError("--physics-solver '" + flags.physics_solver +
+                                                  "' is unknown; valid: newton, pgs"));
+  }
+  eval::WalkEvalOptions o;
+  o.step_suite = flags.suite == "walk-step";
+  o.physics_solver = flags.physics_solver;
+  o.policy = flags.policy;
+  o.episodes = flags.episodes;
+  o.seed = flags.seed;
+  o.video_every = flags.video_every;
+  o.video = flags.video;
+  o.sheet_dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
+  for (double sc : flags.scales) {
+    if (!(sc >= 0.5 && sc <= 1.5)) {
+      return ReportError(err, kCommand,
+                         absl::InvalidArgumentError("--scales entry " + std::to_string(sc) +
+                                                    " is invalid; valid: a scale in [0.5, 1.5]"));
+    }
+  }
+  if (flags.scales.size() <= 1) {
+    o.scale = flags.scales.empty() ? 1.0 : flags.scales[0];
+    eval::WalkEvalSummary s;
+    return WalkEvalOnce(flags, o, out, err, &s);
+  }
+  // one run per scale, each in its own folder, then success per scale
+  const std::string base = o.sheet_dir;
+  std::vector<std::pair<double, eval::WalkEvalSummary>> rows;
+  for (double sc : flags.scales) {
+    o.scale = sc;
+    o.sheet_dir = base + "/scale_" + Row("%.2f", sc);
+    eval::WalkEvalSummary s;
+    int rc = WalkEvalOnce(flags, o, out, err, &s);
+    if (rc != kExitOk) return rc;
+    rows.emplace_back(sc, s);
+  }
+  out << "\nper scale (" << flags.suite << ", " << o.episodes << " episodes each)\n"
+      << Row("%6s %8s %7s %7s %9s", "scale", "success", "falls", "time_s", "skate_ms") << "\n";
+  for (const auto& [sc, s] : rows) {
+    out << Row("%6.2f %7.1f%% %6.1f%% %7.1f %9.3f", sc, 100 * s.success_rate, 100 * s.fall_rate,
+               s.mean_time_s, s.foot_skate_mps)
+        << "\n";
+  }
+  out << std::flush;
   return kExitOk;
 }
 

@@ -28,6 +28,8 @@ struct EvalFlags {
   std::string policy;
   bool video = false;                     ///< walk suite: also write MP4s of rendered episodes
   std::string physics_solver = "newton";  ///< walk suites: world::ModelOptions::solver
+  /// walk suites: the humans' length scales, one run of the suite each (empty: scale 1)
+  std::vector<double> scales;
   /// Plan suites: continue the run in --out, running only its missing episodes.
   bool resume = false;
   /// Tabletop suites: a grasp policy file, or "scripted"; empty: assets/policies/grasp.pt when

@@ -29,6 +29,9 @@ std::string Quoted(const std::string& s) {
   return json(s).dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
+std::string Shown(int v) { return std::to_string(v); }
+std::string Shown(double v) { return FormatNumber(v); }
+
 template <typename V>
 std::string ListOf(const std::vector<V>& values) {
   std::string out = "[";
@@ -36,6 +39,8 @@ std::string ListOf(const std::vector<V>& values) {
     if (i) out += ", ";
     if constexpr (std::is_same_v<V, std::string>) {
       out += Quoted(values[i]);
+    } else if constexpr (std::is_same_v<V, double>) {
+      out += FormatNumber(values[i]);
     } else {
       out += std::to_string(values[i]);
     }
@@ -88,6 +93,9 @@ Status Read(const json& v, const std::string& ptr, std::string* out) {
 Status Read(const json& v, const std::string& ptr, std::vector<int>* out) {
   return Store(ReadInts(v, ptr), out);
 }
+Status Read(const json& v, const std::string& ptr, std::vector<double>* out) {
+  return Store(ReadNumbers(v, ptr, 0, 1u << 20), out);
+}
 Status Read(const json& v, const std::string& ptr, std::vector<std::string>* out) {
   return Store(ReadStrings(v, ptr), out);
 }
@@ -112,16 +120,28 @@ Status Check(std::string_view table, const FieldSpec& spec, const std::string& v
   return Invalid(table, spec, Quoted(value), problem);
 }
 
-Status Check(std::string_view table, const FieldSpec& spec, const std::vector<int>& value) {
+namespace {
+
+template <typename V>
+Status CheckNumbers(std::string_view table, const FieldSpec& spec, const std::vector<V>& value) {
   SH_RETURN_IF_ERROR(CheckItems(table, spec, value.size(), ListOf(value)));
   for (size_t i = 0; i < value.size(); ++i) {
     if (!spec.range.Contains(value[i])) {
       return Invalid(table, spec, ListOf(value),
-                     "entry " + std::to_string(i) + " (" + std::to_string(value[i]) +
+                     "entry " + std::to_string(i) + " (" + Shown(value[i]) +
                          ") is outside the valid range " + spec.range.ToString());
     }
   }
   return absl::OkStatus();
+}
+
+}  // namespace
+
+Status Check(std::string_view table, const FieldSpec& spec, const std::vector<int>& value) {
+  return CheckNumbers(table, spec, value);
+}
+Status Check(std::string_view table, const FieldSpec& spec, const std::vector<double>& value) {
+  return CheckNumbers(table, spec, value);
 }
 
 Status Check(std::string_view table, const FieldSpec& spec, const std::vector<std::string>& value) {

@@ -1,7 +1,7 @@
 #pragma once
 /// One table per config struct drives its strict JSON reading, its validation and its JSON
 /// output. Each row names a key, the struct member it fills (double, int, int64_t, uint64_t,
-/// bool, std::string, std::vector<int> or std::vector<std::string>), what is valid (a range, a
+/// bool, std::string, std::vector<int>, std::vector<double> or std::vector<std::string>), what is valid (a range, a
 /// list of names, a minimum length) and a short doc:
 ///
 ///   const core::FieldTable<MpcConfig>& Table() {
@@ -53,6 +53,7 @@ Status Read(const nlohmann::json& v, const std::string& ptr, uint64_t* out);
 Status Read(const nlohmann::json& v, const std::string& ptr, bool* out);
 Status Read(const nlohmann::json& v, const std::string& ptr, std::string* out);
 Status Read(const nlohmann::json& v, const std::string& ptr, std::vector<int>* out);
+Status Read(const nlohmann::json& v, const std::string& ptr, std::vector<double>* out);
 Status Read(const nlohmann::json& v, const std::string& ptr, std::vector<std::string>* out);
 
 /// "<table> '<key>' = <value> is invalid; <what is valid>" when `value` breaks `spec`.
@@ -63,6 +64,7 @@ Status Check(std::string_view table, const FieldSpec& spec, uint64_t value);
 Status Check(std::string_view table, const FieldSpec& spec, bool value);
 Status Check(std::string_view table, const FieldSpec& spec, const std::string& value);
 Status Check(std::string_view table, const FieldSpec& spec, const std::vector<int>& value);
+Status Check(std::string_view table, const FieldSpec& spec, const std::vector<double>& value);
 Status Check(std::string_view table, const FieldSpec& spec, const std::vector<std::string>& value);
 
 /// Aborts (a bug in a table) on a duplicate or empty key.
@@ -76,7 +78,7 @@ class Field {
  public:
   using Member =
       std::variant<double T::*, int T::*, int64_t T::*, uint64_t T::*, bool T::*, std::string T::*,
-                   std::vector<int> T::*, std::vector<std::string> T::*>;
+                   std::vector<int> T::*, std::vector<double> T::*, std::vector<std::string> T::*>;
 
   /// `member` must be a pointer to one of the Member types.
   template <typename M>

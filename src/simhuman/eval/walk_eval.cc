@@ -141,6 +141,7 @@ core::StatusOr<WalkEpisode> RunWalkEpisode(const WalkEvalOptions& options, int i
   core::Rng rng(core::DeriveSeed(options.seed, static_cast<uint64_t>(i)));
   world::AgentSpec start;
   start.yaw_rad = rng.Uniform(-M_PI, M_PI);
+  start.scale = options.scale;
   world::ModelOptions mo;
   mo.timestep_s = kWalkPhysicsDt;
   mo.solver = options.physics_solver;
@@ -171,6 +172,7 @@ core::StatusOr<WalkEpisode> RunWalkEpisode(const WalkEvalOptions& options, int i
   };
   SH_ASSIGN_OR_RETURN(const control::WalkIndex wix, control::MakeWalkIndex(*world, 0));
   const WalkIds ids = FindWalkIds(m);
+  std::vector<MotionSample> motion;
   for (int k = 0; k < steps; ++k) {
     if (k % kWalkSubsteps == 0) {
       if (render) record();
@@ -200,6 +202,7 @@ core::StatusOr<WalkEpisode> RunWalkEpisode(const WalkEvalOptions& options, int i
           ep.max_turn_deg, std::abs(std::remainder(yaw - start.yaw_rad, 2 * M_PI)) * 180 / M_PI);
       tally.arm_raise += HigherArmRaise(d, ids) * 180 / M_PI;
       ++tally.arm_n;
+      motion.push_back(SampleMotion(m, d, *world, 0));
     }
     if (!h.ok() || HeadPointZ(*world, d) < control::kFallHeadHeightM * world->agent(0).scale) {
       ep.fell = true;
@@ -219,6 +222,7 @@ core::StatusOr<WalkEpisode> RunWalkEpisode(const WalkEvalOptions& options, int i
   ep.foot_skate_mps = tally.skate_n ? tally.skate / tally.skate_n : 0;
   ep.mean_speed_mps = ep.time_s > 0 ? tally.path / ep.time_s : 0;
   ep.arm_raise_deg = tally.arm_n ? tally.arm_raise / tally.arm_n : 0;
+  ep.motion = ComputeMotionMetrics(motion, options.scale);
   return ep;
 }
 
@@ -229,8 +233,10 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
     const std::function<void(const WalkEpisode&)>& on_episode) {
   WalkEvalSummary sum;
   int successes = 0, no_turn = 0;
+  std::vector<MotionMetrics> motion;
   for (int i = 0; i < options.episodes; ++i) {
     SH_ASSIGN_OR_RETURN(const WalkEpisode ep, RunWalkEpisode(options, i));
+    motion.push_back(ep.motion);
     if (episodes) episodes->push_back(ep);
     if (on_episode) on_episode(ep);
     ++sum.episodes;
@@ -259,6 +265,7 @@ core::StatusOr<WalkEvalSummary> RunWalkEval(
     sum.mean_time_s /= successes;
     sum.no_turn_rate = static_cast<double>(no_turn) / successes;
   }
+  sum.motion = MeanMotionMetrics(motion);
   return sum;
 }
 
@@ -276,6 +283,7 @@ nlohmann::ordered_json WalkEpisodeJson(const WalkEpisode& e) {
   j["bearing_deg"] = e.bearing_deg;
   j["max_turn_deg"] = e.max_turn_deg;
   j["arm_raise_deg"] = e.arm_raise_deg;
+  j["motion"] = MotionMetricsJson(e.motion);
   if (!e.sheet_path.empty()) j["contact_sheet"] = e.sheet_path;
   return j;
 }
@@ -294,6 +302,8 @@ nlohmann::ordered_json WalkSummaryJson(const WalkEvalSummary& s, const WalkEvalO
   j["no_turn_rate"] = s.no_turn_rate;
   j["arm_raise_deg"] = s.arm_raise_deg;
   j["physics_solver"] = options.physics_solver;
+  j["scale"] = options.scale;
+  j["motion"] = MotionMetricsJson(s.motion);
   j["policy"] = options.policy;
   j["seed"] = options.seed;
   const nlohmann::ordered_json provenance = ProvenanceJson();

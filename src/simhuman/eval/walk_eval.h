@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "simhuman/core/status.h"
+#include "simhuman/eval/motion_metrics.h"
 
 namespace simhuman::eval {
 
@@ -32,6 +33,7 @@ struct WalkEvalOptions {
   bool video = false;       ///< also write ep<i>.mp4 for rendered episodes
   bool step_suite = false;  ///< the walk-step variant (min/max_dist_m are then ignored)
   std::string physics_solver = "newton";  ///< world::ModelOptions::solver
+  double scale = 1.0;  ///< the human's length scale (targets and the success rule stay in metres)
 };
 
 struct WalkEpisode {
@@ -49,6 +51,7 @@ struct WalkEpisode {
   /// down, shoulder to hand: a relaxed walking arm stays within about 20 degrees, an arm held
   /// out in front at shoulder height is at 90
   double arm_raise_deg = 0;
+  MotionMetrics motion;  ///< human-norm gait metrics of the episode (eval/motion_metrics.h)
   std::string sheet_path;  ///< contact sheet, when rendered
   std::string render_error;
 };
@@ -64,6 +67,7 @@ struct WalkEvalSummary {
   /// share of successful episodes whose heading never left the start heading by 45 degrees
   /// or more (walk-step: stepped back or sideways instead of turning round)
   double no_turn_rate = 0;
+  MotionMetrics motion;  ///< the episodes' metrics, weighted by walking time
 };
 
 /// Runs the suite; `on_episode` (optional) sees each finished episode. Errors: the policy file.

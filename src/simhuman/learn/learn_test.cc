@@ -136,6 +136,37 @@ TEST(WalkTask, ObservationsFiniteRewardPositiveFallDetectedIntegration) {
   EXPECT_TRUE(fell);
 }
 
+TEST(WalkTask, BodiesOfEverySizeSeeTheAdultsObservationIntegration) {
+  // a child (0.6) and a tall adult (1.2) started alike observe the same numbers: the task works
+  // in the adult's units (control::WalkScale)
+  auto task = WalkTask::Create(2, WalkPhysicsSolver::kNewton, {0.6, 1.2});
+  ASSERT_TRUE(task.ok()) << task.status();
+  WalkTask& t = **task;
+  EXPECT_DOUBLE_EQ(t.body_scale(0), 0.6);
+  EXPECT_DOUBLE_EQ(t.body_scale(1), 1.2);
+  std::vector<float> child(control::kWalkObsDim), tall(control::kWalkObsDim);
+  t.Reset(0, 7, child.data());
+  t.Reset(1, 7, tall.data());
+  const int pelvis = t.model()->body_rootid[1];
+  EXPECT_NEAR(t.data(0)->xpos[3 * pelvis + 2] / t.data(1)->xpos[3 * pelvis + 2], 0.5, 0.01);
+  EXPECT_NEAR(child[0], tall[0], 0.01);  // pelvis height / scale
+  // every entry but the gait clock (sin, cos of the phase and the amplitude: 105-107), which
+  // runs in the adult's time, sqrt(s) faster for the smaller body
+  for (int k = 0; k < control::kWalkObsDim; ++k) {
+    if (k < 105 || k > 107) {
+      EXPECT_NEAR(child[k], tall[k], 0.02) << k;
+    }
+  }
+  const double p0 = t.state(0).phase, p1 = t.state(1).phase;
+  std::vector<float> act(control::kWalkActDim, 0.f);
+  StepInfo a, b;
+  t.Step(0, act.data(), child.data(), &a);
+  t.Step(1, act.data(), tall.data(), &b);
+  EXPECT_NEAR(t.state(0).cmd.vx, t.state(1).cmd.vx, 0.01);  // adult units
+  EXPECT_NEAR((t.state(0).phase - p0) / (t.state(1).phase - p1), std::sqrt(1.2 / 0.6), 1e-6);
+  EXPECT_FALSE(WalkTask::Create(1, WalkPhysicsSolver::kNewton, {0.3}).ok());
+}
+
 TEST(WalkTask, ReferenceGaitAlternatesFeet) {
   control::WalkParams p;
   control::WalkCommand cmd{1.0, 0, 0};

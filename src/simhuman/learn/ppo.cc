@@ -29,9 +29,16 @@ constexpr size_t kStatsWindow = 200;
 constexpr size_t kBestPolicyMinEpisodes = 50;
 
 core::StatusOr<std::unique_ptr<VecTask>> MakeTask(const std::string& name, int envs,
-                                                  const std::string& solver) {
+                                                  const TaskOptions& options) {
   SH_ASSIGN_OR_RETURN(const TaskDef* def, FindTask(name));
-  return def->make(envs, solver);
+  return def->make(envs, options);
+}
+
+TaskOptions OptionsOf(const PpoConfig& c) {
+  TaskOptions o;
+  o.solver = c.physics_solver;
+  o.body_scales = c.body_scales;
+  return o;
 }
 
 std::string Widths(const std::vector<int>& h) {
@@ -174,7 +181,7 @@ struct PpoTrainer::Impl {
   // trained ones
   absl::Status ResetParentUnusedActions(const TaskDef& def, int a) {
     SH_ASSIGN_OR_RETURN(const TaskDef* parent_def, FindTask(def.init_parent));
-    SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> parent_task, parent_def->make(1, "newton"));
+    SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> parent_task, parent_def->make(1, TaskOptions()));
     torch::NoGradGuard no_grad;
     std::vector<int64_t> unused, used;
     for (int j = 0; j < a; ++j) (parent_task->action_used(j) ? used : unused).push_back(j);
@@ -332,7 +339,7 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Create(const PpoConfig& 
                                                                core::Communicator* comm) {
   SH_RETURN_IF_ERROR(config.Validate());
   SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task,
-                      MakeTask(config.task, config.num_envs, config.physics_solver));
+                      MakeTask(config.task, config.num_envs, OptionsOf(config)));
   return CreateWithTask(config, out_dir, std::move(task), comm);
 }
 
@@ -391,7 +398,7 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
     impl->cfg = *cfg;
     if (total_steps > 0) impl->cfg.total_steps = total_steps;
     SH_ASSIGN_OR_RETURN(std::unique_ptr<VecTask> task,
-                        MakeTask(impl->cfg.task, impl->cfg.num_envs, impl->cfg.physics_solver));
+                        MakeTask(impl->cfg.task, impl->cfg.num_envs, OptionsOf(impl->cfg)));
     SH_RETURN_IF_ERROR(impl->CheckRanks());
     impl->env = std::make_unique<VecEnv>(std::move(task), impl->cfg.threads, impl->EnvSeed());
     impl->Build();
@@ -551,7 +558,9 @@ core::StatusOr<std::pair<int64_t, double>> ReadCheckpointProgress(const std::str
 
 core::StatusOr<std::unique_ptr<VecTask>> MakeVecTask(const std::string& name, int num_envs,
                                                      const std::string& physics_solver) {
-  return MakeTask(name, num_envs, physics_solver);
+  TaskOptions o;
+  o.solver = physics_solver;
+  return MakeTask(name, num_envs, o);
 }
 
 }  // namespace simhuman::learn

@@ -1,5 +1,6 @@
 #include "simhuman/learn/ppo_config.h"
 
+#include <algorithm>
 #include <string>
 
 #include "simhuman/core/field_table.h"
@@ -33,6 +34,9 @@ const core::FieldTable<PpoConfig>& Table() {
            .In(kAtLeast0),
        F("physics_solver", &PpoConfig::physics_solver, "MuJoCo solver of the training physics")
            .OneOf({"auto", "newton", "pgs"}),
+       F("body_scales", &PpoConfig::body_scales, "humans' length scales spread over the envs")
+           .MinItems(1)
+           .In(NumberRange::Closed(0.5, 1.5)),
        F("seed", &PpoConfig::seed, "run seed"),
        F("rollout_steps", &PpoConfig::rollout_steps, "steps per env per iteration").In(kAtLeast1),
        F("epochs", &PpoConfig::epochs, "PPO epochs per iteration").In(kAtLeast1),
@@ -92,6 +96,18 @@ absl::Status PpoConfig::Validate() const {
   if (physics_solver == "pgs" && !TaskHasSolverChoice(task)) {
     return absl::InvalidArgumentError("training config: physics_solver '" + physics_solver +
                                       "' applies to the walk task only; task is '" + task + "'");
+  }
+  if (!TaskHasBodyScales(task) &&
+      std::any_of(body_scales.begin(), body_scales.end(), [](double s) { return s != 1.0; })) {
+    return absl::InvalidArgumentError(
+        "training config: body_scales other than [1] apply to the walk task only; task is '" +
+        task + "'");
+  }
+  if (static_cast<int>(body_scales.size()) > num_envs) {
+    return absl::InvalidArgumentError("training config 'body_scales' has " +
+                                      std::to_string(body_scales.size()) +
+                                      " entries; it may have at most num_envs (" +
+                                      std::to_string(num_envs) + ")");
   }
   if (rollout_chunks > num_envs) {
     return absl::InvalidArgumentError(

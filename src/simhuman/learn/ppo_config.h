@@ -28,6 +28,10 @@ struct PpoConfig {
   /// a cheaper solve of the same contact problem, about 1.3x faster env steps; policies move
   /// between the two: docs/BENCHMARKS.md) or "auto" (default: pgs for walk, newton otherwise).
   std::string physics_solver = "auto";
+  /// Length scales of the humans the envs hold (walk task only), spread evenly over the envs:
+  /// e.g. [0.6, 0.8, 1.0, 1.2] trains one policy for children to tall adults (the walk task
+  /// works in the adult's units, control::WalkScale). Each in [0.5, 1.5].
+  std::vector<double> body_scales = {1.0};
   uint64_t seed = 1;
   int rollout_steps = 32;  ///< per env per iteration
   int epochs = 3;

@@ -19,7 +19,8 @@ std::string Error(const json& j) {
 TEST(PpoConfigTable, DefaultsRoundTripThroughToJsonWithEveryKey) {
   const PpoConfig defaults;
   json j = defaults.ToJson();
-  EXPECT_EQ(j.size(), 39u);  // every key (38 before the table, + target_kl)
+  EXPECT_EQ(j.size(), 40u);  // every key (38 before the table, + target_kl, body_scales)
+  EXPECT_EQ(j["body_scales"], json::array({1.0}));
   EXPECT_EQ(j["target_kl"], 0.0);
   EXPECT_TRUE(j["seed"].is_number_unsigned());
   EXPECT_TRUE(j["total_steps"].is_number_integer());
@@ -46,6 +47,14 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
             "training config 'num_envs' = 5000 is invalid; valid range is [1, 4096]");
   EXPECT_EQ(Error(json{{"gamma", 0}}),
             "training config 'gamma' = 0 is invalid; valid range is (0, 1]");
+  EXPECT_EQ(Error(json{{"body_scales", {0.6, 2}}}),
+            "training config 'body_scales' = [0.6, 2] is invalid; entry 1 (2) is outside the "
+            "valid range [0.5, 1.5]");
+  EXPECT_THAT(Error(json{{"body_scales", json::array()}}), HasSubstr("at least 1 entry"));
+  EXPECT_THAT(Error(json{{"body_scales", {1, "big"}}}), HasSubstr("/body_scales/1"));
+  EXPECT_EQ(Error(json{{"task", "carry"}, {"body_scales", {0.8, 1.0}}}),
+            "training config: body_scales other than [1] apply to the walk task only; task is "
+            "'carry'");
   EXPECT_EQ(Error(json{{"task", "fly"}}),
             "training config 'task' = \"fly\" is invalid; valid values are: walk, reach, carry, "
             "grasp, grasp-residual");

@@ -8,4 +8,6 @@ std::vector<std::string> TaskNames() {
 
 bool TaskHasSolverChoice(std::string_view name) { return name == "walk"; }
 
+bool TaskHasBodyScales(std::string_view name) { return name == "walk"; }
+
 }  // namespace simhuman::learn

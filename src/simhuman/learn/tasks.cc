@@ -10,21 +10,22 @@ namespace simhuman::learn {
 const std::vector<TaskDef>& Tasks() {
   static const std::vector<TaskDef> tasks = {
       {"walk", "walk to a target stand point and stop there facing a heading",
-       [](int envs, const std::string& solver) -> core::StatusOr<std::unique_ptr<VecTask>> {
+       [](int envs, const TaskOptions& o) -> core::StatusOr<std::unique_ptr<VecTask>> {
          SH_ASSIGN_OR_RETURN(
              std::unique_ptr<WalkTask> t,
              WalkTask::Create(
-                 envs, solver != "newton" ? WalkPhysicsSolver::kPgs : WalkPhysicsSolver::kNewton));
+                 envs, o.solver != "newton" ? WalkPhysicsSolver::kPgs : WalkPhysicsSolver::kNewton,
+                 o.body_scales));
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "", true},
       {"reach", "a toy point-reaching task (tests of the learning stack)",
-       [](int envs, const std::string&) -> core::StatusOr<std::unique_ptr<VecTask>> {
+       [](int envs, const TaskOptions&) -> core::StatusOr<std::unique_ptr<VecTask>> {
          return std::unique_ptr<VecTask>(new ReachTask(envs));
        },
        "", false},
       {"carry", "walk to a box, lift it, carry it to a destination, put it down, step back",
-       [](int envs, const std::string&) -> core::StatusOr<std::unique_ptr<VecTask>> {
+       [](int envs, const TaskOptions&) -> core::StatusOr<std::unique_ptr<VecTask>> {
          SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> t, CarryTask::Create(envs));
          return std::unique_ptr<VecTask>(std::move(t));
        },
@@ -32,7 +33,7 @@ const std::vector<TaskDef>& Tasks() {
       {"grasp",
        "DASH's grasp stage: close a dexterous hand around a table object and hold it through a "
        "drop test",
-       [](int envs, const std::string&) -> core::StatusOr<std::unique_ptr<VecTask>> {
+       [](int envs, const TaskOptions&) -> core::StatusOr<std::unique_ptr<VecTask>> {
          SH_ASSIGN_OR_RETURN(std::unique_ptr<GraspTask> t, GraspTask::Create(envs));
          return std::unique_ptr<VecTask>(std::move(t));
        },
@@ -40,7 +41,7 @@ const std::vector<TaskDef>& Tasks() {
       {"grasp-residual",
        "the grasp task as a correction added to the scripted grasp's action (DASH's stage "
        "started from a training-free grasp)",
-       [](int envs, const std::string&) -> core::StatusOr<std::unique_ptr<VecTask>> {
+       [](int envs, const TaskOptions&) -> core::StatusOr<std::unique_ptr<VecTask>> {
          SH_ASSIGN_OR_RETURN(std::unique_ptr<GraspTask> t, GraspTask::Create(envs, true));
          return std::unique_ptr<VecTask>(std::move(t));
        },

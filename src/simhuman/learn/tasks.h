@@ -13,11 +13,19 @@
 
 namespace simhuman::learn {
 
+/// How a task's environments are built (from the training config).
+struct TaskOptions {
+  std::string solver = "newton";           ///< "newton" or "pgs"
+  std::vector<double> body_scales = {1.0};  ///< humans' length scales, spread over the envs
+};
+
 struct TaskDef {
   std::string name;
   std::string description;  ///< one line for --help and errors
-  /// Builds the task with `envs` environments and the physics solver ("newton" or "pgs").
-  std::function<core::StatusOr<std::unique_ptr<VecTask>>(int envs, const std::string& solver)> make;
+  /// Builds the task with `envs` environments and `options` (a task without a solver choice
+  /// or body scales ignores them; the config's checks refuse them first).
+  std::function<core::StatusOr<std::unique_ptr<VecTask>>(int envs, const TaskOptions& options)>
+      make;
   /// A task whose policy may initialise this one (`--init-from`): same actions, and this task's
   /// observation starts with that task's whole observation; the input layer is widened with
   /// zero weights for the new entries. Empty: only a policy of the same task.
@@ -36,6 +44,8 @@ core::StatusOr<const TaskDef*> FindTask(std::string_view name);
 
 /// The registry's task names, in its order.
 std::vector<std::string> TaskNames();
+/// Whether `name` accepts body scales other than 1 (the walk task).
+bool TaskHasBodyScales(std::string_view name);
 /// Whether `name` accepts the "pgs" solver (TaskDef::solver_choice).
 bool TaskHasSolverChoice(std::string_view name);
 

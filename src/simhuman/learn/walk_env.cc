@@ -20,25 +20,42 @@ constexpr int kFirstLegJoint = 14;
 
 }  // namespace
 
-core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs, WalkPhysicsSolver solver) {
+core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs, WalkPhysicsSolver solver,
+                                                           const std::vector<double>& body_scales) {
   if (num_envs <= 0) return absl::InvalidArgumentError("walk task: --envs must be positive");
+  if (body_scales.empty()) return absl::InvalidArgumentError("walk task: no body scales");
   std::unique_ptr<WalkTask> t(new WalkTask());
   world::ModelOptions opt;
   opt.timestep_s = control::kWalkPhysicsDt;
   opt.solver = solver == WalkPhysicsSolver::kPgs ? "pgs" : "newton";
-  SH_ASSIGN_OR_RETURN(t->world_,
-                      world::SimWorld::Create(core::SceneCatalog(), {world::AgentSpec()}, opt));
-  SH_ASSIGN_OR_RETURN(t->ix_, control::MakeWalkIndex(*t->world_, 0));
-  // one human on a floor: small arenas keep E copies of mjData cheap to allocate and reset
-  mjModel* m = t->world_->mutable_model();
-  m->nconmax = 64;
-  m->njmax = 400;
-  m->nstack = 150000;
-  t->foot_body_.assign(m->nbody, 0);
-  t->foot_body_[t->ix_.agent.left_foot_body] = 1;
-  t->foot_body_[t->ix_.agent.right_foot_body] = 1;
+  for (double scale : body_scales) {
+    if (!(scale >= 0.5 && scale <= 1.5)) {
+      return absl::InvalidArgumentError("walk task: body scale " + std::to_string(scale) +
+                                        " is outside [0.5, 1.5]");
+    }
+    world::AgentSpec spec;
+    spec.scale = scale;
+    SH_ASSIGN_OR_RETURN(auto w, world::SimWorld::Create(core::SceneCatalog(), {spec}, opt));
+    SH_ASSIGN_OR_RETURN(control::WalkIndex ix, control::MakeWalkIndex(*w, 0));
+    // one human on a floor: small arenas keep E copies of mjData cheap to allocate and reset
+    mjModel* m = w->mutable_model();
+    m->nconmax = 64;
+    m->njmax = 400;
+    m->nstack = 150000;
+    t->worlds_.push_back(std::move(w));
+    t->ixs_.push_back(ix);
+  }
+  // every scale has the same bodies (ids), so one table serves all
+  const mjModel* m0 = t->worlds_[0]->model();
+  t->foot_body_.assign(m0->nbody, 0);
+  t->foot_body_[t->ixs_[0].agent.left_foot_body] = 1;
+  t->foot_body_[t->ixs_[0].agent.right_foot_body] = 1;
   t->envs_.resize(num_envs);
-  for (Env& e : t->envs_) e.d = mj_makeData(m);
+  for (int i = 0; i < num_envs; ++i) {
+    Env& e = t->envs_[i];
+    e.w = i % static_cast<int>(t->worlds_.size());
+    e.d = mj_makeData(t->worlds_[e.w]->model());
+  }
   return t;
 }
 
@@ -49,15 +66,18 @@ WalkTask::~WalkTask() {
 }
 
 void WalkTask::DrawTarget(Env& e) {
+  const control::WalkIndex& ix = ixs_[e.w];
+  const double L = control::WalkScaleOf(ix).length;  // targets in the adult's metres, times s
   Eigen::Vector3d pos;
   double yaw;
-  control::PelvisPose(e.d, ix_, &pos, &yaw);
+  control::PelvisPose(e.d, ix, &pos, &yaw);
   double a = (45.0 + 135.0 * std::clamp(curriculum_, 0.0, 1.0)) * kDeg;
   if (e.rng.Uniform() < 0.2) {
     // a short step in any direction keeping the heading (steps back and sideways)
     double dist = e.rng.Uniform(0.3, std::max(0.5, params_.short_step_m));
     double bearing = yaw + e.rng.Uniform(-M_PI, M_PI);
-    e.s.target_xy = pos.head<2>() + dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+    e.s.target_xy =
+        pos.head<2>() + L * dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
     e.s.target_yaw_rad = core::WrapAngle(yaw + e.rng.Uniform(-0.3, 0.3));
     e.hold = 0;
     return;
@@ -65,7 +85,7 @@ void WalkTask::DrawTarget(Env& e) {
   double dist =
       e.rng.Uniform() < 0.1 ? e.rng.Uniform(0.0, 0.3) : 0.3 + 9.7 * std::pow(e.rng.Uniform(), 1.5);
   double bearing = yaw + e.rng.Uniform(-a, a);
-  e.s.target_xy = pos.head<2>() + dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+  e.s.target_xy = pos.head<2>() + L * dist * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
   e.s.target_yaw_rad = core::WrapAngle(bearing + e.rng.Uniform(-a, a));
   e.hold = 0;
 }
@@ -77,12 +97,13 @@ void WalkTask::SetTarget(int i, double x, double y, double yaw_rad) {
 }
 
 void WalkTask::Reset(int i, uint64_t seed, float* obs) {
-  const mjModel* m = world_->model();
   Env& e = envs_[i];
+  const mjModel* m = worlds_[e.w]->model();
+  const control::WalkIndex& ix = ixs_[e.w];
   e.rng = core::Rng(seed);
   mjData* d = e.d;
   mj_resetData(m, d);
-  const world::AgentIndex& a = ix_.agent;
+  const world::AgentIndex& a = ix.agent;
   double yaw = e.rng.Uniform(-M_PI, M_PI);
   d->qpos[a.root_qpos + 0] = 0;
   d->qpos[a.root_qpos + 1] = 0;
@@ -92,13 +113,13 @@ void WalkTask::Reset(int i, uint64_t seed, float* obs) {
   d->qpos[a.root_qpos + 6] = std::sin(yaw / 2);
   const auto& nominal = control::WalkNominalPose();
   for (int j = 0; j < kWalkActDim; ++j) {
-    double q = std::clamp(nominal[j] + e.rng.Normal(0.03), ix_.ctrl_lo[j], ix_.ctrl_hi[j]);
+    double q = std::clamp(nominal[j] + e.rng.Normal(0.03), ix.ctrl_lo[j], ix.ctrl_hi[j]);
     d->qpos[a.hinge_qpos[j]] = q;
     d->ctrl[a.actuator[j]] = q;
   }
   // put the lowest foot corner on the floor
   mj_forward(m, d);
-  const double lowest = LowestBoxCornerZ(m, d, {ix_.left_foot_geom, ix_.right_foot_geom});
+  const double lowest = LowestBoxCornerZ(m, d, {ix.left_foot_geom, ix.right_foot_geom});
   d->qpos[a.root_qpos + 2] -= lowest - 0.001;
   mj_forward(m, d);
   e.s = control::WalkState();
@@ -106,44 +127,52 @@ void WalkTask::Reset(int i, uint64_t seed, float* obs) {
   e.steps = 0;
   e.success = false;
   DrawTarget(e);
-  control::UpdateWalkCommand(params_, d, ix_, &e.s);
-  control::WalkObservation(params_, d, ix_, e.s, obs);
+  control::UpdateWalkCommand(params_, d, ix, &e.s);
+  control::WalkObservation(params_, d, ix, e.s, obs);
 }
 
 int WalkTask::amp_feature_dim() const { return kAmpFeatureDim; }
 
 void WalkTask::AmpFeatures(int i, float* out) {
-  const mjModel* m = world_->model();
+  const mjModel* m = worlds_[envs_[i].w]->model();
   mj_kinematics(m, envs_[i].d);
-  learn::AmpFeatures(m, envs_[i].d, ix_.agent, out);
+  learn::AmpFeatures(m, envs_[i].d, ixs_[envs_[i].w].agent, out);
 }
 
 core::StatusOr<std::vector<float>> WalkTask::AmpClipFeatures(const MotionClip& clip) const {
   SH_ASSIGN_OR_RETURN(MotionClip at_rate, ResampleClip(clip, 1.0 / control::kWalkPolicyDt));
-  return ClipAmpFeatures(world_->model(), ix_.agent, at_rate);
+  return ClipAmpFeatures(worlds_[0]->model(), ixs_[0].agent, at_rate);
 }
 
 bool WalkTask::Fallen(int i) const {
-  const mjModel* m = world_->model();
+  const mjModel* m = worlds_[envs_[i].w]->model();
   const mjData* d = envs_[i].d;
-  const world::AgentIndex& a = ix_.agent;
-  if (d->xpos[3 * a.pelvis_body + 2] < 0.55 || d->xpos[3 * a.head_body + 2] < 0.8) return true;
+  const control::WalkIndex& ix = ixs_[envs_[i].w];
+  const world::AgentIndex& a = ix.agent;
+  const double L = control::WalkScaleOf(ix).length;
+  if (d->xpos[3 * a.pelvis_body + 2] < 0.55 * L || d->xpos[3 * a.head_body + 2] < 0.8 * L) {
+    return true;
+  }
   if (d->xmat[9 * a.torso_body + 8] < std::cos(70 * kDeg)) return true;
   for (int c = 0; c < d->ncon; ++c) {
     int g1 = d->contact[c].geom1, g2 = d->contact[c].geom2;
-    int other = g1 == ix_.floor_geom ? g2 : (g2 == ix_.floor_geom ? g1 : -1);
+    int other = g1 == ix.floor_geom ? g2 : (g2 == ix.floor_geom ? g1 : -1);
     if (other >= 0 && !foot_body_[m->geom_bodyid[other]]) return true;
   }
   return false;
 }
 
 void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
-  const mjModel* m = world_->model();
   Env& e = envs_[i];
+  const mjModel* m = worlds_[e.w]->model();
+  const control::WalkIndex& ix = ixs_[e.w];
+  // velocities and heights in the adult's units (control::WalkScale)
+  const control::WalkScale fr = control::WalkScaleOf(ix);
+  const double speed_unit = fr.length / fr.time;
   mjData* d = e.d;
-  const world::AgentIndex& a = ix_.agent;
+  const world::AgentIndex& a = ix.agent;
   double ctrl[kWalkActDim];
-  control::WalkTargets(params_, ix_, e.s, action, ctrl);
+  control::WalkTargets(params_, ix, e.s, action, ctrl);
   double power = 0;
   for (int k = 0; k < control::kWalkSubsteps; ++k) {
     for (int j = 0; j < kWalkActDim; ++j) d->ctrl[a.actuator[j]] = ctrl[j];
@@ -165,12 +194,12 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   WalkRewardTerms& t = e.terms;
   Eigen::Vector3d pos;
   double yaw;
-  control::PelvisPose(d, ix_, &pos, &yaw);
+  control::PelvisPose(d, ix, &pos, &yaw);
   const mjtNum* v = d->qvel + a.root_qvel;
   double c = std::cos(yaw), s = std::sin(yaw);
-  double vx = c * v[0] + s * v[1], vy = -s * v[0] + c * v[1];
+  double vx = (c * v[0] + s * v[1]) / speed_unit, vy = (-s * v[0] + c * v[1]) / speed_unit;
   const mjtNum* R = d->xmat + 9 * a.pelvis_body;
-  double wz = R[6] * v[3] + R[7] * v[4] + R[8] * v[5];
+  double wz = (R[6] * v[3] + R[7] * v[4] + R[8] * v[5]) * fr.time;
   t.velocity = std::exp(
       -((vx - e.s.cmd.vx) * (vx - e.s.cmd.vx) + (vy - e.s.cmd.vy) * (vy - e.s.cmd.vy)) / 0.25);
   t.yaw_rate = std::exp(-(wz - e.s.cmd.yaw_rate) * (wz - e.s.cmd.yaw_rate) / 0.5);
@@ -190,14 +219,14 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   t.gait_legs = std::exp(-err_legs / 0.5);
   t.gait_upper = std::exp(-err_upper / 1.0);
   bool lc, rc;
-  control::FootContacts(d, ix_, &lc, &rc);
+  control::FootContacts(d, ix, &lc, &rc);
   // feet sliding while on the ground
   t.foot_slip = 0;
   for (int side = 0; side < 2; ++side) {
     if (!(side == 0 ? lc : rc)) continue;
     mjtNum vel[6];
     mj_objectVelocity(m, d, mjOBJ_BODY, side == 0 ? a.left_foot_body : a.right_foot_body, vel, 0);
-    t.foot_slip += vel[3] * vel[3] + vel[4] * vel[4];
+    t.foot_slip += (vel[3] * vel[3] + vel[4] * vel[4]) / (speed_unit * speed_unit);
   }
   int el, er;
   control::WalkExpectedContacts(params_, e.s.phase, e.s.amplitude, &el, &er);
@@ -210,7 +239,7 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   // hunched 30-40 degree posture up; a 10 degree kernel gave no gradient there)
   t.posture = std::exp(-(1.0 - d->xmat[9 * a.head_body + 8]) / 0.0603) *
               std::exp(-(1.0 - d->xmat[9 * a.torso_body + 8]) / 0.0603);
-  double dh = (pos.z() - 0.93) / 0.07;
+  double dh = (pos.z() / fr.length - 0.93) / 0.07;
   t.height = std::exp(-dh * dh);
   double dist = (e.s.target_xy - pos.head<2>()).norm();
   double yaw_err = core::WrapAngle(e.s.target_yaw_rad - yaw);
@@ -249,8 +278,8 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   if (e.hold >= kNextTargetHold) DrawTarget(e);
 
   bool fell = Fallen(i);
-  control::UpdateWalkCommand(params_, d, ix_, &e.s);
-  control::WalkObservation(params_, d, ix_, e.s, obs);
+  control::UpdateWalkCommand(params_, d, ix, &e.s);
+  control::WalkObservation(params_, d, ix, e.s, obs);
   info->reward = static_cast<float>(t.total);
   info->terminated = fell;
   info->truncated = e.steps >= kMaxSteps;

@@ -4,6 +4,9 @@
 /// target heading. Observations, commands and PD targets come from control/policy/walk_task.h,
 /// so the trained policy runs unchanged in the PolicyController.
 ///
+/// Bodies of several sizes (`body_scales`) train one policy: the task works in the adult's
+/// units (control::WalkScale), and the thresholds below are the adult's, times the scale.
+///
 /// Episodes: 20 s; a fall (pelvis < 0.55 m, head < 0.8 m, torso tilted > 70 deg, or any body
 /// part other than the feet touching the floor) terminates. After holding the target for 1.5 s
 /// a new target is drawn from the current pose. Targets: 0.3-10 m away (skewed short), at a
@@ -44,9 +47,11 @@ enum class WalkPhysicsSolver { kNewton, kPgs };
 
 class WalkTask : public VecTask {
  public:
-  /// Builds the shared model and `num_envs` mjData. Errors from model building.
+  /// Builds one model per body scale and `num_envs` mjData, env i holding a human of
+  /// `body_scales[i % size]`. Errors from model building and scales outside [0.5, 1.5].
   static core::StatusOr<std::unique_ptr<WalkTask>> Create(
-      int num_envs, WalkPhysicsSolver solver = WalkPhysicsSolver::kNewton);
+      int num_envs, WalkPhysicsSolver solver = WalkPhysicsSolver::kNewton,
+      const std::vector<double>& body_scales = {1.0});
   ~WalkTask() override;
 
   std::string name() const override { return "walk"; }
@@ -66,7 +71,10 @@ class WalkTask : public VecTask {
   void AmpFeatures(int i, float* out) override;
   core::StatusOr<std::vector<float>> AmpClipFeatures(const MotionClip& clip) const override;
 
-  const mjModel* model() const { return world_->model(); }
+  /// The model of env 0 (every env's, with one body scale).
+  const mjModel* model() const { return worlds_[0]->model(); }
+  /// Env i's human's length scale.
+  double body_scale(int i) const { return worlds_[envs_[i].w]->agent(0).scale; }
   const mjData* data(int i) const { return envs_[i].d; }
   const control::WalkState& state(int i) const { return envs_[i].s; }
   const WalkRewardTerms& last_terms(int i) const { return envs_[i].terms; }
@@ -80,6 +88,7 @@ class WalkTask : public VecTask {
  private:
   struct Env {
     mjData* d = nullptr;
+    int w = 0;  // which world (body scale)
     control::WalkState s;
     core::Rng rng{0};
     int steps = 0, hold = 0;
@@ -88,8 +97,8 @@ class WalkTask : public VecTask {
   };
   WalkTask() = default;
   void DrawTarget(Env& e);
-  std::unique_ptr<world::SimWorld> world_;
-  control::WalkIndex ix_;
+  std::vector<std::unique_ptr<world::SimWorld>> worlds_;  // one per body scale
+  std::vector<control::WalkIndex> ixs_;                  // per world
   control::WalkParams params_;
   WalkRewardWeights w_;
   std::vector<Env> envs_;

@@ -151,10 +151,12 @@ void WalkErrors(const mjData* d, const WalkIndex& ix, const WalkState& s, double
 }
 
 void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix, WalkState* s) {
+  // lengths, speeds and times in the adult's units (Froude scaling, WalkScale)
+  const WalkScale fr = WalkScaleOf(ix);
   Eigen::Vector3d pos;
   double yaw;
   PelvisPose(d, ix, &pos, &yaw);
-  Eigen::Vector2d delta = s->target_xy - pos.head<2>();
+  Eigen::Vector2d delta = (s->target_xy - pos.head<2>()) / fr.length;
   double dist = delta.norm();
   double yaw_err = core::WrapAngle(s->target_yaw_rad - yaw);
   if (!s->stepping && (dist > p.start_radius_m || std::abs(yaw_err) > p.start_yaw_rad)) {
@@ -189,9 +191,10 @@ void UpdateWalkCommand(const WalkParams& p, const mjData* d, const WalkIndex& ix
     c.vx = std::max(c.vx, -0.4);
   }
   s->cmd = c;
+  const double dt = kWalkPolicyDt / fr.time;  // the adult's time
   double target_amp = s->stepping ? 1.0 : 0.0;
-  s->amplitude += (target_amp - s->amplitude) * std::min(1.0, kWalkPolicyDt / 0.25);
-  s->phase = std::fmod(s->phase + kWalkPolicyDt / p.gait_period_s, 1.0);
+  s->amplitude += (target_amp - s->amplitude) * std::min(1.0, dt / 0.25);
+  s->phase = std::fmod(s->phase + dt / p.gait_period_s, 1.0);
 }
 
 void FootContacts(const mjData* d, const WalkIndex& ix, bool* left, bool* right) {
@@ -206,6 +209,9 @@ void FootContacts(const mjData* d, const WalkIndex& ix, bool* left, bool* right)
 void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, const WalkState& s,
                      float* obs) {
   (void)p;
+  // in the adult's units: lengths / s, speeds / sqrt(s), rates x sqrt(s) (WalkScale)
+  const WalkScale fr = WalkScaleOf(ix);
+  const double speed = fr.length / fr.time, rate = 1.0 / fr.time;
   Eigen::Vector3d pos;
   double yaw;
   PelvisPose(d, ix, &pos, &yaw);
@@ -222,20 +228,20 @@ void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, 
   auto put3 = [&](const Eigen::Vector3d& v) {
     for (int i = 0; i < 3; ++i) obs[k++] = static_cast<float>(v[i]);
   };
-  obs[k++] = static_cast<float>(pos.z());
+  obs[k++] = static_cast<float>(pos.z() / fr.length);
   put3(ToHeading(z_axis, yaw));
   put3(ToHeading(x_axis, yaw));
-  put3(ToHeading(lin, yaw));
-  put3(ToHeading(w_world, yaw));
+  put3(ToHeading(lin / speed, yaw));
+  put3(ToHeading(w_world / rate, yaw));
   const auto& n = WalkNominalPose();
   for (int j = 0; j < kWalkActDim; ++j) {
     obs[k++] = static_cast<float>(d->qpos[ix.agent.hinge_qpos[j]] - n[j]);
   }
   for (int j = 0; j < kWalkActDim; ++j) {
-    obs[k++] = static_cast<float>(0.1 * d->qvel[ix.agent.hinge_qvel[j]]);
+    obs[k++] = static_cast<float>(0.1 * d->qvel[ix.agent.hinge_qvel[j]] / rate);
   }
   for (int j = 0; j < kWalkActDim; ++j) obs[k++] = s.prev_action[j];
-  Eigen::Vector2d delta = s.target_xy - pos.head<2>();
+  Eigen::Vector2d delta = (s.target_xy - pos.head<2>()) / fr.length;
   double dist = delta.norm();
   Eigen::Vector3d local = ToHeading(Eigen::Vector3d(delta.x(), delta.y(), 0), yaw);
   double clip = dist > 3.0 ? 3.0 / dist : 1.0;
@@ -256,8 +262,17 @@ void WalkObservation(const WalkParams& p, const mjData* d, const WalkIndex& ix, 
   obs[k++] = lc ? 1.f : 0.f;
   obs[k++] = rc ? 1.f : 0.f;
   for (int foot : {ix.agent.left_foot_body, ix.agent.right_foot_body}) {
-    put3(ToHeading(Vec(d->xpos + 3 * foot) - pos, yaw));
+    put3(ToHeading((Vec(d->xpos + 3 * foot) - pos) / fr.length, yaw));
   }
+}
+
+WalkScale WalkScaleOf(const WalkIndex& ix) {
+  WalkScale f;
+  if (ix.agent.scale > 0 && ix.agent.scale != 1.0) {
+    f.length = ix.agent.scale;
+    f.time = std::sqrt(ix.agent.scale);
+  }
+  return f;
 }
 
 bool WalkActionUsed(int j) { return j >= 0 && j < kWalkActDim && (j < kRShX || j > kLElbow); }

@@ -51,7 +51,8 @@ struct WalkParams {
   double short_step_m = 1.5;
 };
 
-/// The command derived from the target each policy step (heading frame).
+/// The command derived from the target each policy step (heading frame, the adult's units:
+/// physical speeds are these times sqrt(s), WalkScale).
 struct WalkCommand {
   double vx = 0, vy = 0;  ///< m/s
   double yaw_rate = 0;    ///< rad/s
@@ -77,6 +78,18 @@ struct WalkIndex {
   int left_foot_geom = -1, right_foot_geom = -1;
   std::array<double, kWalkActDim> ctrl_lo{}, ctrl_hi{};
 };
+
+/// Froude scaling of a body of length scale s (world::AgentIndex::scale): a child of scale 0.6
+/// walks like the adult with every length times s and every time times sqrt(s) (the servo gains
+/// scale with s^4 and the masses with s^3, world/humanoid.h). The task works in the adult's
+/// units: WalkState's command and clock, WalkParams and the observation are all in them, so one
+/// policy serves every size and an adult (s = 1) sees exactly what it always saw.
+struct WalkScale {
+  double length = 1.0;  ///< s
+  double time = 1.0;    ///< sqrt(s)
+};
+/// The agent's scale factors.
+WalkScale WalkScaleOf(const WalkIndex& ix);
 
 /// Resolves indices for agent `a` of `world`. Errors name a missing geom.
 core::StatusOr<WalkIndex> MakeWalkIndex(const world::SimWorld& world, int a);
