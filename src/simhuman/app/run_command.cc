@@ -9,6 +9,7 @@
 #include "simhuman/app/common.h"
 #include "simhuman/app/plan_command.h"
 #include "simhuman/eval/episode.h"
+#include "simhuman/eval/motion_metrics.h"
 #include "simhuman/eval/reachability.h"
 #include "simhuman/eval/replay.h"
 #include "simhuman/eval/tabletop_eval.h"
@@ -203,6 +204,13 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   j["walk_policy"] = walk_policy;
   j["carry_policy"] = carry_policy;
   if (!grasp_policy.empty()) j["grasp_policy"] = grasp_policy;
+  // human-norm motion metrics per human, from the recorded frames (eval/motion_metrics.h)
+  nlohmann::ordered_json motion = nlohmann::ordered_json::array();
+  for (int a = 0; a < (*sim)->num_agents(); ++a) {
+    motion.push_back(eval::MotionMetricsJson(
+        eval::TrajectoryMotionMetrics(**sim, a, trajectory.time_s, trajectory.qpos)));
+  }
+  j["motion"] = motion;
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) j[key] = value;
   absl::Status st = eval::WriteJsonFile(Join(out_dir, "scene.json"), world::SceneToJson(*scene));
