@@ -87,6 +87,10 @@ void PrintSummary(std::ostream& out, const eval::Summary& s) {
              s.success_steps, s.steps_total, 100 * s.fall_rate, 100 * s.extra_pass_rate,
              s.wall_per_sim)
       << std::endl;
+  if (s.motion) {
+    out << "human-norm motion metrics (docs/EVAL_PROTOCOLS.md):\n"
+        << eval::MotionNormsReport(*s.motion) << std::flush;
+  }
 }
 
 // the language suite: the command corpus through a planner

@@ -60,6 +60,11 @@ Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& reco
   s.steps_total = steps_total / n;
   if (n_error > 0) s.contact_error_m = error_sum / n_error;
   if (n_error_jc > 0) s.contact_error_joint_centre_m = error_jc_sum / n_error_jc;
+  std::vector<MotionMetrics> motion;
+  for (const EpisodeRecord& r : records) {
+    if (r.motion) motion.push_back(*r.motion);
+  }
+  if (!motion.empty()) s.motion = MeanMotionMetrics(motion);
   s.wall_per_sim = s.sim_time_s > 0 ? s.wall_time_s / s.sim_time_s : 0.0;
   return s;
 }
@@ -83,6 +88,7 @@ nlohmann::ordered_json EpisodeRecordJson(const EpisodeRecord& r) {
   }
   if (!r.sheet_path.empty()) j["contact_sheet"] = r.sheet_path;
   if (!r.render_error.empty()) j["render_error"] = r.render_error;
+  if (r.motion) j["motion"] = MotionMetricsJson(*r.motion);
   j["scene"] = r.scene;
   j["plan"] = r.plan;
   return j;
@@ -117,6 +123,11 @@ core::StatusOr<EpisodeRecord> EpisodeRecordFromJson(const nlohmann::json& j) {
     }
     r.sheet_path = j.value("contact_sheet", std::string());
     r.render_error = j.value("render_error", std::string());
+    if (j.contains("motion")) {
+      core::StatusOr<MotionMetrics> m = MotionMetricsFromJson(j.at("motion"));
+      if (!m.ok()) return m.status();
+      r.motion = *m;
+    }
   } catch (const nlohmann::json::exception& e) {
     return absl::InvalidArgumentError(std::string("not an episode record: ") + e.what());
   }
@@ -145,6 +156,7 @@ nlohmann::ordered_json SummaryJson(const Summary& s, const EvalOptions& options)
   j["preset"] = options.config.preset;
   j["walk_policy"] = options.walk_policy;
   j["config"] = options.config.ToJson();
+  if (s.motion) j["motion"] = MotionMetricsJson(*s.motion);
   const nlohmann::ordered_json provenance = ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) j[key] = value;
   return j;
@@ -174,7 +186,7 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
 
   const bool render = options.video_every > 0 && index % options.video_every == 0;
   control::RunOptions run;
-  run.record = render;
+  run.record = true;  // the motion metrics read the frames (30 per second)
   // after the plan completes the episode goes on for kEvalSettleS: the final pose must hold
   run.settle_s = kEvalSettleS;
   run.fall_head_height_m = options.config.fall_head_height_m;
@@ -184,7 +196,7 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   rec.seed = seed;
   rec.variant = spec->variant;
   core::StatusOr<control::EpisodeResult> result = RunWithWalkPolicy(
-      **sim, *chain, *controllers, options.walk_policy, run, render ? &trajectory : nullptr);
+      **sim, *chain, *controllers, options.walk_policy, run, &trajectory);
   if (!result.ok()) return result.status();
   rec.result = *result;
   rec.extra =
@@ -195,6 +207,7 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   plan::StepEval last = plan::EvaluateStep(chain->steps.back(), now,
                                            control::AllBodyPoints(**sim, (*sim)->data()), run.pair);
   JudgeEpisode(last.complete, &rec);
+  rec.motion = TrajectoryMotionMetrics(**sim, spec->agent, trajectory.time_s, trajectory.qpos);
   rec.scene = world::SceneToJson(spec->scene);
   rec.plan = spec->plan;
   if (render) {

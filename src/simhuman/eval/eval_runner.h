@@ -13,6 +13,7 @@
 #include "simhuman/control/mpc/mpc_config.h"
 #include "simhuman/control/runner.h"
 #include "simhuman/core/status.h"
+#include "simhuman/eval/motion_metrics.h"
 #include "simhuman/eval/suites.h"
 
 namespace simhuman::eval {
@@ -35,6 +36,9 @@ struct EpisodeRecord {
   std::string render_error;  ///< why the contact sheet could not be written, if it failed
   nlohmann::json scene;      ///< world::SceneToJson of the episode's scene
   nlohmann::json plan;       ///< the episode's plan
+  /// The acting human's human-norm motion metrics (eval/motion_metrics.h); absent (nullopt)
+  /// in journals written before session 19.
+  std::optional<MotionMetrics> motion;
 };
 
 /// The final success rule of every plan suite, on a record whose `result` and `extra` are set:
@@ -59,6 +63,8 @@ struct Summary {
   double wall_per_sim = 0;     ///< total wall time / total simulated time
   double sim_time_s = 0;       ///< total
   double wall_time_s = 0;      ///< total
+  /// The episodes' motion metrics (MeanMotionMetrics); nullopt when no record has them.
+  std::optional<MotionMetrics> motion;
 };
 
 /// Aggregates `records` (finished episodes) of `suite`.

@@ -105,6 +105,50 @@ void AddSwings(const std::vector<MotionSample>& f, const std::vector<char>& stea
   }
 }
 
+// sit-to-stand rises: duration, foot strikes during them, sinking back
+void AddRises(const std::vector<MotionSample>& f, const std::vector<char> contact[2],
+              double scale, MotionMetrics* m) {
+  const int n = static_cast<int>(f.size());
+  std::vector<double> durations, steps;
+  int i = 0;
+  while (i < n) {
+    // a seated stretch, then the first frame standing after it
+    while (i < n && f[i].pelvis.z() >= kSeatedPelvis * scale) ++i;
+    while (i < n && f[i].pelvis.z() < kStandingPelvis * scale) ++i;
+    if (i >= n) break;
+    const int up = i;
+    // seat-off: the trough before the rise (back from the last seated frame while the pelvis
+    // keeps descending, 5 mm of noise allowed), then the last frame within 2 cm of it
+    int trough = up;
+    while (trough > 0 && f[trough].pelvis.z() >= kSeatedPelvis * scale) --trough;
+    while (trough > 0 && f[trough - 1].pelvis.z() <= f[trough].pelvis.z() + 0.005 * scale) {
+      --trough;
+    }
+    const double zmin = f[trough].pelvis.z();
+    int start = trough;
+    for (int k = trough; k <= up && f[k].pelvis.z() < kSeatedPelvis * scale; ++k) {
+      if (f[k].pelvis.z() <= zmin + 0.02 * scale) start = k;
+    }
+    int strikes = 0;
+    double peak = f[start].pelvis.z();
+    bool sank = false;
+    for (int k = start + 1; k <= up; ++k) {
+      for (int s = 0; s < 2; ++s) strikes += contact[s][k] && !contact[s][k - 1];
+      peak = std::max(peak, f[k].pelvis.z());
+      sank = sank || f[k].pelvis.z() < peak - 0.05 * scale;
+    }
+    durations.push_back(f[up].time_s - f[start].time_s);
+    steps.push_back(strikes);
+    ++m->rises;
+    m->rises_staggered += sank;
+    m->rises_clean += !sank && strikes == 0;
+    // the next rise needs a new seated stretch
+    while (i < n && f[i].pelvis.z() >= kSeatedPelvis * scale) ++i;
+  }
+  m->rise_s = Mean(durations);
+  m->rise_extra_steps = Mean(steps);
+}
+
 }  // namespace
 
 MotionMetrics ComputeMotionMetrics(const std::vector<MotionSample>& f, double scale) {
@@ -140,6 +184,7 @@ MotionMetrics ComputeMotionMetrics(const std::vector<MotionSample>& f, double sc
     }
   }
   m.foot_skate_mps = Mean(skate);
+  AddRises(f, contact, scale, &m);
 
   const std::vector<char> steady = SteadyFrames(f, dt, scale);
   double dist = 0;
@@ -227,31 +272,58 @@ const std::vector<MotionNorm>& MotionNorms() {
        "a planted foot does not slide; issue 21: <= 0.05"},
       {"swing_clearance_min_m", "mid-swing minimum foot clearance (m)", 0.008, 0.03,
        "Winter 1992 (minimum toe clearance 1.29 +- 0.45 cm)"},
+      {"rise_s", "sit-to-stand time, seat-off to standing (s)", 1.0, 3.0,
+       "Bohannon 2006 (five stand-ups, sitting down between them, in about 11-15 s at 60-89 y); "
+       "issue 21: 1.5-3"},
+      {"rise_extra_steps", "steps taken while standing up", 0, 0,
+       "a person rises with the feet set (issue 21: no stagger or extra step)"},
   };
   return norms;
 }
 
+namespace {
+
+// every double field with its JSON key (the order of MotionMetricsJson)
+struct DoubleField {
+  const char* key;
+  double MotionMetrics::*member;
+};
+constexpr DoubleField kDoubles[] = {
+    {"duration_s", &MotionMetrics::duration_s},
+    {"walking_s", &MotionMetrics::walking_s},
+    {"speed_mps", &MotionMetrics::speed_mps},
+    {"cadence_spm", &MotionMetrics::cadence_spm},
+    {"step_length_m", &MotionMetrics::step_length_m},
+    {"stance_knee_deg", &MotionMetrics::stance_knee_deg},
+    {"swing_knee_peak_deg", &MotionMetrics::swing_knee_peak_deg},
+    {"trunk_pitch_deg", &MotionMetrics::trunk_pitch_deg},
+    {"head_pitch_deg", &MotionMetrics::head_pitch_deg},
+    {"arm_swing_deg", &MotionMetrics::arm_swing_deg},
+    {"arm_swing_m", &MotionMetrics::arm_swing_m},
+    {"arm_leg_phase_corr", &MotionMetrics::arm_leg_phase_corr},
+    {"double_support", &MotionMetrics::double_support},
+    {"foot_skate_mps", &MotionMetrics::foot_skate_mps},
+    {"swing_clearance_min_m", &MotionMetrics::swing_clearance_min_m},
+    {"swing_clearance_peak_m", &MotionMetrics::swing_clearance_peak_m},
+    {"pelvis_jerk_rms", &MotionMetrics::pelvis_jerk_rms},
+    {"rise_s", &MotionMetrics::rise_s},
+    {"rise_extra_steps", &MotionMetrics::rise_extra_steps},
+};
+struct IntField {
+  const char* key;
+  int MotionMetrics::*member;
+};
+constexpr IntField kInts[] = {
+    {"foot_strikes", &MotionMetrics::foot_strikes}, {"swings", &MotionMetrics::swings},
+    {"rises", &MotionMetrics::rises},               {"rises_staggered", &MotionMetrics::rises_staggered},
+    {"rises_clean", &MotionMetrics::rises_clean},
+};
+
+}  // namespace
+
 double MetricValue(const MotionMetrics& m, const std::string& key) {
-  const std::pair<const char*, double> fields[] = {
-      {"walking_s", m.walking_s},
-      {"speed_mps", m.speed_mps},
-      {"cadence_spm", m.cadence_spm},
-      {"step_length_m", m.step_length_m},
-      {"stance_knee_deg", m.stance_knee_deg},
-      {"swing_knee_peak_deg", m.swing_knee_peak_deg},
-      {"trunk_pitch_deg", m.trunk_pitch_deg},
-      {"head_pitch_deg", m.head_pitch_deg},
-      {"arm_swing_deg", m.arm_swing_deg},
-      {"arm_swing_m", m.arm_swing_m},
-      {"arm_leg_phase_corr", m.arm_leg_phase_corr},
-      {"double_support", m.double_support},
-      {"foot_skate_mps", m.foot_skate_mps},
-      {"swing_clearance_min_m", m.swing_clearance_min_m},
-      {"swing_clearance_peak_m", m.swing_clearance_peak_m},
-      {"pelvis_jerk_rms", m.pelvis_jerk_rms},
-  };
-  for (const auto& [k, v] : fields) {
-    if (key == k) return v;
+  for (const DoubleField& f : kDoubles) {
+    if (key == f.key) return m.*f.member;
   }
   return NAN;
 }
@@ -264,6 +336,7 @@ double AdultEquivalent(const MotionMetrics& m, const std::string& key) {
   const double v = MetricValue(m, key), s = m.scale > 0 ? m.scale : 1.0;
   if (key == "speed_mps" || key == "foot_skate_mps") return v / std::sqrt(s);
   if (key == "cadence_spm") return v * std::sqrt(s);
+  if (key == "rise_s") return v / std::sqrt(s);
   if (key == "step_length_m" || key == "swing_clearance_min_m") return v / s;
   return v;
 }
@@ -279,24 +352,16 @@ double NormGap(const MotionNorm& n, double value) {
 
 nlohmann::ordered_json MotionMetricsJson(const MotionMetrics& m) {
   nlohmann::ordered_json j;
-  auto put = [&](const char* key, double v) {
-    if (std::isfinite(v)) {
-      j[key] = v;
-    } else {
-      j[key] = nullptr;
-    }
-  };
   j["scale"] = m.scale;
-  put("duration_s", m.duration_s);
-  for (const char* k :
-       {"walking_s", "speed_mps", "cadence_spm", "step_length_m", "stance_knee_deg",
-        "swing_knee_peak_deg", "trunk_pitch_deg", "head_pitch_deg", "arm_swing_deg", "arm_swing_m",
-        "arm_leg_phase_corr", "double_support", "foot_skate_mps", "swing_clearance_min_m",
-        "swing_clearance_peak_m", "pelvis_jerk_rms"}) {
-    put(k, MetricValue(m, k));
+  for (const DoubleField& f : kDoubles) {
+    const double v = m.*f.member;
+    if (std::isfinite(v)) {
+      j[f.key] = v;
+    } else {
+      j[f.key] = nullptr;
+    }
   }
-  j["foot_strikes"] = m.foot_strikes;
-  j["swings"] = m.swings;
+  for (const IntField& f : kInts) j[f.key] = m.*f.member;
   nlohmann::ordered_json norms = nlohmann::ordered_json::object();
   for (const MotionNorm& n : MotionNorms()) {
     const double v = AdultEquivalent(m, n.key);
@@ -317,6 +382,21 @@ nlohmann::ordered_json MotionMetricsJson(const MotionMetrics& m) {
   j["norms"] = norms;
   j["norms_froude_scaled"] = m.scale != 1.0;
   return j;
+}
+
+core::StatusOr<MotionMetrics> MotionMetricsFromJson(const nlohmann::json& j) {
+  MotionMetrics m;
+  try {
+    m.scale = j.at("scale").get<double>();
+    for (const DoubleField& f : kDoubles) {
+      const nlohmann::json& v = j.at(f.key);
+      m.*f.member = v.is_null() ? NAN : v.get<double>();
+    }
+    for (const IntField& f : kInts) m.*f.member = j.at(f.key).get<int>();
+  } catch (const nlohmann::json::exception& e) {
+    return absl::InvalidArgumentError(std::string("not a motion metrics record: ") + e.what());
+  }
+  return m;
 }
 
 MotionMetrics MeanMotionMetrics(const std::vector<MotionMetrics>& all) {
@@ -355,6 +435,19 @@ MotionMetrics MeanMotionMetrics(const std::vector<MotionMetrics>& all) {
                        &out.arm_swing_deg,   &out.arm_swing_m,     &out.arm_leg_phase_corr,
                        &out.double_support,  &out.pelvis_jerk_rms};
     for (int k = 0; k < 11; ++k) *dst[k] = sums[k] / w;
+  }
+  double rise_s = 0, rise_steps = 0;
+  for (const MotionMetrics& m : all) {
+    if (m.rises <= 0) continue;
+    rise_s += m.rise_s * m.rises;
+    rise_steps += m.rise_extra_steps * m.rises;
+    out.rises += m.rises;
+    out.rises_staggered += m.rises_staggered;
+    out.rises_clean += m.rises_clean;
+  }
+  if (out.rises > 0) {
+    out.rise_s = rise_s / out.rises;
+    out.rise_extra_steps = rise_steps / out.rises;
   }
   if (swing_w > 0) {
     out.swing_knee_peak_deg = swing_sums[0] / swing_w;

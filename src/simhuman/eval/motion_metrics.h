@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "simhuman/core/status.h"
 #include "simhuman/world/sim_world.h"
 
 namespace simhuman::eval {
@@ -32,6 +33,8 @@ inline constexpr double kWalkingSpeed = 0.3;     ///< m/s at scale 1 (times sqrt
 inline constexpr double kMinStretchS = 2.0;      ///< s
 inline constexpr double kContactHeight = 0.015;  ///< m at scale 1 (times scale)
 inline constexpr double kLiftHeight = 0.03;      ///< m at scale 1: a stance phase ends above this
+inline constexpr double kSeatedPelvis = 0.70;    ///< m at scale 1: pelvis below this is seated
+inline constexpr double kStandingPelvis = 0.88;  ///< m at scale 1: above this is standing
 
 /// One frame of one human (world frame, metres, radians).
 struct MotionSample {
@@ -40,9 +43,9 @@ struct MotionSample {
   double yaw_rad = 0;                 ///< pelvis heading
   double trunk_pitch_rad = 0;         ///< torso forward lean from vertical (+ forward)
   double head_pitch_rad = 0;          ///< head forward tilt from vertical (+ down)
-  Eigen::Vector3d foot[2];            ///< left, right foot points
+  Eigen::Vector3d foot[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};  ///< left, right
   double foot_low_z[2] = {0, 0};      ///< lowest corner of each foot box
-  Eigen::Vector3d hand[2];            ///< left, right hand points
+  Eigen::Vector3d hand[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};  ///< left, right
   double knee_rad[2] = {0, 0};        ///< flexion, left, right
   double shoulder_flex_rad[2] = {0, 0};  ///< sagittal flexion (+ forward), left, right
 };
@@ -71,6 +74,15 @@ struct MotionMetrics {
   double pelvis_jerk_rms = NAN;  ///< RMS of the pelvis's third derivative while walking, m/s^3
   int foot_strikes = 0;
   int swings = 0;
+  // getting up (sit-to-stand): a rise is the pelvis going from seated height (below
+  // kSeatedPelvis x scale) to standing height (above kStandingPelvis x scale); it starts at
+  // seat-off, the last frame before that within 2 cm x scale of the seated minimum (an attempt
+  // that sinks back to seated height is sitting again: only the rise after it counts)
+  int rises = 0;
+  double rise_s = NAN;            ///< mean seat-off to standing time
+  double rise_extra_steps = NAN;  ///< mean foot strikes during a rise
+  int rises_staggered = 0;        ///< rises where the pelvis sank back 5 cm x scale on the way
+  int rises_clean = 0;            ///< rises with no step and no sinking back
 };
 
 /// Computes the metrics of `frames` (time-ordered, at a fixed rate of at least 20 Hz) of a
@@ -96,6 +108,8 @@ double MetricValue(const MotionMetrics& m, const std::string& key);
 /// {"walking_s": ..., "speed_mps": ..., ...}: every field (null for NaN), then "norms": per
 /// norm {value, lo, hi, gap, ok}.
 nlohmann::ordered_json MotionMetricsJson(const MotionMetrics& m);
+/// The inverse of MotionMetricsJson (the "norms" part is ignored). Errors name the key.
+core::StatusOr<MotionMetrics> MotionMetricsFromJson(const nlohmann::json& j);
 
 /// Mean of several episodes' metrics, each weighted by its walking time (the frame-count
 /// metrics by their counts); episodes without walking count only for foot skating.

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace simhuman::eval {
@@ -93,6 +94,39 @@ TEST(MotionMetricsTest, NormsJudgeAChildAfterFroudeScaling) {
   // a slow walk is below the speed norm by the difference
   const MotionMetrics slow = ComputeMotionMetrics(SyntheticWalk(0.7, 1.0, 8.0, 0.0), 1.0);
   EXPECT_NEAR(MotionMetricsJson(slow)["norms"]["speed_mps"]["gap"].get<double>(), 0.3, 0.03);
+}
+
+// seated (pelvis 0.55 m) for 1 s, then up to 0.93 m in `rise` s (sinking back about 10 cm near
+// the top when `sink`, not down to seated height), then standing; feet planted
+std::vector<MotionSample> SitToStand(double rise, bool sink) {
+  std::vector<MotionSample> frames;
+  for (int i = 0; i < 150; ++i) {
+    MotionSample s;
+    s.time_s = (i + 0.5) / 30;
+    const double u = std::clamp((s.time_s - 1.0) / rise, 0.0, 1.0);
+    double z = 0.55 + 0.38 * u;
+    if (sink && u > 0.75 && u < 0.95) z -= 0.14 * std::sin(M_PI * (u - 0.75) / 0.2);
+    s.pelvis = Eigen::Vector3d(0, 0, z);
+    for (int side = 0; side < 2; ++side) s.foot[side] = Eigen::Vector3d(0.2, 0.1 - 0.2 * side, 0);
+    frames.push_back(s);
+  }
+  return frames;
+}
+
+TEST(MotionMetricsTest, GettingUpIsTimedFromSeatOffAndSinkingBackIsCounted) {
+  const MotionMetrics m = ComputeMotionMetrics(SitToStand(1.5, false), 1.0);
+  EXPECT_EQ(m.rises, 1);
+  // 0.88 m is reached 1.30 s after the rise starts; seat-off (2 cm up) 0.08 s after it
+  EXPECT_NEAR(m.rise_s, 1.30 - 0.08, 0.05);
+  EXPECT_EQ(m.rise_extra_steps, 0);
+  EXPECT_EQ(m.rises_clean, 1);
+  const MotionMetrics s = ComputeMotionMetrics(SitToStand(2.0, true), 1.0);
+  EXPECT_EQ(s.rises, 1);
+  EXPECT_EQ(s.rises_staggered, 1);
+  EXPECT_EQ(s.rises_clean, 0);
+  EXPECT_TRUE(MotionMetricsJson(m)["norms"]["rise_s"]["ok"].get<bool>());
+  // standing all along is no rise
+  EXPECT_EQ(ComputeMotionMetrics(SyntheticWalk(0.0, 1.0, 5.0, 0.0), 1.0).rises, 0);
 }
 
 TEST(MotionMetricsTest, TheMeanWeighsEpisodesByWalkingTime) {

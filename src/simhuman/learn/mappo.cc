@@ -57,7 +57,7 @@ struct MappoTrainer::Impl {
   }
 
   control::PolicyMeta Meta() const {
-    return control::PolicyMeta{cfg.task, env->obs_dim(), env->act_dim(), cfg.hidden};
+    return control::PolicyMeta{cfg.task, env->obs_dim(), env->act_dim(), cfg.hidden, ""};
   }
 
   double Lr() const {

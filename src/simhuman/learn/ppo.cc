@@ -38,6 +38,7 @@ TaskOptions OptionsOf(const PpoConfig& c) {
   TaskOptions o;
   o.solver = c.physics_solver;
   o.body_scales = c.body_scales;
+  o.walk_gait = c.walk_gait;
   return o;
 }
 
@@ -224,7 +225,8 @@ struct PpoTrainer::Impl {
   }
 
   control::PolicyMeta Meta() const {
-    return control::PolicyMeta{cfg.task, env->obs_dim(), env->act_dim(), cfg.hidden};
+    return control::PolicyMeta{cfg.task, env->obs_dim(), env->act_dim(), cfg.hidden,
+                               cfg.walk_gait};
   }
 
   double Lr() const {

@@ -37,6 +37,8 @@ const core::FieldTable<PpoConfig>& Table() {
        F("body_scales", &PpoConfig::body_scales, "humans' length scales spread over the envs")
            .MinItems(1)
            .In(NumberRange::Closed(0.5, 1.5)),
+       F("walk_gait", &PpoConfig::walk_gait,
+         "walk task's reference gait (\"\" the original, or human)"),
        F("seed", &PpoConfig::seed, "run seed"),
        F("rollout_steps", &PpoConfig::rollout_steps, "steps per env per iteration").In(kAtLeast1),
        F("epochs", &PpoConfig::epochs, "PPO epochs per iteration").In(kAtLeast1),
@@ -102,6 +104,10 @@ absl::Status PpoConfig::Validate() const {
     return absl::InvalidArgumentError(
         "training config: body_scales other than [1] apply to the walk task only; task is '" +
         task + "'");
+  }
+  if (!walk_gait.empty() && !TaskHasBodyScales(task)) {
+    return absl::InvalidArgumentError("training config: walk_gait '" + walk_gait +
+                                      "' applies to the walk task only; task is '" + task + "'");
   }
   if (static_cast<int>(body_scales.size()) > num_envs) {
     return absl::InvalidArgumentError("training config 'body_scales' has " +

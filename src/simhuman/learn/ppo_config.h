@@ -32,6 +32,9 @@ struct PpoConfig {
   /// e.g. [0.6, 0.8, 1.0, 1.2] trains one policy for children to tall adults (the walk task
   /// works in the adult's units, control::WalkScale). Each in [0.5, 1.5].
   std::vector<double> body_scales = {1.0};
+  /// The walk task's reference gait (control::WalkGait: "" the original, "human"); recorded in
+  /// the policy file, which then runs with it.
+  std::string walk_gait;
   uint64_t seed = 1;
   int rollout_steps = 32;  ///< per env per iteration
   int epochs = 3;

@@ -15,7 +15,7 @@ const std::vector<TaskDef>& Tasks() {
              std::unique_ptr<WalkTask> t,
              WalkTask::Create(
                  envs, o.solver != "newton" ? WalkPhysicsSolver::kPgs : WalkPhysicsSolver::kNewton,
-                 o.body_scales));
+                 o.body_scales, o.walk_gait));
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "", true},

@@ -17,6 +17,7 @@ namespace simhuman::learn {
 struct TaskOptions {
   std::string solver = "newton";           ///< "newton" or "pgs"
   std::vector<double> body_scales = {1.0};  ///< humans' length scales, spread over the envs
+  std::string walk_gait;                    ///< walk: control::WalkGait name
 };
 
 struct TaskDef {

@@ -21,10 +21,12 @@ constexpr int kFirstLegJoint = 14;
 }  // namespace
 
 core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs, WalkPhysicsSolver solver,
-                                                           const std::vector<double>& body_scales) {
+                                                           const std::vector<double>& body_scales,
+                                                           const std::string& gait) {
   if (num_envs <= 0) return absl::InvalidArgumentError("walk task: --envs must be positive");
   if (body_scales.empty()) return absl::InvalidArgumentError("walk task: no body scales");
   std::unique_ptr<WalkTask> t(new WalkTask());
+  SH_ASSIGN_OR_RETURN(t->params_, control::WalkGait(gait));
   world::ModelOptions opt;
   opt.timestep_s = control::kWalkPhysicsDt;
   opt.solver = solver == WalkPhysicsSolver::kPgs ? "pgs" : "newton";

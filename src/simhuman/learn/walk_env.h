@@ -48,10 +48,11 @@ enum class WalkPhysicsSolver { kNewton, kPgs };
 class WalkTask : public VecTask {
  public:
   /// Builds one model per body scale and `num_envs` mjData, env i holding a human of
-  /// `body_scales[i % size]`. Errors from model building and scales outside [0.5, 1.5].
+  /// `body_scales[i % size]`, walking to the reference `gait` (control::WalkGait). Errors from
+  /// model building, scales outside [0.5, 1.5] and unknown gaits.
   static core::StatusOr<std::unique_ptr<WalkTask>> Create(
       int num_envs, WalkPhysicsSolver solver = WalkPhysicsSolver::kNewton,
-      const std::vector<double>& body_scales = {1.0});
+      const std::vector<double>& body_scales = {1.0}, const std::string& gait = "");
   ~WalkTask() override;
 
   std::string name() const override { return "walk"; }

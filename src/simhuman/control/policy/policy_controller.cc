@@ -129,6 +129,9 @@ core::StatusOr<std::unique_ptr<WalkPolicyController>> WalkPolicyController::Load
         " actions; the walking skill needs task 'walk' with " + std::to_string(kWalkObsDim) +
         " and " + std::to_string(kWalkActDim));
   }
+  auto gait = WalkGait(meta.variant);
+  if (!gait.ok()) return core::Annotate(gait.status(), path);
+  impl->params = *gait;
   impl->world = world;
   SH_ASSIGN_OR_RETURN(impl->ix, MakeWalkIndex(*world, agent));
   GetHinges(world->data(), impl->ix.agent, impl->ctrl.data());

@@ -13,13 +13,14 @@
 namespace simhuman::control {
 namespace {
 
-std::string WritePolicy(const std::string& name, const std::string& task, int obs_dim) {
+std::string WritePolicy(const std::string& name, const std::string& task, int obs_dim,
+                        const std::string& variant = "") {
   std::string path = core::testing::UniqueTempPath("policy_test_" + name);
   torch::manual_seed(1);
   GaussianActor actor(obs_dim, kWalkActDim, std::vector<int>{16, 16}, 0.5);
   ObsNormalizer norm(obs_dim);
   torch::serialize::OutputArchive ar;
-  SavePolicyKeys(ar, PolicyMeta{task, obs_dim, kWalkActDim, {16, 16}}, actor, norm);
+  SavePolicyKeys(ar, PolicyMeta{task, obs_dim, kWalkActDim, {16, 16}, variant}, actor, norm);
   ar.save_to(path);
   return path;
 }
@@ -48,6 +49,42 @@ TEST(WalkPolicyController, ActsWithFiniteTargetsAtItsOwnRate) {
   for (double v : ctrl) EXPECT_TRUE(std::isfinite(v));
   // standing on the target facing its heading, nearly untrained: not stepping
   EXPECT_FALSE((*c)->state().stepping);
+}
+
+TEST(WalkPolicyController, RunsWithTheGaitItsFileRecords) {
+  auto world = World();
+  const std::string human = WritePolicy("human", "walk", kWalkObsDim, "human");
+  auto meta = LoadPolicyFile(human);
+  ASSERT_TRUE(meta.ok()) << meta.status();
+  EXPECT_EQ(meta->meta.variant, "human");
+  EXPECT_EQ(LoadPolicyFile(WritePolicy("plain", "walk", kWalkObsDim))->meta.variant, "");
+  // the human gait's clock runs slower (1.05 s cycles against 0.9 s)
+  double advance[2];
+  int k = 0;
+  for (const std::string& path : {WritePolicy("plain2", "walk", kWalkObsDim), human}) {
+    auto c = WalkPolicyController::Load(path, world.get(), 0);
+    ASSERT_TRUE(c.ok()) << c.status();
+    (*c)->SetTarget(3, 0, 0);
+    Observation obs;
+    obs.world = world.get();
+    obs.data = world->data();
+    ASSERT_TRUE((*c)->Act(obs).ok());
+    const double p0 = (*c)->state().phase;
+    obs.time_s = kWalkPolicyDt;
+    ASSERT_TRUE((*c)->Act(obs).ok());
+    advance[k++] = std::fmod((*c)->state().phase - p0 + 1.0, 1.0);
+  }
+  EXPECT_NEAR(advance[0] / advance[1], 1.05 / 0.9, 1e-6);
+  auto bad = WalkPolicyController::Load(WritePolicy("bad", "walk", kWalkObsDim, "moonwalk"),
+                                        world.get(), 0);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(std::string(bad.status().message()).find("unknown walking gait 'moonwalk'"),
+            std::string::npos);
+  // the default gait is the original's parameters
+  auto plain = WalkGait("");
+  ASSERT_TRUE(plain.ok());
+  EXPECT_EQ(plain->gait_period_s, WalkParams().gait_period_s);
+  EXPECT_EQ(plain->hip_swing_rad, WalkParams().hip_swing_rad);
 }
 
 TEST(WalkCommand, ShortStepsKeepTheHeadingLongWalksTurnFirst) {

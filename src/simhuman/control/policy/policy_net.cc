@@ -120,6 +120,7 @@ void SavePolicyKeys(torch::serialize::OutputArchive& ar, const PolicyMeta& meta,
   ar.write("act_dim", c10::IValue(static_cast<int64_t>(meta.act_dim)));
   std::vector<int64_t> h(meta.hidden.begin(), meta.hidden.end());
   ar.write("hidden", torch::tensor(h, torch::kInt64));
+  if (!meta.variant.empty()) ar.write("variant", c10::IValue(meta.variant));
   torch::serialize::OutputArchive a;
   actor->save(a);
   ar.write("actor", a);
@@ -146,6 +147,8 @@ core::StatusOr<PolicyMeta> ReadPolicyMeta(torch::serialize::InputArchive& ar) {
   for (int64_t i = 0; i < hidden.numel(); ++i) {
     meta.hidden.push_back(static_cast<int>(hidden.data_ptr<int64_t>()[i]));
   }
+  c10::IValue variant;
+  if (ar.try_read("variant", variant) && variant.isString()) meta.variant = variant.toStringRef();
   if (meta.obs_dim <= 0 || meta.act_dim <= 0 || meta.hidden.empty()) {
     return absl::DataLossError("policy metadata has invalid dimensions");
   }

@@ -6,7 +6,8 @@
 /// Policy file (a torch::serialize archive, written by learn::ExportPolicy or a checkpoint):
 ///   "format" = "simhuman-policy-v1", "task" (string), "obs_dim", "act_dim" (int),
 ///   "hidden" (int64 tensor of layer widths), "actor" (module archive),
-///   "obs_mean", "obs_var" (float64 tensors), "obs_count" (double), "obs_clip" (double).
+///   "obs_mean", "obs_var" (float64 tensors), "obs_count" (double), "obs_clip" (double),
+///   optionally "variant" (string; PolicyMeta::variant).
 /// Checkpoints hold the same keys plus the training state (see learn/ppo.h).
 
 #include <torch/torch.h>
@@ -78,6 +79,9 @@ struct PolicyMeta {
   std::string task;
   int obs_dim = 0, act_dim = 0;
   std::vector<int> hidden;
+  /// The task's variant the policy was trained under (walk: the gait, control::WalkGait);
+  /// key "variant", absent in older files: "".
+  std::string variant;
 };
 
 /// Writes the policy keys (format, meta, actor, normalizer) into `ar`.

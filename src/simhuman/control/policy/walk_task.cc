@@ -70,6 +70,25 @@ core::StatusOr<WalkIndex> MakeWalkIndex(const world::SimWorld& world, int a) {
   return ix;
 }
 
+core::StatusOr<WalkParams> WalkGait(std::string_view name) {
+  WalkParams p;
+  if (name.empty()) return p;
+  if (name == "human") {
+    p.vmax_mps = 1.3;
+    p.gait_period_s = 1.05;
+    p.swing_frac = 0.40;
+    p.hip_swing_rad = 0.42;
+    p.knee_swing_rad = 1.0;
+    p.knee_stance_rad = 0.15;
+    p.knee_bend_rad = -0.13;
+    return p;
+  }
+  return absl::InvalidArgumentError("unknown walking gait '" + std::string(name) +
+                                    "'; valid: \"\" (the original), human");
+}
+
+std::vector<std::string> WalkGaitNames() { return {"", "human"}; }
+
 const std::array<double, kWalkActDim>& WalkNominalPose() {
   static const std::array<double, kWalkActDim> q = [] {
     std::array<double, kWalkActDim> n{};
@@ -90,8 +109,8 @@ void WalkReference(const WalkParams& p, double phase, double amplitude, const Wa
   std::copy(n.begin(), n.end(), q);
   const double amp = Clamp(amplitude, 0.0, 1.0);
   // per-cycle excursions: sagittal hip swing for vx, lateral for vy, hip yaw for turning
-  const double a_sag = 0.30 * Clamp(cmd.vx / p.vmax_mps, -0.6, 1.0) * amp;
-  const double a_lat = 0.12 * Clamp(cmd.vy / p.vmax_mps, -1.0, 1.0) * amp;
+  const double a_sag = p.hip_swing_rad * Clamp(cmd.vx / p.vmax_mps, -0.6, 1.0) * amp;
+  const double a_lat = 0.12 * Clamp(cmd.vy / 1.0, -1.0, 1.0) * amp;  // side steps: any gait
   const double a_yaw = 0.25 * Clamp(cmd.yaw_rate / p.max_yaw_rate, -1.0, 1.0) * amp;
   for (int side = 0; side < 2; ++side) {  // 0 left, 1 right
     double psi = std::fmod(phase + 0.5 * side, 1.0);
@@ -107,7 +126,7 @@ void WalkReference(const WalkParams& p, double phase, double amplitude, const Wa
     double sag = a_sag * along;
     double lat = a_lat * along;  // + = foot moves to the agent's left
     q[hy] += sag + (swing ? 0.35 * amp * bump : 0.0);
-    q[kn] += swing ? 0.9 * amp * bump : 0.1 * amp * bump;
+    q[kn] += amp * (p.knee_bend_rad + (swing ? p.knee_swing_rad : p.knee_stance_rad) * bump);
     q[ay] = q[hy] - q[kn] + (swing ? 0.3 * amp * bump : 0.0);  // flat foot (toes down in swing)
     // hip_x is abduction-positive on both sides; left abduction moves the foot to +y
     double hip_x = side == 0 ? lat : -lat;

@@ -14,6 +14,8 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "simhuman/world/humanoid.h"
@@ -49,7 +51,20 @@ struct WalkParams {
   /// heading all the way (steps back or sideways, as people do for a metre or so) unless the
   /// target ends up 0.5 m beyond that. 0: every walk follows the near/far blend.
   double short_step_m = 1.5;
+  // the reference gait's shape (rad, at full stepping amplitude)
+  double hip_swing_rad = 0.30;    ///< sagittal hip excursion each way at vmax
+  double knee_swing_rad = 0.9;    ///< swing-phase knee flexion (peak added to the nominal)
+  double knee_stance_rad = 0.1;   ///< stance-phase knee flexion (peak added to the nominal)
+  double knee_bend_rad = 0.0;     ///< added to the nominal knee while stepping (-: straighter)
 };
+
+/// The named gaits. A walking policy file records the gait it was trained with
+/// (PolicyMeta::variant) and runs with it: "" is the original (0.9 s cycle, 1.0 m/s, knees
+/// bent 14-20 degrees), "human" is shaped after adult gait norms (1.05 s cycle = 114 steps/min,
+/// 1.3 m/s, longer steps, straighter stance legs; docs/BENCHMARKS.md, issue 21).
+core::StatusOr<WalkParams> WalkGait(std::string_view name);
+/// The valid gait names ("" first).
+std::vector<std::string> WalkGaitNames();
 
 /// The command derived from the target each policy step (heading frame, the adult's units:
 /// physical speeds are these times sqrt(s), WalkScale).
