@@ -272,6 +272,14 @@ TEST(CliTest, EvalBadFlags) {
                  {"--video-every"});
   ExpectBadInput(Cli({"eval", "--suite", "sit", "--preset", "turbo", "--out", out}), {"'turbo'"});
   ExpectBadInput(Cli({"eval", "--episodes", "3"}), {"--suite"});
+  ExpectBadInput(Cli({"eval", "--suite", "reach", "--scales", "0.6,1", "--out", out}),
+                 {"--scales", "reach", "sit, sit-far, lie, lie-far"});
+  ExpectBadInput(Cli({"eval", "--suite", "sit", "--scales", "0.6,2", "--out", out}),
+                 {"--scales entry 2", "[0.5, 1.5]"});
+  ExpectBadInput(Cli({"eval", "--suite", "language", "--scales", "0.8", "--out", out}),
+                 {"--scales", "language"});
+  ExpectBadInput(Cli({"eval", "--suite", "walk", "--policy", "x.pt", "--scales", "0.2"}),
+                 {"--scales entry 0.2"});
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

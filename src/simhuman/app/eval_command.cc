@@ -1,5 +1,6 @@
 #include "simhuman/app/eval_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -192,7 +193,7 @@ int WalkEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err
   for (double sc : flags.scales) {
     if (!(sc >= 0.5 && sc <= 1.5)) {
       return ReportError(err, kCommand,
-                         absl::InvalidArgumentError("--scales entry " + std::to_string(sc) +
+                         absl::InvalidArgumentError("--scales entry " + Row("%g", sc) +
                                                     " is invalid; valid: a scale in [0.5, 1.5]"));
     }
   }
@@ -243,6 +244,19 @@ core::StatusOr<eval::EvalOptions> PlanSuiteOptions(const EvalFlags& flags,
         "--video-every " + std::to_string(flags.video_every) +
         " is invalid; valid: 0 (none) or K >= 1 (every K-th episode)");
   }
+  if (!flags.scales.empty()) {
+    const auto& ok = eval::ScalableSuites();
+    if (std::find(ok.begin(), ok.end(), suite.name) == ok.end()) {
+      return absl::InvalidArgumentError("--scales does not apply to --suite " + suite.name +
+                                        "; valid: the walk suites and " + core::JoinNames(ok));
+    }
+    for (double sc : flags.scales) {
+      if (!(sc >= 0.5 && sc <= 1.5)) {
+        return absl::InvalidArgumentError("--scales entry " + Row("%g", sc) +
+                                          " is invalid; valid: a scale in [0.5, 1.5]");
+      }
+    }
+  }
   SH_ASSIGN_OR_RETURN(control::MpcConfig config,
                       ResolveConfig(flags.preset, flags.preset_given, flags.config));
   eval::EvalOptions options;
@@ -257,45 +271,13 @@ core::StatusOr<eval::EvalOptions> PlanSuiteOptions(const EvalFlags& flags,
   return options;
 }
 
-}  // namespace
-
-int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
-                core::Communicator& comm) {
-  const eval::SuiteDef* suite = eval::FindSuite(flags.suite);
-  if (!suite) {
-    return ReportError(
-        err, kCommand,
-        absl::InvalidArgumentError("--suite: unknown suite '" + flags.suite +
-                                   "'; valid suites are: " + core::JoinNames(eval::SuiteNames())));
-  }
-  if (suite->controller != eval::SuiteController::kMpc && (comm.size() > 1 || flags.resume)) {
-    return ReportError(err, kCommand,
-                       absl::InvalidArgumentError(
-                           "--suite " + flags.suite +
-                           " runs in one process without --resume; mpirun and --resume work "
-                           "with the plan suites (sit, lie, reach, sceneplan-simple, ...)"));
-  }
-  if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
-  if (suite->controller == eval::SuiteController::kCarryPolicy) {
-    return CarryEvalCommand(flags, out, err);
-  }
-  if (suite->controller == eval::SuiteController::kTabletop) {
-    return TabletopEvalCommand(flags, out, err);
-  }
-  if (suite->controller == eval::SuiteController::kWalkPolicy) {
-    if (flags.episodes < 1) {
-      return ReportError(err, kCommand, absl::InvalidArgumentError("--episodes must be >= 1"));
-    }
-    return WalkEvalCommand(flags, out, err);
-  }
-  // every rank checks its own flags and files; all stop if one fails
-  core::StatusOr<eval::EvalOptions> opts = PlanSuiteOptions(flags, *suite);
-  absl::Status agreed = core::AgreeOk(comm, opts.status());
-  if (!agreed.ok()) return ReportError(err, kCommand, agreed);
-  const eval::EvalOptions& options = *opts;
-
+// one run of a plan suite with `options` (every rank); its summary in *summary
+int PlanSuiteOnce(const EvalFlags& flags, const eval::EvalOptions& options, std::ostream& out,
+                  std::ostream& err, core::Communicator& comm, eval::Summary* result) {
   out << "simhuman eval: suite " << flags.suite << ", " << flags.episodes << " episodes, seed "
-      << flags.seed << ", preset " << options.config.preset << " -> " << options.out_dir;
+      << flags.seed << ", preset " << options.config.preset;
+  if (options.human_scale != 1.0) out << ", human scale " << options.human_scale;
+  out << " -> " << options.out_dir;
   if (comm.size() > 1) out << ", " << comm.size() << " ranks (" << comm.name() << ")";
   out << std::endl;
   eval::EvalHooks hooks;
@@ -318,6 +300,78 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
   PrintSummary(out, *summary);
   out << "wrote " << (std::filesystem::path(options.out_dir) / "summary.json").string() << " and "
       << (std::filesystem::path(options.out_dir) / "episodes.jsonl").string() << std::endl;
+  *result = *summary;
+  return kExitOk;
+}
+
+}  // namespace
+
+int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
+                core::Communicator& comm) {
+  const eval::SuiteDef* suite = eval::FindSuite(flags.suite);
+  if (!suite) {
+    return ReportError(
+        err, kCommand,
+        absl::InvalidArgumentError("--suite: unknown suite '" + flags.suite +
+                                   "'; valid suites are: " + core::JoinNames(eval::SuiteNames())));
+  }
+  if (suite->controller != eval::SuiteController::kMpc && (comm.size() > 1 || flags.resume)) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--suite " + flags.suite +
+                           " runs in one process without --resume; mpirun and --resume work "
+                           "with the plan suites (sit, lie, reach, sceneplan-simple, ...)"));
+  }
+  if (!flags.scales.empty() && suite->controller != eval::SuiteController::kWalkPolicy &&
+      suite->controller != eval::SuiteController::kMpc) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--scales does not apply to --suite " + flags.suite +
+                           "; valid: the walk suites and " + core::JoinNames(eval::ScalableSuites())));
+  }
+  if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
+  if (suite->controller == eval::SuiteController::kCarryPolicy) {
+    return CarryEvalCommand(flags, out, err);
+  }
+  if (suite->controller == eval::SuiteController::kTabletop) {
+    return TabletopEvalCommand(flags, out, err);
+  }
+  if (suite->controller == eval::SuiteController::kWalkPolicy) {
+    if (flags.episodes < 1) {
+      return ReportError(err, kCommand, absl::InvalidArgumentError("--episodes must be >= 1"));
+    }
+    return WalkEvalCommand(flags, out, err);
+  }
+  // every rank checks its own flags and files; all stop if one fails
+  core::StatusOr<eval::EvalOptions> opts = PlanSuiteOptions(flags, *suite);
+  absl::Status agreed = core::AgreeOk(comm, opts.status());
+  if (!agreed.ok()) return ReportError(err, kCommand, agreed);
+  eval::EvalOptions options = *opts;
+  if (flags.scales.empty()) {
+    eval::Summary s;
+    return PlanSuiteOnce(flags, options, out, err, comm, &s);
+  }
+  // --scales: one run per body size, each in its own folder, then success per scale
+  const std::string base = options.out_dir;
+  std::vector<std::pair<double, eval::Summary>> rows;
+  for (double sc : flags.scales) {
+    options.human_scale = sc;
+    options.out_dir = flags.scales.size() == 1 ? base : base + "/scale_" + Row("%.2f", sc);
+    eval::Summary s;
+    int rc = PlanSuiteOnce(flags, options, out, err, comm, &s);
+    if (rc != kExitOk) return rc;
+    rows.emplace_back(sc, s);
+  }
+  if (rows.size() > 1) {
+    out << "\nper scale (" << flags.suite << ", " << flags.episodes << " episodes each)\n"
+        << Row("%6s %8s %7s %8s", "scale", "success", "falls", "err_cm") << "\n";
+    for (const auto& [sc, s] : rows) {
+      out << Row("%6.2f %7.1f%% %6.1f%% %8s", sc, 100 * s.success_rate, 100 * s.fall_rate,
+                 s.contact_error_m ? Cm(*s.contact_error_m).c_str() : "-")
+          << "\n";
+    }
+    out << std::flush;
+  }
   return kExitOk;
 }
 

@@ -69,6 +69,11 @@ Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& reco
   return s;
 }
 
+const std::vector<std::string>& ScalableSuites() {
+  static const std::vector<std::string> names = {"sit", "sit-far", "lie", "lie-far"};
+  return names;
+}
+
 nlohmann::ordered_json EpisodeRecordJson(const EpisodeRecord& r) {
   nlohmann::ordered_json j;
   j["episode"] = r.index;
@@ -155,6 +160,7 @@ nlohmann::ordered_json SummaryJson(const Summary& s, const EvalOptions& options)
   j["seed"] = options.seed;
   j["preset"] = options.config.preset;
   j["walk_policy"] = options.walk_policy;
+  j["human_scale"] = options.human_scale;
   j["config"] = options.config.ToJson();
   if (s.motion) j["motion"] = MotionMetricsJson(*s.motion);
   const nlohmann::ordered_json provenance = ProvenanceJson();
@@ -171,6 +177,7 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   };
   core::StatusOr<EpisodeSpec> spec = MakeEpisodeSpec(options.suite, seed);
   if (!spec.ok()) return internal(spec.status());
+  for (world::HumanSpec& h : spec->scene.humans) h.scale = options.human_scale;
   core::StatusOr<core::SceneCatalog> catalog = world::BuildCatalog(spec->scene);
   if (!catalog.ok()) return internal(catalog.status());
   core::StatusOr<plan::ContactChain> chain = plan::ParseContactChainJson(spec->plan, who);

@@ -96,7 +96,14 @@ struct EvalOptions {
   /// Continue the run in out_dir: keep its finished episodes and run only the missing ones
   /// (eval/eval_job.h).
   bool resume = false;
+  /// Every human of every episode gets this length scale (a child 0.6, a tall adult 1.2);
+  /// furniture keeps its size. Only suites in ScalableSuites().
+  double human_scale = 1.0;
 };
+
+/// The plan suites whose episodes stay valid for any body size (sit, sit-far, lie, lie-far):
+/// the others place targets (markers, hand contacts) for an adult's reach.
+const std::vector<std::string>& ScalableSuites();
 
 /// summary.json: suite, episodes, episodes_requested, success_rate, contact_error_m (null when
 /// none), success_steps, fall_rate, wall_per_sim, seed, preset, config, git_revision,
