@@ -51,10 +51,12 @@ class Writer {
   const std::string& p() const { return p_; }
 
   void Joint(std::ostringstream& o, const JointDef& j) const {
-    double g = std::pow(s_, 4);  // torque ~ mass x length
+    // dynamic similarity (Froude scaling: times x sqrt(s)): torques ~ s^4, so damping (torque
+    // per rad/s) ~ s^4.5 and armature (an inertia, mass x length^2) ~ s^5
+    const double damping = j.gains.damping * std::pow(s_, 4.5), armature = 0.02 * std::pow(s_, 5);
     o << "<joint name=\"" << p_ << j.name << "\" type=\"hinge\" axis=\"" << j.axis << "\" range=\""
-      << j.lo_deg << " " << j.hi_deg << "\" damping=\"" << F(j.gains.damping * g)
-      << "\" armature=\"" << F(0.02 * g) << "\"/>\n";
+      << j.lo_deg << " " << j.hi_deg << "\" damping=\"" << F(damping) << "\" armature=\""
+      << F(armature) << "\"/>\n";
   }
   void Capsule(std::ostringstream& o, const std::string& name, double x0, double y0, double z0,
                double x1, double y1, double z1, double r, double mass) const {
