@@ -86,6 +86,27 @@ TEST(WalkEval, ShippedPolicyWalksToItsGoalsSlow) {
   EXPECT_GE(sum->success_rate, 0.9);
   EXPECT_EQ(sum->fall_rate, 0.0);
   EXPECT_GT(sum->mean_time_s, 0.0);
+  // steady walking was seen and measured against the norms
+  EXPECT_GT(sum->motion.walking_s, 10.0);
+  EXPECT_GT(sum->motion.speed_mps, 0.5);
+  EXPECT_GT(sum->motion.cadence_spm, 60.0);
+}
+
+TEST(WalkEval, TheShippedPolicyWalksAChildAndATallAdultSlow) {
+  // the same adult-trained policy in the adult's units (control::WalkScale); before Froude
+  // scaling both fell in every episode
+  for (double scale : {0.6, 1.2}) {
+    WalkEvalOptions o;
+    o.policy = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/walk.pt";
+    o.episodes = 8;
+    o.seed = 1;
+    o.scale = scale;
+    std::vector<WalkEpisode> eps;
+    auto sum = RunWalkEval(o, &eps);
+    ASSERT_TRUE(sum.ok()) << sum.status();
+    EXPECT_GE(sum->success_rate, 0.85) << "scale " << scale;
+    EXPECT_NEAR(sum->motion.scale, scale, 1e-12);
+  }
 }
 
 }  // namespace

@@ -67,6 +67,26 @@ TEST(HumanoidTest, ChildVariantScalesWithOneParameter) {
   EXPECT_NEAR(pts[static_cast<int>(core::BodyJoint::kHead)].z(), 1.57 * 0.7, 0.05);
 }
 
+TEST(HumanoidTest, AScaledBodyIsDynamicallySimilarToTheAdultIntegration) {
+  // times scale with sqrt(s): servo stiffness / inertia and damping / inertia must give the
+  // adult's rates x 1/sqrt(s) (kp ~ s^4, damping ~ s^4.5, armature and inertias ~ s^5)
+  auto adult = Empty(1.0), child = Empty(0.64);
+  const mjModel* a = adult->model();
+  const mjModel* c = child->model();
+  const int knee = mj_name2id(a, mjOBJ_JOINT, "right_knee");
+  const int act = mj_name2id(a, mjOBJ_ACTUATOR, "right_knee");
+  ASSERT_GE(knee, 0);
+  ASSERT_GE(act, 0);
+  const int dof = a->jnt_dofadr[knee];
+  const double s = 0.64;
+  EXPECT_NEAR(c->actuator_gainprm[10 * act] / a->actuator_gainprm[10 * act], std::pow(s, 4), 1e-6);
+  EXPECT_NEAR(c->dof_damping[dof] / a->dof_damping[dof], std::pow(s, 4.5), 1e-3);
+  EXPECT_NEAR(c->dof_armature[dof] / a->dof_armature[dof], std::pow(s, 5), 1e-3);
+  // the shank's inertia about its own axes scales as s^5 too
+  const int shin = a->jnt_bodyid[knee];
+  EXPECT_NEAR(c->body_inertia[3 * shin] / a->body_inertia[3 * shin], std::pow(s, 5), 0.02);
+}
+
 TEST(HumanoidTest, TwoAgentsHaveSeparateNames) {
   core::SceneCatalog cat;
   auto w = SimWorld::Create(cat, {{0, 0, 0, 1.0}, {2, 0, 0, 0.7}});
