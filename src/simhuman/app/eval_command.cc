@@ -325,9 +325,9 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
   if (!flags.scales.empty() && suite->controller != eval::SuiteController::kWalkPolicy &&
       suite->controller != eval::SuiteController::kMpc) {
     return ReportError(err, kCommand,
-                       absl::InvalidArgumentError(
-                           "--scales does not apply to --suite " + flags.suite +
-                           "; valid: the walk suites and " + core::JoinNames(eval::ScalableSuites())));
+                       absl::InvalidArgumentError("--scales does not apply to --suite " +
+                                                  flags.suite + "; valid: the walk suites and " +
+                                                  core::JoinNames(eval::ScalableSuites())));
   }
   if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
   if (suite->controller == eval::SuiteController::kCarryPolicy) {

@@ -94,6 +94,16 @@ bool WriteRunPage(const RunFlags& flags, const std::string& scene_name, const wo
   return true;
 }
 
+// human-norm motion metrics per human, from the recorded frames (eval/motion_metrics.h)
+nlohmann::ordered_json MotionJson(const world::SimWorld& sim, const control::Trajectory& traj) {
+  nlohmann::ordered_json motion = nlohmann::ordered_json::array();
+  for (int a = 0; a < sim.num_agents(); ++a) {
+    motion.push_back(
+        eval::MotionMetricsJson(eval::TrajectoryMotionMetrics(sim, a, traj.time_s, traj.qpos)));
+  }
+  return motion;
+}
+
 }  // namespace
 
 int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
@@ -204,13 +214,7 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   j["walk_policy"] = walk_policy;
   j["carry_policy"] = carry_policy;
   if (!grasp_policy.empty()) j["grasp_policy"] = grasp_policy;
-  // human-norm motion metrics per human, from the recorded frames (eval/motion_metrics.h)
-  nlohmann::ordered_json motion = nlohmann::ordered_json::array();
-  for (int a = 0; a < (*sim)->num_agents(); ++a) {
-    motion.push_back(eval::MotionMetricsJson(
-        eval::TrajectoryMotionMetrics(**sim, a, trajectory.time_s, trajectory.qpos)));
-  }
-  j["motion"] = motion;
+  j["motion"] = MotionJson(**sim, trajectory);
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) j[key] = value;
   absl::Status st = eval::WriteJsonFile(Join(out_dir, "scene.json"), world::SceneToJson(*scene));

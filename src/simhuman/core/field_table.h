@@ -1,8 +1,8 @@
 #pragma once
 /// One table per config struct drives its strict JSON reading, its validation and its JSON
 /// output. Each row names a key, the struct member it fills (double, int, int64_t, uint64_t,
-/// bool, std::string, std::vector<int>, std::vector<double> or std::vector<std::string>), what is valid (a range, a
-/// list of names, a minimum length) and a short doc:
+/// bool, std::string, std::vector<int>, std::vector<double> or std::vector<std::string>), what is
+/// valid (a range, a list of names, a minimum length) and a short doc:
 ///
 ///   const core::FieldTable<MpcConfig>& Table() {
 ///     using F = core::Field<MpcConfig>;

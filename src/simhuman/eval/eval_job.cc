@@ -125,10 +125,10 @@ absl::Status CheckResumable(const EvalOptions& o) {
                             {"walk_policy", o.walk_policy},
                             {"config", o.config.ToJson()}};
   if (s.value("human_scale", 1.0) != o.human_scale) {
-    return absl::InvalidArgumentError(
-        path + ": the run being resumed has human_scale " +
-        std::to_string(s.value("human_scale", 1.0)) + " but this one has " +
-        std::to_string(o.human_scale) + "; resume with the flags of the run that wrote it");
+    return absl::InvalidArgumentError(path + ": the run being resumed has human_scale " +
+                                      std::to_string(s.value("human_scale", 1.0)) +
+                                      " but this one has " + std::to_string(o.human_scale) +
+                                      "; resume with the flags of the run that wrote it");
   }
   for (const auto& [key, value] : want.items()) {
     if (!s.contains(key) || s[key] != value) {

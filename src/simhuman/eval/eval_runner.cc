@@ -202,8 +202,8 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   rec.index = index;
   rec.seed = seed;
   rec.variant = spec->variant;
-  core::StatusOr<control::EpisodeResult> result = RunWithWalkPolicy(
-      **sim, *chain, *controllers, options.walk_policy, run, &trajectory);
+  core::StatusOr<control::EpisodeResult> result =
+      RunWithWalkPolicy(**sim, *chain, *controllers, options.walk_policy, run, &trajectory);
   if (!result.ok()) return result.status();
   rec.result = *result;
   rec.extra =

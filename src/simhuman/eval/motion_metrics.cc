@@ -44,7 +44,8 @@ double Correlation(const std::vector<double>& a, const std::vector<double>& b) {
 
 // x (forward) of `p` relative to the pelvis in the pelvis heading frame
 double Forward(const MotionSample& s, const Eigen::Vector3d& p) {
-  return std::cos(s.yaw_rad) * (p.x() - s.pelvis.x()) + std::sin(s.yaw_rad) * (p.y() - s.pelvis.y());
+  return std::cos(s.yaw_rad) * (p.x() - s.pelvis.x()) +
+         std::sin(s.yaw_rad) * (p.y() - s.pelvis.y());
 }
 
 double Horizontal(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
@@ -69,7 +70,8 @@ std::vector<char> SteadyFrames(const std::vector<MotionSample>& f, double dt, do
     }
     int j = i;
     while (j + 1 < n && moving[j + 1]) ++j;
-    if (f[j].time_s - f[i].time_s >= kMinStretchS) std::fill(steady.begin() + i, steady.begin() + j + 1, 1);
+    if (f[j].time_s - f[i].time_s >= kMinStretchS)
+      std::fill(steady.begin() + i, steady.begin() + j + 1, 1);
     i = j + 1;
   }
   return steady;
@@ -106,8 +108,8 @@ void AddSwings(const std::vector<MotionSample>& f, const std::vector<char>& stea
 }
 
 // sit-to-stand rises: duration, foot strikes during them, sinking back
-void AddRises(const std::vector<MotionSample>& f, const std::vector<char> contact[2],
-              double scale, MotionMetrics* m) {
+void AddRises(const std::vector<MotionSample>& f, const std::vector<char> contact[2], double scale,
+              MotionMetrics* m) {
   const int n = static_cast<int>(f.size());
   std::vector<double> durations, steps;
   int i = 0;
@@ -179,7 +181,8 @@ MotionMetrics ComputeMotionMetrics(const std::vector<MotionSample>& f, double sc
   for (int i = 0; i + 1 < n; ++i) {
     for (int s = 0; s < 2; ++s) {
       if (touching[s][i] && touching[s][i + 1]) {
-        skate.push_back(Horizontal(f[i + 1].foot[s], f[i].foot[s]) / (f[i + 1].time_s - f[i].time_s));
+        skate.push_back(Horizontal(f[i + 1].foot[s], f[i].foot[s]) /
+                        (f[i + 1].time_s - f[i].time_s));
       }
     }
   }
@@ -199,8 +202,9 @@ MotionMetrics ComputeMotionMetrics(const std::vector<MotionSample>& f, double sc
       for (int s = 0; s < 2; ++s) m.foot_strikes += contact[s][i] && !contact[s][i - 1];
     }
     if (i >= 3 && steady[i - 1] && steady[i - 2] && steady[i - 3]) {
-      Eigen::Vector3d j3 = (f[i].pelvis - 3 * f[i - 1].pelvis + 3 * f[i - 2].pelvis - f[i - 3].pelvis) /
-                           (dt * dt * dt);
+      Eigen::Vector3d j3 =
+          (f[i].pelvis - 3 * f[i - 1].pelvis + 3 * f[i - 2].pelvis - f[i - 3].pelvis) /
+          (dt * dt * dt);
       jerk2.push_back(j3.squaredNorm());
     }
     both += contact[0][i] && contact[1][i];
@@ -241,7 +245,8 @@ MotionMetrics ComputeMotionMetrics(const std::vector<MotionSample>& f, double sc
   m.arm_swing_m = swing_m;
   if (corr_n) m.arm_leg_phase_corr = corr / corr_n;
   std::vector<double> knee_peak, clear_min, clear_peak;
-  for (int s = 0; s < 2; ++s) AddSwings(f, steady, contact[s], s, &knee_peak, &clear_min, &clear_peak);
+  for (int s = 0; s < 2; ++s)
+    AddSwings(f, steady, contact[s], s, &knee_peak, &clear_min, &clear_peak);
   m.swings = static_cast<int>(knee_peak.size());
   m.swing_knee_peak_deg = Mean(knee_peak);
   m.swing_clearance_min_m = Mean(clear_min);
@@ -253,7 +258,8 @@ const std::vector<MotionNorm>& MotionNorms() {
   static const std::vector<MotionNorm> norms = {
       {"speed_mps", "comfortable walking speed (m/s)", 1.0, 1.6,
        "Bohannon & Andrews 2011 (1.34-1.43 m/s at 20-59 y); issue 21: >= 1.0"},
-      {"cadence_spm", "cadence (steps/min)", 95, 125, "Perry & Burnfield 2010 (about 113); issue 21"},
+      {"cadence_spm", "cadence (steps/min)", 95, 125,
+       "Perry & Burnfield 2010 (about 113); issue 21"},
       {"step_length_m", "step length (m)", 0.6, 0.8, "Perry & Burnfield 2010 (stride 1.41 m)"},
       {"stance_knee_deg", "mean stance-phase knee flexion (deg)", 0, 20,
        "Perry & Burnfield 2010 (about 15-20 at loading, near 5 in mid and terminal stance)"},
@@ -314,8 +320,10 @@ struct IntField {
   int MotionMetrics::*member;
 };
 constexpr IntField kInts[] = {
-    {"foot_strikes", &MotionMetrics::foot_strikes}, {"swings", &MotionMetrics::swings},
-    {"rises", &MotionMetrics::rises},               {"rises_staggered", &MotionMetrics::rises_staggered},
+    {"foot_strikes", &MotionMetrics::foot_strikes},
+    {"swings", &MotionMetrics::swings},
+    {"rises", &MotionMetrics::rises},
+    {"rises_staggered", &MotionMetrics::rises_staggered},
     {"rises_clean", &MotionMetrics::rises_clean},
 };
 
@@ -413,9 +421,10 @@ MotionMetrics MeanMotionMetrics(const std::vector<MotionMetrics>& all) {
       skate_w += m.duration_s;
     }
     if (m.walking_s <= 0) continue;
-    const double v[12] = {m.speed_mps, m.cadence_spm, m.step_length_m, m.stance_knee_deg,
-                          m.trunk_pitch_deg, m.head_pitch_deg, m.arm_swing_deg, m.arm_swing_m,
-                          m.arm_leg_phase_corr, m.double_support, m.pelvis_jerk_rms, 0};
+    const double v[12] = {m.speed_mps,       m.cadence_spm,     m.step_length_m,
+                          m.stance_knee_deg, m.trunk_pitch_deg, m.head_pitch_deg,
+                          m.arm_swing_deg,   m.arm_swing_m,     m.arm_leg_phase_corr,
+                          m.double_support,  m.pelvis_jerk_rms, 0};
     for (int k = 0; k < 11; ++k) sums[k] += (std::isfinite(v[k]) ? v[k] : 0) * m.walking_s;
     w += m.walking_s;
     out.walking_s += m.walking_s;

@@ -40,13 +40,13 @@ inline constexpr double kStandingPelvis = 0.88;  ///< m at scale 1: above this i
 struct MotionSample {
   double time_s = 0;
   Eigen::Vector3d pelvis = Eigen::Vector3d::Zero();
-  double yaw_rad = 0;                 ///< pelvis heading
-  double trunk_pitch_rad = 0;         ///< torso forward lean from vertical (+ forward)
-  double head_pitch_rad = 0;          ///< head forward tilt from vertical (+ down)
+  double yaw_rad = 0;          ///< pelvis heading
+  double trunk_pitch_rad = 0;  ///< torso forward lean from vertical (+ forward)
+  double head_pitch_rad = 0;   ///< head forward tilt from vertical (+ down)
   Eigen::Vector3d foot[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};  ///< left, right
-  double foot_low_z[2] = {0, 0};      ///< lowest corner of each foot box
+  double foot_low_z[2] = {0, 0};  ///< lowest corner of each foot box
   Eigen::Vector3d hand[2] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};  ///< left, right
-  double knee_rad[2] = {0, 0};        ///< flexion, left, right
+  double knee_rad[2] = {0, 0};           ///< flexion, left, right
   double shoulder_flex_rad[2] = {0, 0};  ///< sagittal flexion (+ forward), left, right
 };
 
@@ -54,22 +54,22 @@ struct MotionSample {
 struct MotionMetrics {
   double scale = 1.0;
   double duration_s = 0;
-  double walking_s = 0;          ///< time in steady stretches
-  double speed_mps = NAN;        ///< distance / time over the stretches
-  double cadence_spm = NAN;      ///< foot strikes per minute
-  double step_length_m = NAN;    ///< distance / foot strikes
-  double stance_knee_deg = NAN;  ///< mean knee flexion of feet on the ground
+  double walking_s = 0;              ///< time in steady stretches
+  double speed_mps = NAN;            ///< distance / time over the stretches
+  double cadence_spm = NAN;          ///< foot strikes per minute
+  double step_length_m = NAN;        ///< distance / foot strikes
+  double stance_knee_deg = NAN;      ///< mean knee flexion of feet on the ground
   double swing_knee_peak_deg = NAN;  ///< mean over swings of the peak knee flexion
-  double trunk_pitch_deg = NAN;  ///< mean forward lean of the torso while walking
-  double head_pitch_deg = NAN;   ///< mean forward tilt of the head while walking
-  double arm_swing_deg = NAN;    ///< shoulder flexion range (5th-95th percentile), mean of arms
-  double arm_swing_m = NAN;      ///< fore-aft hand excursion relative to the pelvis (same)
+  double trunk_pitch_deg = NAN;      ///< mean forward lean of the torso while walking
+  double head_pitch_deg = NAN;       ///< mean forward tilt of the head while walking
+  double arm_swing_deg = NAN;        ///< shoulder flexion range (5th-95th percentile), mean of arms
+  double arm_swing_m = NAN;          ///< fore-aft hand excursion relative to the pelvis (same)
   /// correlation of each hand's fore-aft position with the same side's foot (relative to the
   /// pelvis, heading frame): -1 is perfect counter-phase (the human way), +1 in phase
   double arm_leg_phase_corr = NAN;
-  double double_support = NAN;   ///< share of walking time with both feet on the ground
-  double foot_skate_mps = NAN;   ///< mean horizontal speed of feet on the ground (all frames)
-  double swing_clearance_min_m = NAN;   ///< mean over swings of the mid-swing minimum height
+  double double_support = NAN;         ///< share of walking time with both feet on the ground
+  double foot_skate_mps = NAN;         ///< mean horizontal speed of feet on the ground (all frames)
+  double swing_clearance_min_m = NAN;  ///< mean over swings of the mid-swing minimum height
   double swing_clearance_peak_m = NAN;  ///< mean over swings of the peak height
   double pelvis_jerk_rms = NAN;  ///< RMS of the pelvis's third derivative while walking, m/s^3
   int foot_strikes = 0;

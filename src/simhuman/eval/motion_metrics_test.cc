@@ -136,8 +136,8 @@ TEST(MotionMetricsTest, TheMeanWeighsEpisodesByWalkingTime) {
   still.duration_s = 3;
   still.foot_skate_mps = 0;
   const MotionMetrics mean = MeanMotionMetrics({a, b, still});
-  const double expect = (a.speed_mps * a.walking_s + b.speed_mps * b.walking_s) /
-                        (a.walking_s + b.walking_s);
+  const double expect =
+      (a.speed_mps * a.walking_s + b.speed_mps * b.walking_s) / (a.walking_s + b.walking_s);
   EXPECT_NEAR(mean.speed_mps, expect, 1e-9);
   EXPECT_EQ(mean.foot_strikes, a.foot_strikes + b.foot_strikes);
 }

@@ -51,7 +51,7 @@ struct WalkEpisode {
   /// down, shoulder to hand: a relaxed walking arm stays within about 20 degrees, an arm held
   /// out in front at shoulder height is at 90
   double arm_raise_deg = 0;
-  MotionMetrics motion;  ///< human-norm gait metrics of the episode (eval/motion_metrics.h)
+  MotionMetrics motion;    ///< human-norm gait metrics of the episode (eval/motion_metrics.h)
   std::string sheet_path;  ///< contact sheet, when rendered
   std::string render_error;
 };

@@ -225,8 +225,7 @@ struct PpoTrainer::Impl {
   }
 
   control::PolicyMeta Meta() const {
-    return control::PolicyMeta{cfg.task, env->obs_dim(), env->act_dim(), cfg.hidden,
-                               cfg.walk_gait};
+    return control::PolicyMeta{cfg.task, env->obs_dim(), env->act_dim(), cfg.hidden, cfg.walk_gait};
   }
 
   double Lr() const {

@@ -110,10 +110,9 @@ absl::Status PpoConfig::Validate() const {
                                       "' applies to the walk task only; task is '" + task + "'");
   }
   if (static_cast<int>(body_scales.size()) > num_envs) {
-    return absl::InvalidArgumentError("training config 'body_scales' has " +
-                                      std::to_string(body_scales.size()) +
-                                      " entries; it may have at most num_envs (" +
-                                      std::to_string(num_envs) + ")");
+    return absl::InvalidArgumentError(
+        "training config 'body_scales' has " + std::to_string(body_scales.size()) +
+        " entries; it may have at most num_envs (" + std::to_string(num_envs) + ")");
   }
   if (rollout_chunks > num_envs) {
     return absl::InvalidArgumentError(

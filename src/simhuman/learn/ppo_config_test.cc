@@ -19,7 +19,9 @@ std::string Error(const json& j) {
 TEST(PpoConfigTable, DefaultsRoundTripThroughToJsonWithEveryKey) {
   const PpoConfig defaults;
   json j = defaults.ToJson();
-  EXPECT_EQ(j.size(), 40u);  // every key (38 before the table, + target_kl, body_scales)
+  // every key (38 before the table, + target_kl, body_scales, walk_gait)
+  EXPECT_EQ(j.size(), 41u);
+  EXPECT_EQ(j["walk_gait"], "");
   EXPECT_EQ(j["body_scales"], json::array({1.0}));
   EXPECT_EQ(j["target_kl"], 0.0);
   EXPECT_TRUE(j["seed"].is_number_unsigned());

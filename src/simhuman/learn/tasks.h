@@ -15,7 +15,7 @@ namespace simhuman::learn {
 
 /// How a task's environments are built (from the training config).
 struct TaskOptions {
-  std::string solver = "newton";           ///< "newton" or "pgs"
+  std::string solver = "newton";            ///< "newton" or "pgs"
   std::vector<double> body_scales = {1.0};  ///< humans' length scales, spread over the envs
   std::string walk_gait;                    ///< walk: control::WalkGait name
 };

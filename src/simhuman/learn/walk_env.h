@@ -99,7 +99,7 @@ class WalkTask : public VecTask {
   WalkTask() = default;
   void DrawTarget(Env& e);
   std::vector<std::unique_ptr<world::SimWorld>> worlds_;  // one per body scale
-  std::vector<control::WalkIndex> ixs_;                  // per world
+  std::vector<control::WalkIndex> ixs_;                   // per world
   control::WalkParams params_;
   WalkRewardWeights w_;
   std::vector<Env> envs_;

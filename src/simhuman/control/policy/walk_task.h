@@ -52,10 +52,10 @@ struct WalkParams {
   /// target ends up 0.5 m beyond that. 0: every walk follows the near/far blend.
   double short_step_m = 1.5;
   // the reference gait's shape (rad, at full stepping amplitude)
-  double hip_swing_rad = 0.30;    ///< sagittal hip excursion each way at vmax
-  double knee_swing_rad = 0.9;    ///< swing-phase knee flexion (peak added to the nominal)
-  double knee_stance_rad = 0.1;   ///< stance-phase knee flexion (peak added to the nominal)
-  double knee_bend_rad = 0.0;     ///< added to the nominal knee while stepping (-: straighter)
+  double hip_swing_rad = 0.30;   ///< sagittal hip excursion each way at vmax
+  double knee_swing_rad = 0.9;   ///< swing-phase knee flexion (peak added to the nominal)
+  double knee_stance_rad = 0.1;  ///< stance-phase knee flexion (peak added to the nominal)
+  double knee_bend_rad = 0.0;    ///< added to the nominal knee while stepping (-: straighter)
 };
 
 /// The named gaits. A walking policy file records the gait it was trained with
