@@ -407,62 +407,54 @@ core::StatusOr<MotionMetrics> MotionMetricsFromJson(const nlohmann::json& j) {
   return m;
 }
 
+namespace {
+
+// the mean of `member` over `all`, each weighted by `weight(m)`; entries of weight 0 or with an
+// undefined (NaN) value are left out; NaN when none counts
+template <typename Weight>
+double WeightedMean(const std::vector<MotionMetrics>& all, double MotionMetrics::*member,
+                    Weight weight) {
+  double sum = 0, total = 0;
+  for (const MotionMetrics& m : all) {
+    const double w = weight(m), v = m.*member;
+    if (!(w > 0) || !std::isfinite(v)) continue;
+    sum += v * w;
+    total += w;
+  }
+  return total > 0 ? sum / total : NAN;
+}
+
+}  // namespace
+
 MotionMetrics MeanMotionMetrics(const std::vector<MotionMetrics>& all) {
   MotionMetrics out;
   if (all.empty()) return out;
   out.scale = all.front().scale;
-  double w = 0, skate_w = 0, skate = 0, swing_w = 0;
-  double sums[12] = {};
-  double swing_sums[3] = {};
   for (const MotionMetrics& m : all) {
     out.duration_s += m.duration_s;
-    if (std::isfinite(m.foot_skate_mps)) {
-      skate += m.foot_skate_mps * m.duration_s;
-      skate_w += m.duration_s;
-    }
-    if (m.walking_s <= 0) continue;
-    const double v[12] = {m.speed_mps,       m.cadence_spm,     m.step_length_m,
-                          m.stance_knee_deg, m.trunk_pitch_deg, m.head_pitch_deg,
-                          m.arm_swing_deg,   m.arm_swing_m,     m.arm_leg_phase_corr,
-                          m.double_support,  m.pelvis_jerk_rms, 0};
-    for (int k = 0; k < 11; ++k) sums[k] += (std::isfinite(v[k]) ? v[k] : 0) * m.walking_s;
-    w += m.walking_s;
-    out.walking_s += m.walking_s;
+    out.walking_s += std::max(0.0, m.walking_s);
     out.foot_strikes += m.foot_strikes;
-    if (m.swings > 0) {
-      swing_sums[0] += m.swing_knee_peak_deg * m.swings;
-      swing_sums[1] += m.swing_clearance_min_m * m.swings;
-      swing_sums[2] += m.swing_clearance_peak_m * m.swings;
-      swing_w += m.swings;
-      out.swings += m.swings;
-    }
-  }
-  if (skate_w > 0) out.foot_skate_mps = skate / skate_w;
-  if (w > 0) {
-    double* dst[11] = {&out.speed_mps,       &out.cadence_spm,     &out.step_length_m,
-                       &out.stance_knee_deg, &out.trunk_pitch_deg, &out.head_pitch_deg,
-                       &out.arm_swing_deg,   &out.arm_swing_m,     &out.arm_leg_phase_corr,
-                       &out.double_support,  &out.pelvis_jerk_rms};
-    for (int k = 0; k < 11; ++k) *dst[k] = sums[k] / w;
-  }
-  double rise_s = 0, rise_steps = 0;
-  for (const MotionMetrics& m : all) {
-    if (m.rises <= 0) continue;
-    rise_s += m.rise_s * m.rises;
-    rise_steps += m.rise_extra_steps * m.rises;
+    out.swings += m.swings;
     out.rises += m.rises;
     out.rises_staggered += m.rises_staggered;
     out.rises_clean += m.rises_clean;
   }
-  if (out.rises > 0) {
-    out.rise_s = rise_s / out.rises;
-    out.rise_extra_steps = rise_steps / out.rises;
+  using M = MotionMetrics;
+  const auto by_walking = [](const M& m) { return m.walking_s; };
+  for (double M::*f : {&M::speed_mps, &M::cadence_spm, &M::step_length_m, &M::stance_knee_deg,
+                       &M::trunk_pitch_deg, &M::head_pitch_deg, &M::arm_swing_deg, &M::arm_swing_m,
+                       &M::arm_leg_phase_corr, &M::double_support, &M::pelvis_jerk_rms}) {
+    out.*f = WeightedMean(all, f, by_walking);
   }
-  if (swing_w > 0) {
-    out.swing_knee_peak_deg = swing_sums[0] / swing_w;
-    out.swing_clearance_min_m = swing_sums[1] / swing_w;
-    out.swing_clearance_peak_m = swing_sums[2] / swing_w;
+  const auto by_swings = [](const M& m) { return static_cast<double>(m.swings); };
+  for (double M::*f :
+       {&M::swing_knee_peak_deg, &M::swing_clearance_min_m, &M::swing_clearance_peak_m}) {
+    out.*f = WeightedMean(all, f, by_swings);
   }
+  const auto by_rises = [](const M& m) { return static_cast<double>(m.rises); };
+  for (double M::*f : {&M::rise_s, &M::rise_extra_steps}) out.*f = WeightedMean(all, f, by_rises);
+  out.foot_skate_mps =
+      WeightedMean(all, &M::foot_skate_mps, [](const M& m) { return m.duration_s; });
   return out;
 }
 
