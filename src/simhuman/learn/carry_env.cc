@@ -137,6 +137,15 @@ void CarryTask::SetBox(int i, double side_m, double mass_kg, const Eigen::Vector
   control::CarryObservation(d, ix_, e.s, box, obs);
 }
 
+void CarryTask::StartLiftNow(int i, float* obs, double pose_at_s) {
+  Env& e = envs_[i];
+  control::CarryBox box = control::ReadCarryBox(e.m, e.d, box_geom_);
+  control::StartLift(params_, e.m, e.scratch, e.d, ix_, box, &e.s);
+  if (pose_at_s >= 0) control::PoseInLift(e.m, e.d, ix_, pose_at_s, &e.s);
+  control::UpdateWalkCommand(control::WalkParams(), e.d, ix_.walk, &e.s.walk);
+  control::CarryObservation(e.d, ix_, e.s, box, obs);
+}
+
 void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   Env& e = envs_[i];
   e.rng = core::Rng(seed);

@@ -58,6 +58,8 @@ class CarryTask : public VecTask {
   const CarryRewardTerms& last_terms(int i) const { return envs_[i].terms; }
   CarryFailure last_failure(int i) const { return envs_[i].failure; }
   int box_geom() const { return box_geom_; }
+  /// The skill's geometry and servos (probes and tests may change them before Reset).
+  control::CarryParams& params() { return params_; }
   const control::CarryIndex& index() const { return ix_; }
   /// Sets env i's box (cube side, mass), placement and destination, and restarts the carry
   /// (tests and evaluation). The human keeps its pose.
@@ -65,6 +67,11 @@ class CarryTask : public VecTask {
               const Eigen::Vector2d& dest_xy, float* obs);
 
   static constexpr int kMaxSteps = 1200;  ///< 40 s at 30 Hz (training episodes)
+
+  /// Starts env i's lift now from where the human stands (tests and probes; the box must be in
+  /// front of it, e.g. placed by SetBox).
+  /// `pose_at_s` >= 0 poses the human inside the lift at that time (PoseInLift).
+  void StartLiftNow(int i, float* obs, double pose_at_s = -1);
 
   /// Evaluation starts: no episode starts at the box or inside the lift (Reset always walks up
   /// from 1-2 m, up to 5 m at curriculum 1), and episodes are cut after `max_steps` policy steps.

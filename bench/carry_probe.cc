@@ -1,0 +1,205 @@
+// Probe of the carrying skill's lift (issue 17): a human standing at a box's stand point lifts
+// it, with zero action or a policy, and the probe prints what happens (box height, hand forces,
+// centre of mass against the feet) and optionally writes a contact sheet per episode.
+//
+//   build/simhuman_carry_probe [--episodes N] [--seed S] [--side M] [--mass KG]
+//                              [--policy FILE] [--seconds T] [--sheet DIR]
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <torch/torch.h>
+
+#include "simhuman/control/policy/policy_net.h"
+#include "simhuman/learn/carry_env.h"
+#include "simhuman/render/image_io.h"
+#include "simhuman/render/offscreen.h"
+
+namespace sh = simhuman;
+using sh::control::CarryPhase;
+
+namespace {
+
+struct Args {
+  int episodes = 4;
+  uint64_t seed = 1;
+  double side = -1, mass = -1;  // < 0: drawn
+  double seconds = 6;
+  double stand_gap = -1, grasp_frac = -1, hold_rise = -9, hold_gap = -1;
+  double pose_at = -1;  // >= 0: start posed inside the lift at this time (s)
+  std::string policy, sheet;
+};
+
+Args Parse(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    std::string k = argv[i];
+    const char* v = argv[i + 1];
+    if (k == "--episodes") a.episodes = std::atoi(v);
+    else if (k == "--seed") a.seed = std::strtoull(v, nullptr, 10);
+    else if (k == "--side") a.side = std::atof(v);
+    else if (k == "--mass") a.mass = std::atof(v);
+    else if (k == "--seconds") a.seconds = std::atof(v);
+    else if (k == "--policy") a.policy = v;
+    else if (k == "--stand-gap") a.stand_gap = std::atof(v);
+    else if (k == "--grasp-frac") a.grasp_frac = std::atof(v);
+    else if (k == "--hold-rise") a.hold_rise = std::atof(v);
+    else if (k == "--hold-gap") a.hold_gap = std::atof(v);
+    else if (k == "--pose-at") a.pose_at = std::atof(v);
+    else if (k == "--sheet") a.sheet = v;
+    else {
+      std::fprintf(stderr, "unknown option %s\n", k.c_str());
+      std::exit(2);
+    }
+  }
+  return a;
+}
+
+void HandForces(const mjModel* m, const mjData* d, const sh::control::CarryIndex& ix, int box,
+                double* left, double* right) {
+  *left = *right = 0;
+  for (int c = 0; c < d->ncon; ++c) {
+    const mjContact& con = d->contact[c];
+    if (con.geom1 != box && con.geom2 != box) continue;
+    const int other = con.geom1 == box ? con.geom2 : con.geom1;
+    mjtNum f[6];
+    mj_contactForce(m, d, c, f);
+    if (other == ix.left_hand_geom) *left += f[0];
+    if (other == ix.right_hand_geom) *right += f[0];
+  }
+}
+
+// centre of mass minus the feet's middle, along the heading (m)
+double ComAhead(const mjData* d, const sh::control::CarryIndex& ix) {
+  Eigen::Vector3d pos;
+  double yaw;
+  sh::control::PelvisPose(d, ix.walk, &pos, &yaw);
+  const int l = ix.walk.left_foot_geom, r = ix.walk.right_foot_geom;
+  const int pb = ix.walk.agent.pelvis_body;
+  double dx = d->subtree_com[3 * pb] - 0.5 * (d->geom_xpos[3 * l] + d->geom_xpos[3 * r]);
+  double dy = d->subtree_com[3 * pb + 1] - 0.5 * (d->geom_xpos[3 * l + 1] + d->geom_xpos[3 * r + 1]);
+  return std::cos(yaw) * dx + std::sin(yaw) * dy;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Args a = Parse(argc, argv);
+  std::optional<sh::control::LoadedPolicy> pol;
+  if (!a.policy.empty()) {
+    auto p = sh::control::LoadPolicyFile(a.policy);
+    if (!p.ok()) {
+      std::fprintf(stderr, "%s\n", std::string(p.status().message()).c_str());
+      return 1;
+    }
+    pol = std::move(*p);
+  }
+  auto t = sh::learn::CarryTask::Create(1);
+  if (!t.ok()) return 1;
+  (*t)->SetEvaluation(100000);
+  if (a.stand_gap >= 0) (*t)->params().stand_gap_m = a.stand_gap;
+  if (a.grasp_frac >= 0) (*t)->params().grasp_frac = a.grasp_frac;
+  if (a.hold_rise > -9) (*t)->params().hold_rise_m = a.hold_rise;
+  if (a.hold_gap >= 0) (*t)->params().hold_gap_m = a.hold_gap;
+  const auto& ix = (*t)->index();
+  const int od = (*t)->obs_dim(), ad = (*t)->act_dim();
+  std::vector<float> obs(od), act(ad, 0.f);
+  sh::core::Rng rng(a.seed);
+  int lifted = 0, lift_ok = 0;
+  for (int ep = 0; ep < a.episodes; ++ep) {
+    (*t)->Reset(0, a.seed * 1000 + ep, obs.data());
+    const double side = a.side > 0 ? a.side : rng.Uniform(0.25, 0.75);
+    const double mass = a.mass > 0 ? a.mass : rng.Uniform(2.0, 13.0);
+    Eigen::Vector3d pelvis;
+    double yaw;
+    sh::control::PelvisPose((*t)->data(0), ix.walk, &pelvis, &yaw);
+    const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
+    const sh::control::CarryParams params = (*t)->params();
+    Eigen::Vector3d box_pos = pelvis + (params.stand_gap_m + 0.5 * side) * fwd;
+    box_pos.z() = 0;
+    (*t)->SetBox(0, side, mass, box_pos, yaw, (box_pos + 2.0 * fwd).head<2>(), obs.data());
+    (*t)->StartLiftNow(0, obs.data(), a.pose_at);
+    const mjModel* m = (*t)->model(0);
+    std::unique_ptr<sh::render::OffscreenRenderer> r;
+    std::vector<std::vector<uint8_t>> frames;
+    constexpr int kW = 320, kH = 240;
+    if (!a.sheet.empty()) {
+      auto made = sh::render::OffscreenRenderer::Create(m, kW, kH);
+      if (made.ok()) r = std::move(*made);
+    }
+    std::printf("ep %d: side %.2f m, mass %.1f kg, ik error %.3f m\n", ep, side, mass,
+                (*t)->state(0).poses.ik_error_m);
+    double max_low = 0;
+    std::string end = "time";
+    const int steps = static_cast<int>(a.seconds * 30);
+    for (int k = 0; k < steps; ++k) {
+      if (pol) {
+        torch::NoGradGuard ng;
+        torch::Tensor o = torch::from_blob(obs.data(), {1, od}).narrow(1, 0, pol->meta.obs_dim);
+        torch::Tensor ac = pol->actor->forward(pol->norm.Normalize(o)).contiguous();
+        std::copy(ac.data_ptr<float>(), ac.data_ptr<float>() + ad, act.begin());
+        // a walking policy never trained its arm outputs: they stay zero
+        if (pol->meta.obs_dim != od) {
+          for (int j = 0; j < ad; ++j) {
+            if (!sh::control::WalkActionUsed(j)) act[j] = 0.f;
+          }
+        }
+      }
+      sh::learn::StepInfo info;
+      const CarryPhase before = (*t)->state(0).phase;
+      (*t)->Step(0, act.data(), obs.data(), &info);
+      if (before == CarryPhase::kLift && (*t)->state(0).phase == CarryPhase::kCarry) {
+        const mjData* d = (*t)->data(0);
+        const auto box = sh::control::ReadCarryBox(m, d, (*t)->box_geom());
+        double fl, fr;
+        HandForces(m, d, ix, (*t)->box_geom(), &fl, &fr);
+        const bool ok = sh::control::BoxLowestZ(box) > 0.05 && fl > 5 && fr > 5 &&
+                        d->xpos[3 * ix.walk.agent.pelvis_body + 2] > 0.8;
+        lift_ok += ok;
+        std::printf("  lift end: box low %.3f, hands %.0f %.0f N, pelvis z %.2f, tilt %.0f deg: %s\n",
+                    sh::control::BoxLowestZ(box), fl, fr,
+                    d->xpos[3 * ix.walk.agent.pelvis_body + 2],
+                    std::acos(std::min(1.0, box.rot(2, 2))) * 180 / M_PI, ok ? "LIFTED" : "no");
+      }
+      const mjData* d = (*t)->data(0);
+      const auto box = sh::control::ReadCarryBox(m, d, (*t)->box_geom());
+      const double low = sh::control::BoxLowestZ(box);
+      if ((*t)->state(0).phase == CarryPhase::kCarry) max_low = std::max(max_low, low);
+      if (k % 8 == 0 || info.terminated) {
+        double fl, fr;
+        HandForces(m, d, ix, (*t)->box_geom(), &fl, &fr);
+        std::printf("  t %.2f %-8s pelvis z %.2f  box low %.3f  hands %4.0f %4.0f N  com ahead %+.3f\n",
+                    d->time, sh::control::CarryPhaseName((*t)->state(0).phase),
+                    d->xpos[3 * ix.walk.agent.pelvis_body + 2], low, fl, fr, ComAhead(d, ix));
+      }
+      if (r && k % 8 == 0) {
+        sh::render::CameraSpec cam;
+        cam.lookat = Eigen::Vector3d(box_pos.x(), box_pos.y(), 0.6) - 0.3 * fwd;
+        cam.distance_m = 2.8;
+        cam.azimuth_deg = yaw * 180 / M_PI + 90 + 30;
+        cam.elevation_deg = -12;
+        std::vector<uint8_t> rgb;
+        char cap[48];
+        std::snprintf(cap, sizeof(cap), "%.1f s %s", d->time,
+                      sh::control::CarryPhaseName((*t)->state(0).phase));
+        if (r->Render(d, cam, &rgb, cap).ok()) frames.push_back(std::move(rgb));
+      }
+      if (info.terminated) {
+        end = sh::learn::CarryFailureName((*t)->last_failure(0));
+        break;
+      }
+    }
+    lifted += max_low > 0.05 && end == "time";
+    std::printf("  end: %s, box highest in carry %.3f m\n", end.c_str(), max_low);
+    if (!frames.empty()) {
+      (void)sh::render::WriteContactSheet(a.sheet + "/lift" + std::to_string(ep) + ".png", frames,
+                                          kW, kH, 6);
+    }
+  }
+  std::printf("lift stage ok: %d / %d; lifted and standing to the end: %d / %d\n", lift_ok,
+              a.episodes, lifted, a.episodes);
+  return 0;
+}
