@@ -4,14 +4,14 @@
 //
 //   build/simhuman_carry_probe [--episodes N] [--seed S] [--side M] [--mass KG]
 //                              [--policy FILE] [--seconds T] [--sheet DIR]
+#include <torch/torch.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
-
-#include <torch/torch.h>
 
 #include "simhuman/control/policy/policy_net.h"
 #include "simhuman/learn/carry_env.h"
@@ -38,18 +38,30 @@ Args Parse(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; i += 2) {
     std::string k = argv[i];
     const char* v = argv[i + 1];
-    if (k == "--episodes") a.episodes = std::atoi(v);
-    else if (k == "--seed") a.seed = std::strtoull(v, nullptr, 10);
-    else if (k == "--side") a.side = std::atof(v);
-    else if (k == "--mass") a.mass = std::atof(v);
-    else if (k == "--seconds") a.seconds = std::atof(v);
-    else if (k == "--policy") a.policy = v;
-    else if (k == "--stand-gap") a.stand_gap = std::atof(v);
-    else if (k == "--grasp-frac") a.grasp_frac = std::atof(v);
-    else if (k == "--hold-rise") a.hold_rise = std::atof(v);
-    else if (k == "--hold-gap") a.hold_gap = std::atof(v);
-    else if (k == "--pose-at") a.pose_at = std::atof(v);
-    else if (k == "--sheet") a.sheet = v;
+    if (k == "--episodes")
+      a.episodes = std::atoi(v);
+    else if (k == "--seed")
+      a.seed = std::strtoull(v, nullptr, 10);
+    else if (k == "--side")
+      a.side = std::atof(v);
+    else if (k == "--mass")
+      a.mass = std::atof(v);
+    else if (k == "--seconds")
+      a.seconds = std::atof(v);
+    else if (k == "--policy")
+      a.policy = v;
+    else if (k == "--stand-gap")
+      a.stand_gap = std::atof(v);
+    else if (k == "--grasp-frac")
+      a.grasp_frac = std::atof(v);
+    else if (k == "--hold-rise")
+      a.hold_rise = std::atof(v);
+    else if (k == "--hold-gap")
+      a.hold_gap = std::atof(v);
+    else if (k == "--pose-at")
+      a.pose_at = std::atof(v);
+    else if (k == "--sheet")
+      a.sheet = v;
     else {
       std::fprintf(stderr, "unknown option %s\n", k.c_str());
       std::exit(2);
@@ -80,7 +92,8 @@ double ComAhead(const mjData* d, const sh::control::CarryIndex& ix) {
   const int l = ix.walk.left_foot_geom, r = ix.walk.right_foot_geom;
   const int pb = ix.walk.agent.pelvis_body;
   double dx = d->subtree_com[3 * pb] - 0.5 * (d->geom_xpos[3 * l] + d->geom_xpos[3 * r]);
-  double dy = d->subtree_com[3 * pb + 1] - 0.5 * (d->geom_xpos[3 * l + 1] + d->geom_xpos[3 * r + 1]);
+  double dy =
+      d->subtree_com[3 * pb + 1] - 0.5 * (d->geom_xpos[3 * l + 1] + d->geom_xpos[3 * r + 1]);
   return std::cos(yaw) * dx + std::sin(yaw) * dy;
 }
 
@@ -159,10 +172,10 @@ int main(int argc, char** argv) {
         const bool ok = sh::control::BoxLowestZ(box) > 0.05 && fl > 5 && fr > 5 &&
                         d->xpos[3 * ix.walk.agent.pelvis_body + 2] > 0.8;
         lift_ok += ok;
-        std::printf("  lift end: box low %.3f, hands %.0f %.0f N, pelvis z %.2f, tilt %.0f deg: %s\n",
-                    sh::control::BoxLowestZ(box), fl, fr,
-                    d->xpos[3 * ix.walk.agent.pelvis_body + 2],
-                    std::acos(std::min(1.0, box.rot(2, 2))) * 180 / M_PI, ok ? "LIFTED" : "no");
+        std::printf(
+            "  lift end: box low %.3f, hands %.0f %.0f N, pelvis z %.2f, tilt %.0f deg: %s\n",
+            sh::control::BoxLowestZ(box), fl, fr, d->xpos[3 * ix.walk.agent.pelvis_body + 2],
+            std::acos(std::min(1.0, box.rot(2, 2))) * 180 / M_PI, ok ? "LIFTED" : "no");
       }
       const mjData* d = (*t)->data(0);
       const auto box = sh::control::ReadCarryBox(m, d, (*t)->box_geom());
@@ -171,9 +184,10 @@ int main(int argc, char** argv) {
       if (k % 8 == 0 || info.terminated) {
         double fl, fr;
         HandForces(m, d, ix, (*t)->box_geom(), &fl, &fr);
-        std::printf("  t %.2f %-8s pelvis z %.2f  box low %.3f  hands %4.0f %4.0f N  com ahead %+.3f\n",
-                    d->time, sh::control::CarryPhaseName((*t)->state(0).phase),
-                    d->xpos[3 * ix.walk.agent.pelvis_body + 2], low, fl, fr, ComAhead(d, ix));
+        std::printf(
+            "  t %.2f %-8s pelvis z %.2f  box low %.3f  hands %4.0f %4.0f N  com ahead %+.3f\n",
+            d->time, sh::control::CarryPhaseName((*t)->state(0).phase),
+            d->xpos[3 * ix.walk.agent.pelvis_body + 2], low, fl, fr, ComAhead(d, ix));
       }
       if (r && k % 8 == 0) {
         sh::render::CameraSpec cam;

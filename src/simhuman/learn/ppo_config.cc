@@ -105,6 +105,15 @@ absl::Status PpoConfig::Validate() const {
         "training config: body_scales other than [1] apply to the walk task only; task is '" +
         task + "'");
   }
+  // AMP compares the agent's motion with the clips in metres and seconds; a scaled body's
+  // transitions are not Froude-normalised to the clips' adult, so the discriminator would
+  // judge size instead of style
+  if (!amp_clips.empty() &&
+      std::any_of(body_scales.begin(), body_scales.end(), [](double s) { return s != 1.0; })) {
+    return absl::InvalidArgumentError(
+        "training config: body_scales other than [1] cannot be combined with amp_clips (AMP's "
+        "clips are one adult's motion, not scaled to the bodies); drop one of the two");
+  }
   if (!walk_gait.empty() && !TaskHasBodyScales(task)) {
     return absl::InvalidArgumentError("training config: walk_gait '" + walk_gait +
                                       "' applies to the walk task only; task is '" + task + "'");

@@ -54,6 +54,8 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
             "valid range [0.5, 1.5]");
   EXPECT_THAT(Error(json{{"body_scales", json::array()}}), HasSubstr("at least 1 entry"));
   EXPECT_THAT(Error(json{{"body_scales", {1, "big"}}}), HasSubstr("/body_scales/1"));
+  EXPECT_THAT(Error(json{{"body_scales", {0.8, 1.0}}, {"amp_clips", {"a.bvh"}}}),
+              HasSubstr("body_scales other than [1] cannot be combined with amp_clips"));
   EXPECT_EQ(Error(json{{"task", "carry"}, {"body_scales", {0.8, 1.0}}}),
             "training config: body_scales other than [1] apply to the walk task only; task is "
             "'carry'");
