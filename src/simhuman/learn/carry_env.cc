@@ -197,14 +197,11 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   SetBox(i, side, mass, Eigen::Vector3d(0, 0, 0), box_yaw,
          dest_dist * Eigen::Vector2d(std::cos(dest_dir), std::sin(dest_dir)), obs);
   if (at_box) {
-    control::CarryBox box = control::ReadCarryBox(e.m, d, box_geom_);
-    control::StartLift(params_, e.m, e.scratch, d, ix_, box, &e.s);
     // and some of them part-way down into the squat (reference-state initialisation)
-    if (e.rng.Uniform() < kStartInSquatFraction) {
-      control::PoseInLift(e.m, d, ix_, e.rng.Uniform(0.0, control::LiftRiseStartSeconds()), &e.s);
-    }
-    control::UpdateWalkCommand(control::WalkParams(), d, ix_.walk, &e.s.walk);
-    control::CarryObservation(d, ix_, e.s, box, obs);
+    const double pose_at = e.rng.Uniform() < kStartInSquatFraction
+                               ? e.rng.Uniform(0.0, control::LiftRiseStartSeconds())
+                               : -1.0;
+    StartLiftNow(i, obs, pose_at);
   }
 }
 
