@@ -110,6 +110,14 @@ CLI::App* AddRunCommand(CLI::App& app, RunFlags* run, CLI::Option** preset) {
   run_cmd->add_flag("--no-walk", run->no_walk, "Do get-close steps with the MPC only");
   run_cmd->add_option("--carry-policy", run->carry_policy,
                       "Carrying policy for carry steps (default assets/policies/carry.pt)");
+  run_cmd
+      ->add_option("--perception", run->perception,
+                   "Tabletop plans: truth (the objects' true state) or vision (the head camera)")
+      ->check(CLI::IsMember({"truth", "vision"}))
+      ->capture_default_str();
+  run_cmd->add_option("--vision-model", run->vision_model,
+                      "Tabletop plans with --perception vision: model file (default "
+                      "assets/vision/vision.pt)");
   run_cmd->add_option("--grasp-policy", run->grasp_policy,
                       "Tabletop plans: grasp policy file or 'scripted' (default "
                       "assets/policies/grasp.pt if present, else scripted)");
@@ -149,6 +157,15 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
   eval_cmd->add_option("--grasp-policy", ev->grasp_policy,
                        "tabletop, place, stack: grasp policy file or 'scripted' (default "
                        "assets/policies/grasp.pt if present, else scripted)");
+  eval_cmd->add_option("--vision-model", ev->vision_model,
+                       "vision suite, --perception vision: model file (default "
+                       "assets/vision/vision.pt)");
+  eval_cmd
+      ->add_option("--perception", ev->perception,
+                   "tabletop, place, stack: truth (the objects' true state) or vision (the "
+                   "head camera)")
+      ->check(CLI::IsMember({"truth", "vision"}))
+      ->capture_default_str();
   eval_cmd->add_flag("--video", ev->video, "walk suite: also write MP4s of rendered episodes");
   eval_cmd
       ->add_option("--physics-solver", ev->physics_solver,
@@ -190,8 +207,9 @@ CLI::App* AddTrainCommand(CLI::App& app, TrainFlags* tf, CLI::Option** steps, CL
   std::string tasks;
   for (const std::string& t : learn::TaskNames()) tasks += (tasks.empty() ? "" : ", ") + t;
   train_cmd
-      ->add_option("--task", tf->task,
-                   "Task: one of " + tasks + " (default: the --config file's task, else walk)")
+      ->add_option(
+          "--task", tf->task,
+          "Task: one of " + tasks + ", vision (default: the --config file's task, else walk)")
       ->each([tf](const std::string&) { tf->task_given = true; });
   *steps = train_cmd->add_option("--steps", tf->steps, "Total env steps (30M, 500k)")
                ->capture_default_str();

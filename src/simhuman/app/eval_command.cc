@@ -12,6 +12,7 @@
 #include "simhuman/app/common.h"
 #include "simhuman/app/planner_factory.h"
 #include "simhuman/app/tabletop_eval_command.h"
+#include "simhuman/app/vision_command.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/eval_job.h"
 #include "simhuman/eval/eval_runner.h"
@@ -336,6 +337,8 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
   if (suite->controller == eval::SuiteController::kTabletop) {
     return TabletopEvalCommand(flags, out, err);
   }
+  if (suite->controller == eval::SuiteController::kVision)
+    return VisionEvalCommand(flags, out, err);
   if (suite->controller == eval::SuiteController::kWalkPolicy) {
     if (flags.episodes < 1) {
       return ReportError(err, kCommand, absl::InvalidArgumentError("--episodes must be >= 1"));

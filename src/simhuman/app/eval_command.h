@@ -35,6 +35,11 @@ struct EvalFlags {
   /// Tabletop suites: a grasp policy file, or "scripted"; empty: assets/policies/grasp.pt when
   /// it exists, else "scripted".
   std::string grasp_policy;
+  /// Tabletop suites: "truth" or "vision" (the head camera and the vision model).
+  std::string perception = "truth";
+  /// The vision suite and --perception vision: a model file (simhuman train --task vision); empty:
+  /// the shipped one.
+  std::string vision_model;
 };
 
 /// Runs the suite: a table row per finished episode and a summary table on `out`, files as

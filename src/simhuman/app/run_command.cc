@@ -8,6 +8,7 @@
 #include "absl/strings/str_split.h"
 #include "simhuman/app/common.h"
 #include "simhuman/app/plan_command.h"
+#include "simhuman/app/vision_command.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/motion_metrics.h"
 #include "simhuman/eval/reachability.h"
@@ -106,6 +107,14 @@ nlohmann::ordered_json MotionJson(const world::SimWorld& sim, const control::Tra
 
 }  // namespace
 
+namespace {
+// the vision model a tabletop run plans and watches with ("" without --perception vision)
+std::string VisionModelFor(const RunFlags& f) {
+  if (f.perception != "vision") return "";
+  return f.vision_model.empty() ? DefaultVisionModel() : f.vision_model;
+}
+}  // namespace
+
 int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   // flags that need no files
   if (flags.plan.empty() == flags.command.empty()) {
@@ -192,8 +201,10 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   if (eval::IsTabletopRun(*chain, **sim)) {
     // seated at the table with a dexterous hand: DASH's pipeline instead of the MPC
     grasp_policy = eval::DefaultGraspPolicy(flags.grasp_policy);
-    out << "tabletop pipeline, grasping with " << grasp_policy << std::endl;
-    run_result = eval::RunTabletopPlan(**sim, *chain, grasp_policy, &trajectory);
+    out << "tabletop pipeline, grasping with " << grasp_policy << ", perception "
+        << flags.perception << std::endl;
+    run_result =
+        eval::RunTabletopPlan(**sim, *chain, grasp_policy, &trajectory, VisionModelFor(flags));
   } else {
     run_result = eval::RunWithWalkPolicy(**sim, *chain, *controllers, walk_policy, options,
                                          &trajectory, carry_policy);

@@ -33,6 +33,10 @@ struct RunFlags {
   /// Tabletop plans (a seated human with a dexterous hand): grasp policy file or "scripted";
   /// empty: assets/policies/grasp.pt when it exists, else "scripted".
   std::string grasp_policy;
+  /// Tabletop plans: "truth" (the objects' true state) or "vision" (the head camera and
+  /// `vision_model`, empty: assets/vision/vision.pt).
+  std::string perception = "truth";
+  std::string vision_model;
   /// "X,Y" or "X,Y,YAW_DEG": where the first human starts, standing (overrides the scene's).
   std::string start;
 };

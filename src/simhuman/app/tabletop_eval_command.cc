@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "simhuman/app/common.h"
+#include "simhuman/app/vision_command.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/tabletop_eval.h"
 
@@ -29,12 +30,16 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   o.episodes = flags.episodes;
   o.seed = flags.seed;
   o.grasp = eval::DefaultGraspPolicy(flags.grasp_policy);
+  o.perception = flags.perception;
+  o.vision_model = flags.vision_model.empty() ? DefaultVisionModel() : flags.vision_model;
   const std::string dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
   absl::Status made = MakeOutputDir(dir);
   if (!made.ok()) return ReportError(err, kCommand, made);
   std::ofstream lines(dir + "/episodes.jsonl", std::ios::trunc);
   out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes, seed "
-      << o.seed << ", grasp " << o.grasp << " -> " << dir << std::endl;
+      << o.seed << ", grasp " << o.grasp << ", perception " << o.perception
+      << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string()) << " -> " << dir
+      << std::endl;
   out << "  ep kind   object        shape     ok   failed at    steps wall_s  end" << std::endl;
   core::StatusOr<eval::TabletopEvalSummary> s =
       eval::RunTabletopEval(o, [&](const eval::TabletopEpisode& e) {
@@ -46,6 +51,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   summary["suite"] = flags.suite;
   summary["seed"] = o.seed;
   summary["grasp"] = o.grasp;
+  if (o.perception == "vision") summary["vision_model"] = o.vision_model;
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) summary[key] = value;
   absl::Status ws = eval::WriteJsonFile(dir + "/summary.json", summary);
@@ -59,6 +65,17 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
                 s->episodes, s->steps_per_s, s->raw_steps_per_s,
                 s->raw_steps_per_s > 0 ? s->steps_per_s / s->raw_steps_per_s : 0.0);
   out << buf << std::endl;
+  std::snprintf(buf, sizeof(buf), "simulated %.1f s in %.1f s of wall time (%.2fx real time)",
+                s->sim_s, s->wall_s, s->wall_s > 0 ? s->sim_s / s->wall_s : 0.0);
+  out << buf << std::endl;
+  if (o.perception == "vision") {
+    std::snprintf(buf, sizeof(buf),
+                  "vision: %d frames, %.2f ms inference + %.2f ms rendering per frame; %d "
+                  "perception failures",
+                  s->vision_frames, s->vision_ms_per_frame, s->render_ms_per_frame,
+                  s->perception_failures);
+    out << buf << std::endl;
+  }
   for (const auto& [stage, n] : s->failures_by_stage) {
     out << "  failed at " << stage << ": " << n << std::endl;
   }

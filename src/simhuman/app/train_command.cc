@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "simhuman/app/common.h"
+#include "simhuman/app/vision_command.h"
 #include "simhuman/core/version.h"
 #include "simhuman/learn/ppo.h"
 
@@ -80,6 +81,7 @@ absl::Status ParseStepCount(const std::string& text, int64_t* out) {
 
 int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err,
                  core::Communicator& comm) {
+  if (flags.task == "vision") return VisionTrainCommand(flags, out, err);
   int64_t steps = 0;
   if (flags.steps_given || flags.resume.empty()) {
     absl::Status s = ParseStepCount(flags.steps, &steps);

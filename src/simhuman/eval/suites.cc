@@ -290,6 +290,8 @@ const std::vector<SuiteDef>& Suites() {
        "DASH's benchmark: place or stack a table object, seated, one dexterous hand"},
       {"place", C::kTabletop, X::kNone, nullptr, "DASH's place tasks alone"},
       {"stack", C::kTabletop, X::kNone, nullptr, "DASH's stack tasks alone"},
+      {"vision", C::kVision, X::kNone, nullptr,
+       "egocentric vision: DASH Table 2's metrics at planning and while placing/stacking"},
       {"language", C::kPlanner, X::kNone, nullptr, "the command corpus through a planner"},
   };
   return suites;

@@ -63,6 +63,7 @@ enum class SuiteController {
   kPlanner,      ///< commands through a planner, no simulation (eval/language_suite.h)
   kCarryPolicy,  ///< the carrying policy on CooHOI's protocol (learn/carry_eval.h)
   kTabletop,     ///< DASH's pick-and-place pipeline on generated tables (eval/tabletop_eval.h)
+  kVision,       ///< the vision module on held-out tables (eval/vision_eval.h)
 };
 
 /// Draws one episode of a plan suite into `spec` (scene, plan, variant, object_id, joint) from

@@ -7,6 +7,7 @@
 #include "simhuman/control/manip/tabletop_pipeline.h"
 #include "simhuman/control/policy/grasp_policy.h"
 #include "simhuman/core/rng.h"
+#include "simhuman/eval/tabletop_vision.h"
 #include "simhuman/world/objects.h"
 #include "simhuman/world/scene.h"
 #include "simhuman/world/seating.h"
@@ -15,6 +16,11 @@
 namespace simhuman::eval {
 
 using control::manip::GraspShape;
+
+const std::vector<std::string>& PerceptionNames() {
+  static const std::vector<std::string> k = {"truth", "vision"};
+  return k;
+}
 
 core::StatusOr<control::manip::TabletopGoal> TabletopSceneGoal(const world::TabletopScene& ts,
                                                                const world::SimWorld& w) {
@@ -106,7 +112,13 @@ nlohmann::json TabletopEvalSummary::ToJson() const {
           {"success_rate_excluding_plan_failures", success_rate_no_plan_fail},
           {"failures_by_stage", failures_by_stage},
           {"pipeline_steps_per_s", steps_per_s},
-          {"raw_mj_step_steps_per_s", raw_steps_per_s}};
+          {"raw_mj_step_steps_per_s", raw_steps_per_s},
+          {"real_time_factor", wall_s > 0 ? sim_s / wall_s : 0.0},
+          {"perception", perception},
+          {"perception_failures", perception_failures},
+          {"vision_frames", vision_frames},
+          {"vision_ms_per_frame", vision_ms_per_frame},
+          {"render_ms_per_frame", render_ms_per_frame}};
 }
 
 nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
@@ -126,6 +138,12 @@ nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
 core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     const TabletopEvalOptions& o, const std::function<void(const TabletopEpisode&)>& on_episode) {
   if (o.episodes < 1) return absl::InvalidArgumentError("--episodes must be >= 1");
+  const std::vector<std::string>& kinds = PerceptionNames();
+  if (std::find(kinds.begin(), kinds.end(), o.perception) == kinds.end()) {
+    return absl::InvalidArgumentError("--perception '" + o.perception +
+                                      "' is unknown; valid: " + core::JoinNames(kinds));
+  }
+  std::unique_ptr<TabletopVision> vision;
   SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
                       control::LoadGraspPolicy(o.grasp));
   const control::manip::TabletopOptions pipeline;  // named: GCC 12 misreads a default temporary
@@ -146,10 +164,29 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(*w, 0, true));
     SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopSceneGoal(ts, *w));
     if (i == 0) raw = RawStepsPerSecond(w->model(), w->data());
-    const control::manip::GraspPolicyFn grasp =
-        make_grasp(w->model(), w->data(), ix, goal, pipeline);
-    const control::manip::TabletopResult r =
-        control::manip::RunTabletop(*w, ix, goal, grasp, pipeline);
+    control::manip::TabletopResult r;
+    control::manip::StepHook hook;
+    core::Status seen = absl::OkStatus();
+    if (o.perception == "vision") {
+      if (!vision) {
+        SH_ASSIGN_OR_RETURN(vision, TabletopVision::Create(o.vision_model, w->model()));
+      }
+      seen = vision->Begin(*w, catalog, ts.task.object_id, ts.task.target_id, &goal);
+      if (!seen.ok() && !absl::IsNotFound(seen)) return seen;
+      hook = [&](const mjData* d) {
+        if (core::Status s = vision->OnStep(d); !s.ok()) seen = s;
+      };
+    }
+    if (seen.ok()) {
+      const control::manip::GraspPolicyFn grasp =
+          make_grasp(w->model(), w->data(), ix, goal, pipeline);
+      r = control::manip::RunTabletop(*w, ix, goal, grasp, pipeline, hook);
+      if (!seen.ok()) return seen;  // the renderer failed mid-episode
+    } else {
+      ++sum.perception_failures;
+      r.failed_stage = control::manip::TabletopStage::kReach;
+      r.end_reason = "perception failure: " + std::string(seen.message());
+    }
     TabletopEpisode e;
     e.index = i;
     e.seed = seed;
@@ -160,7 +197,9 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
                                                     : "sphere";
     e.success = r.success;
     e.plan_failure = r.plan_failure;
-    e.failed_stage = r.success ? "" : control::manip::TabletopStageName(r.failed_stage);
+    e.failed_stage = r.success    ? ""
+                     : !seen.ok() ? "perception"
+                                  : control::manip::TabletopStageName(r.failed_stage);
     e.end_reason = r.end_reason;
     e.sim_steps = r.sim_steps;
     e.wall_s = r.wall_s;
@@ -174,6 +213,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     t.plan_failures += r.plan_failure;
     steps += r.sim_steps;
     wall += r.wall_s;
+    sum.sim_s += r.sim_steps * w->model()->opt.timestep;
     if (on_episode) on_episode(e);
   }
   sum.success_rate = static_cast<double>(sum.successes) / sum.episodes;
@@ -181,6 +221,13 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   sum.success_rate_no_plan_fail = no_plan > 0 ? static_cast<double>(sum.successes) / no_plan : 0;
   sum.steps_per_s = wall > 0 ? steps / wall : 0;
   sum.raw_steps_per_s = raw;
+  sum.wall_s = wall;
+  sum.perception = o.perception;
+  if (vision) {
+    sum.vision_frames = vision->frames();
+    sum.vision_ms_per_frame = vision->frames() ? 1000 * vision->vision_s() / vision->frames() : 0;
+    sum.render_ms_per_frame = vision->frames() ? 1000 * vision->render_s() / vision->frames() : 0;
+  }
   return sum;
 }
 
@@ -256,8 +303,20 @@ bool IsTabletopRun(const plan::ContactChain& chain, const world::SimWorld& w) {
 core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
                                                        const plan::ContactChain& chain,
                                                        const std::string& grasp_policy,
-                                                       control::Trajectory* trajectory) {
+                                                       control::Trajectory* trajectory,
+                                                       const std::string& vision_model) {
   SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopGoalFromPlan(chain, w));
+  std::unique_ptr<TabletopVision> vision;
+  if (!vision_model.empty()) {
+    SH_ASSIGN_OR_RETURN(vision, TabletopVision::Create(vision_model, w.model()));
+    const plan::ContactPair& held = chain.steps[0].pairs[0];
+    std::string support;
+    for (const plan::ContactPair& p : chain.steps[1].pairs) {
+      if (p.subject_object && *p.subject_object == held.object) support = p.object;
+    }
+    SH_RETURN_IF_ERROR(vision->Begin(w, w.catalog(), held.object, support, &goal));
+  }
+  core::Status seen = absl::OkStatus();
   SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(w, 0, true));
   const control::manip::TabletopOptions options;
   SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
@@ -270,6 +329,9 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
   }
   double next_frame = w.data()->time;
   const control::manip::StepHook hook = [&](const mjData* d) {
+    if (vision) {
+      if (core::Status s = vision->OnStep(d); !s.ok() && seen.ok()) seen = s;
+    }
     if (!trajectory || d->time + 1e-9 < next_frame) return;
     next_frame += 1.0 / trajectory->fps;
     trajectory->time_s.push_back(d->time);
@@ -281,6 +343,7 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
   const double t0 = w.data()->time;
   const control::manip::TabletopResult r =
       control::manip::RunTabletop(w, ix, goal, grasp, options, hook);
+  SH_RETURN_IF_ERROR(seen);
   control::EpisodeResult out;
   out.success = r.success;
   out.steps_total = static_cast<int>(chain.steps.size());

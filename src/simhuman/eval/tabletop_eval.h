@@ -28,7 +28,14 @@ struct TabletopEvalOptions {
   /// A grasp policy file (simhuman train --task grasp), or "scripted" for the training-free
   /// grasp.
   std::string grasp = "scripted";
+  /// "truth": the pipeline reads the objects' true state; "vision": the head camera and the
+  /// vision model `vision_model` (eval/tabletop_vision.h).
+  std::string perception = "truth";
+  std::string vision_model;
 };
+
+/// The --perception values.
+const std::vector<std::string>& PerceptionNames();
 
 struct TabletopEpisode {
   int index = 0;
@@ -55,7 +62,12 @@ struct TabletopEvalSummary {
   /// sphere policy "for qualitative demonstrations only", Appendix A.3.5, so its 200-scene
   /// numbers move boxes and cylinders; spheres stay in its scenes as other objects).
   Tally DashTally(const std::string& kind) const;
-  double steps_per_s = 0;      ///< the whole pipeline (planning, policy, physics), no rendering
+  double steps_per_s = 0;        ///< the whole pipeline (planning, policy, physics, vision)
+  double sim_s = 0, wall_s = 0;  ///< simulated and wall time of the pipelines (real-time factor)
+  std::string perception = "truth";
+  int perception_failures = 0;  ///< vision: the task's objects not seen at task planning
+  int vision_frames = 0;
+  double vision_ms_per_frame = 0, render_ms_per_frame = 0;
   double raw_steps_per_s = 0;  ///< mj_step alone on the same model, same run
   nlohmann::json ToJson() const;
 };
@@ -89,13 +101,15 @@ core::StatusOr<control::manip::TabletopGoal> TabletopGoalFromPlan(const plan::Co
 /// hands to the pipeline instead of the MPC.
 bool IsTabletopRun(const plan::ContactChain& chain, const world::SimWorld& world);
 
-/// Runs a tabletop plan through the pipeline (`grasp_policy`: a file or "scripted"), recording
+/// Runs a tabletop plan through the pipeline (`grasp_policy`: a file or "scripted"; a non-empty
+/// `vision_model`: the head camera plans and watches, eval/tabletop_vision.h), recording
 /// `trajectory` at 30 frames/s (step 0 until the grasp holds, then step 1). The result reads as
 /// an episode's: success, steps completed, the pipeline's end reason. Errors: the plan
 /// (TabletopGoalFromPlan), an unloadable policy.
 core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& world,
                                                        const plan::ContactChain& chain,
                                                        const std::string& grasp_policy,
-                                                       control::Trajectory* trajectory);
+                                                       control::Trajectory* trajectory,
+                                                       const std::string& vision_model = "");
 
 }  // namespace simhuman::eval

@@ -91,6 +91,10 @@ int AutoFontScale(int height) {
 }  // namespace
 
 absl::Status RendererOptions::Validate() const {
+  if (!(fovy_deg == 0 || (fovy_deg >= 1 && fovy_deg <= 170))) {
+    return absl::InvalidArgumentError(absl::StrCat("RendererOptions.fovy_deg is ", fovy_deg,
+                                                   "; valid are 0 (the model's) or 1..170"));
+  }
   if (msaa_samples < -1 || msaa_samples > 64) {
     return absl::InvalidArgumentError(
         absl::StrCat("RendererOptions.msaa_samples is ", msaa_samples,
@@ -137,42 +141,65 @@ absl::StatusOr<std::unique_ptr<OffscreenRenderer>> OffscreenRenderer::Create(
                                                    max_size, " of ", r->gl_renderer()));
   }
 
+  mjv_defaultOption(&r->vis_options_);
+  if (absl::Status s = r->LoadModel(m, max_samples); !s.ok()) return s;
+  r->bottom_up_.resize(static_cast<size_t>(width) * height * 3);
+  if (options.sky) r->depth_.resize(static_cast<size_t>(width) * height);
+  return r;
+}
+
+absl::Status OffscreenRenderer::LoadModel(const mjModel* m, int max_samples) {
   // own a copy whose offscreen buffer matches the image
-  r->model_ = mj_copyModel(nullptr, m);
-  if (r->model_ == nullptr) {
+  model_ = mj_copyModel(nullptr, m);
+  if (model_ == nullptr) {
     return absl::ResourceExhaustedError("OffscreenRenderer: mj_copyModel failed");
   }
-  r->model_->vis.global.offwidth = width;
-  r->model_->vis.global.offheight = height;
-  int samples =
-      options.msaa_samples >= 0 ? options.msaa_samples : r->model_->vis.quality.offsamples;
-  r->model_->vis.quality.offsamples = std::clamp(samples, 0, std::max<int>(max_samples, 0));
+  model_->vis.global.offwidth = width_;
+  model_->vis.global.offheight = height_;
+  int samples = options_.msaa_samples >= 0 ? options_.msaa_samples : model_->vis.quality.offsamples;
+  if (options_.fovy_deg > 0) model_->vis.global.fovy = static_cast<float>(options_.fovy_deg);
+  model_->vis.quality.offsamples = std::clamp(samples, 0, std::max<int>(max_samples, 0));
 
   // shadows need a light that casts them: every light of the snapshot does (before
   // mjr_makeContext, which reads the shadow settings once)
-  if (options.shadows) {
-    for (int l = 0; l < r->model_->nlight; ++l) r->model_->light_castshadow[l] = 1;
+  if (options_.shadows) {
+    for (int l = 0; l < model_->nlight; ++l) model_->light_castshadow[l] = 1;
   }
-  mjv_defaultOption(&r->vis_options_);
-  mjv_defaultScene(&r->scene_);
-  mjv_makeScene(r->model_, &r->scene_, options.max_geoms);
-  r->scene_made_ = true;
-  mjr_defaultContext(&r->context_);
-  const int font_scale = options.font_scale > 0 ? options.font_scale : AutoFontScale(height);
-  mjr_makeContext(r->model_, &r->context_, font_scale);
-  r->context_made_ = true;
-  mjr_setBuffer(mjFB_OFFSCREEN, &r->context_);
-  if (r->context_.currentBuffer != mjFB_OFFSCREEN) {
+  mjv_defaultScene(&scene_);
+  mjv_makeScene(model_, &scene_, options_.max_geoms);
+  scene_made_ = true;
+  mjr_defaultContext(&context_);
+  const int font_scale = options_.font_scale > 0 ? options_.font_scale : AutoFontScale(height_);
+  mjr_makeContext(model_, &context_, font_scale);
+  context_made_ = true;
+  mjr_setBuffer(mjFB_OFFSCREEN, &context_);
+  if (context_.currentBuffer != mjFB_OFFSCREEN) {
     return absl::InternalError("OffscreenRenderer: MuJoCo could not select its offscreen buffer");
   }
   if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
     return absl::InternalError(absl::StrCat("OffscreenRenderer: OpenGL error 0x", absl::Hex(err),
                                             " while creating MuJoCo's render context on ",
-                                            r->gl_renderer()));
+                                            gl_renderer()));
   }
-  r->bottom_up_.resize(static_cast<size_t>(width) * height * 3);
-  if (options.sky) r->depth_.resize(static_cast<size_t>(width) * height);
-  return r;
+  return absl::OkStatus();
+}
+
+absl::Status OffscreenRenderer::SetModel(const mjModel* m) {
+  if (m == nullptr) return absl::InvalidArgumentError("OffscreenRenderer::SetModel: model is null");
+  if (std::this_thread::get_id() != owner_thread_) {
+    return absl::FailedPreconditionError(
+        "OffscreenRenderer::SetModel called from a thread other than the one that created the "
+        "renderer");
+  }
+  if (absl::Status s = egl_->MakeCurrent(); !s.ok()) return s;
+  if (context_made_) mjr_freeContext(&context_);
+  if (scene_made_) mjv_freeScene(&scene_);
+  if (model_ != nullptr) mj_deleteModel(model_);
+  context_made_ = scene_made_ = false;
+  model_ = nullptr;
+  GLint max_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  return LoadModel(m, max_samples);
 }
 
 OffscreenRenderer::~OffscreenRenderer() {
@@ -190,11 +217,7 @@ const std::string& OffscreenRenderer::egl_platform() const { return egl_->platfo
 
 const std::string& OffscreenRenderer::gl_renderer() const { return egl_->gl_renderer(); }
 
-absl::Status OffscreenRenderer::Render(const mjData* d, const CameraSpec& cam,
-                                       std::vector<uint8_t>* rgb, std::string_view caption) {
-  if (d == nullptr || rgb == nullptr) {
-    return absl::InvalidArgumentError("OffscreenRenderer::Render: data or output is null");
-  }
+absl::Status OffscreenRenderer::PrepareScene(const mjData* d, const CameraSpec& cam) {
   if (std::this_thread::get_id() != owner_thread_) {
     return absl::FailedPreconditionError(
         "OffscreenRenderer::Render called from a thread other than the one that created the "
@@ -212,10 +235,20 @@ absl::Status OffscreenRenderer::Render(const mjData* d, const CameraSpec& cam,
         "OffscreenRenderer: the scene needs more than RendererOptions.max_geoms = ", scene_.maxgeom,
         " geoms; raise it"));
   }
+  return absl::OkStatus();
+}
+
+absl::Status OffscreenRenderer::Render(const mjData* d, const CameraSpec& cam,
+                                       std::vector<uint8_t>* rgb, std::string_view caption) {
+  if (d == nullptr || rgb == nullptr) {
+    return absl::InvalidArgumentError("OffscreenRenderer::Render: data or output is null");
+  }
+  if (absl::Status s = PrepareScene(d, cam); !s.ok()) return s;
   scene_.flags[mjRND_SHADOW] = options_.shadows ? 1 : 0;
   scene_.flags[mjRND_REFLECTION] = options_.reflections ? 1 : 0;
   scene_.flags[mjRND_SKYBOX] = options_.skybox ? 1 : 0;
-
+  scene_.flags[mjRND_SEGMENT] = 0;
+  scene_.flags[mjRND_IDCOLOR] = 0;
   const mjrRect viewport = {0, 0, width_, height_};
   mjr_setBuffer(mjFB_OFFSCREEN, &context_);
   mjr_render(viewport, &scene_, &context_);
@@ -246,6 +279,45 @@ absl::Status OffscreenRenderer::Render(const mjData* d, const CameraSpec& cam,
   for (int y = 0; y < height_; ++y) {
     std::memcpy(rgb->data() + row_bytes * y, bottom_up_.data() + row_bytes * (height_ - 1 - y),
                 row_bytes);
+  }
+  return absl::OkStatus();
+}
+
+absl::Status OffscreenRenderer::RenderBodyIds(const mjData* d, const CameraSpec& cam,
+                                              std::vector<int>* body_ids) {
+  if (d == nullptr || body_ids == nullptr) {
+    return absl::InvalidArgumentError("OffscreenRenderer::RenderBodyIds: data or output is null");
+  }
+  if (absl::Status s = PrepareScene(d, cam); !s.ok()) return s;
+  scene_.flags[mjRND_SHADOW] = 0;
+  scene_.flags[mjRND_REFLECTION] = 0;
+  scene_.flags[mjRND_SKYBOX] = 0;
+  scene_.flags[mjRND_SEGMENT] = 1;
+  scene_.flags[mjRND_IDCOLOR] = 1;
+  const mjrRect viewport = {0, 0, width_, height_};
+  mjr_setBuffer(mjFB_OFFSCREEN, &context_);
+  mjr_render(viewport, &scene_, &context_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  mjr_readPixels(bottom_up_.data(), nullptr, viewport, &context_);
+  scene_.flags[mjRND_SEGMENT] = 0;
+  scene_.flags[mjRND_IDCOLOR] = 0;
+  if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
+    return absl::InternalError(
+        absl::StrCat("OffscreenRenderer::RenderBodyIds: OpenGL error 0x", absl::Hex(err)));
+  }
+  // MuJoCo paints scene geom i with the colour (i + 1) in little-endian RGB; 0 is no geom
+  body_ids->assign(static_cast<size_t>(width_) * height_, -1);
+  for (int y = 0; y < height_; ++y) {
+    const uint8_t* row = bottom_up_.data() + static_cast<size_t>(width_) * 3 * (height_ - 1 - y);
+    for (int x = 0; x < width_; ++x) {
+      const uint8_t* px = row + 3 * x;
+      const int seg = px[0] + (px[1] << 8) + (px[2] << 16) - 1;
+      if (seg < 0 || seg >= scene_.ngeom) continue;
+      const mjvGeom& g = scene_.geoms[seg];
+      if (g.objtype == mjOBJ_GEOM && g.objid >= 0 && g.objid < model_->ngeom) {
+        (*body_ids)[static_cast<size_t>(y) * width_ + x] = model_->geom_bodyid[g.objid];
+      }
+    }
   }
   return absl::OkStatus();
 }

@@ -35,6 +35,8 @@ struct RendererOptions {
   /// Caption font size as a mjtFontScale percentage (50, 100, 150, 200, 250, 300); 0 picks one
   /// from the image height.
   int font_scale = 0;
+  /// Vertical field of view of free cameras (degrees); 0 keeps the model's m->vis.global.fovy.
+  double fovy_deg = 0;
   /// Capacity of the abstract scene, in geoms (model geoms plus decorations).
   int max_geoms = 10000;
 
@@ -74,6 +76,18 @@ class OffscreenRenderer {
   absl::Status Render(const mjData* d, const CameraSpec& cam, std::vector<uint8_t>* rgb,
                       std::string_view caption = {});
 
+  /// Renders which body each pixel shows, into `body_ids` (width*height, row-major, top row
+  /// first; -1 where no geom of a body was drawn: the background, decorations). Uses MuJoCo's
+  /// segmentation mode (mjRND_SEGMENT with mjRND_IDCOLOR), so no lighting or caption; with
+  /// multisampling an edge pixel can blend two ids and decode to -1 or to a neighbour's id, so
+  /// create the renderer with msaa_samples = 0 when exact edges matter. Errors as Render().
+  absl::Status RenderBodyIds(const mjData* d, const CameraSpec& cam, std::vector<int>* body_ids);
+
+  /// Replaces the model snapshot (as Create() took it), keeping the OpenGL context: much cheaper
+  /// than a new renderer when the scene changes (Mesa compiles its shaders once per context).
+  /// Errors: kFailedPrecondition on the wrong thread, kInternal on an OpenGL error.
+  absl::Status SetModel(const mjModel* m);
+
   /// MuJoCo's visualization options (what to draw: contact points, joints, sites, groups...).
   /// Defaults are mjv_defaultOption's.
   mjvOption& vis_options() { return vis_options_; }
@@ -106,6 +120,11 @@ class OffscreenRenderer {
   bool context_made_ = false;
   std::vector<uint8_t> bottom_up_;  // readback scratch
   std::vector<float> depth_;        // readback scratch (sky)
+
+  // copies `m` into model_ and makes the scene and MuJoCo's render context for it
+  absl::Status LoadModel(const mjModel* m, int max_samples);
+  // makes the context current and the scene from `d` seen by `cam`
+  absl::Status PrepareScene(const mjData* d, const CameraSpec& cam);
 };
 
 }  // namespace simhuman::render

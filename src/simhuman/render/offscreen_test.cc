@@ -240,3 +240,57 @@ TEST_F(OffscreenTest, SceneOverflowIsAnError) {
 
 }  // namespace
 }  // namespace simhuman::render
+
+namespace simhuman::render {
+namespace {
+
+TEST_F(OffscreenTest, BodyIdsMatchTheColourImage) {
+  RendererOptions o;
+  o.msaa_samples = 0;
+  MAKE_RENDERER_OR_SKIP(r, kWidth, kHeight, o);
+  std::vector<uint8_t> rgb;
+  std::vector<int> ids;
+  ASSERT_TRUE(r->Render(d_, BoxCamera(), &rgb).ok());
+  ASSERT_TRUE(r->RenderBodyIds(d_, BoxCamera(), &ids).ok());
+  ASSERT_EQ(ids.size(), static_cast<size_t>(kWidth * kHeight));
+  const int box = mj_name2id(m_, mjOBJ_BODY, "box");
+  const int ball = mj_name2id(m_, mjOBJ_BODY, "ball");
+  // the centre shows the box; the floor is the world body (0); the sky nothing (-1)
+  EXPECT_EQ(ids[(kHeight / 2) * kWidth + kWidth / 2], box);
+  EXPECT_EQ(ids[(kHeight - 1) * kWidth + 2], 0);
+  EXPECT_EQ(ids[2], -1);
+  // every pixel called the ball is blue in the colour image, and there are some
+  int ball_px = 0;
+  for (size_t i = 0; i < ids.size(); ++i) {
+    if (ids[i] != ball) continue;
+    ++ball_px;
+    EXPECT_GT(rgb[3 * i + 2], rgb[3 * i]) << "pixel " << i;
+  }
+  EXPECT_GT(ball_px, 5);
+  // the colour render after a segmentation render is lit as before
+  std::vector<uint8_t> again;
+  ASSERT_TRUE(r->Render(d_, BoxCamera(), &again).ok());
+  EXPECT_EQ(again, rgb);
+}
+
+TEST_F(OffscreenTest, SetModelSwitchesTheSceneAndFieldOfView) {
+  RendererOptions o;
+  o.fovy_deg = 90;
+  MAKE_RENDERER_OR_SKIP(r, kWidth, kHeight, o);
+  EXPECT_FLOAT_EQ(r->model()->vis.global.fovy, 90.0f);
+  mjModel* other = mj_copyModel(nullptr, m_);
+  other->geom_rgba[4 * mj_name2id(other, mjOBJ_GEOM, "box") + 1] = 0.9f;  // the box turns yellow
+  ASSERT_TRUE(r->SetModel(other).ok());
+  EXPECT_FLOAT_EQ(r->model()->vis.global.fovy, 90.0f);
+  std::vector<uint8_t> rgb;
+  ASSERT_TRUE(r->Render(d_, BoxCamera(), &rgb).ok());
+  const Pixel c = At(rgb, kWidth, kWidth / 2, kHeight / 2);
+  EXPECT_GT(c.g, 100);
+  mj_deleteModel(other);
+  RendererOptions bad;
+  bad.fovy_deg = 200;
+  EXPECT_TRUE(absl::IsInvalidArgument(bad.Validate()));
+}
+
+}  // namespace
+}  // namespace simhuman::render

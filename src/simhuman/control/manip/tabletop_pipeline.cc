@@ -226,8 +226,7 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   // either side) when the arm can; from all around (as round objects) when it cannot
   std::vector<double> faces, around;
   if (g_.shape == GraspShape::kBox) {
-    const Eigen::Matrix3d rb = Rot(d_, g_.object_body);
-    const double yaw = std::atan2(rb(1, 0), rb(0, 0));
+    const double yaw = ObserveObject(g_, d_).yaw_rad;
     for (int k = 0; k < 4; ++k) {
       for (double off : {0.0, -1.0, 1.0, -2.0, 2.0})
         faces.push_back(yaw + k * M_PI / 2 + off * o_.box_face_spread_rad);
@@ -314,8 +313,8 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   const int hb = ix_.arm.hand_body;
   const Eigen::Matrix3d rh = Rot(d_, hb);
   const Eigen::Vector3d ph(d_->xpos + 3 * hb);
-  const Eigen::Vector3d r_obj =
-      rh.transpose() * (Eigen::Vector3d(d_->xpos + 3 * g_.object_body) - ph);
+  const ObjectView seen = ObserveObject(g_, d_);
+  const Eigen::Vector3d r_obj = rh.transpose() * (seen.base - ph);
   const Eigen::Vector3d r_palm =
       rh.transpose() * (Eigen::Vector3d(d_->site_xpos + 3 * ix_.arm.palm_site) - ph);
   const Eigen::Vector3d base_goal = g_.target + Eigen::Vector3d(0, 0, o_.carry_clearance_m);
@@ -323,8 +322,7 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   Eigen::Matrix3d upright = Eigen::Matrix3d::Identity();
   if (g_.shape != GraspShape::kSphere) {
     upright =
-        Eigen::Quaterniond::FromTwoVectors(Rot(d_, g_.object_body).col(2), Eigen::Vector3d::UnitZ())
-            .toRotationMatrix();
+        Eigen::Quaterniond::FromTwoVectors(seen.up, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   }
   std::vector<PalmPose> goals;
   for (int k = 0; k < o_.approach_angles; ++k) {
@@ -399,14 +397,15 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
   // place: the object upright (it tilts in the grip on the way) with its centre of mass over the
   // target, turning the hand about that centre; then down until it bears on its support
   for (int k = 0; k < o_.align_passes; ++k) {
-    const Eigen::Vector3d c = ObjectCom();
+    const ObjectView seen = ObserveObject(g_, d_);
+    const Eigen::Vector3d c = seen.centre;
     Eigen::Vector3d err = g_.target - c;
     err.z() = 0;
-    const Eigen::Matrix3d turn = g_.shape == GraspShape::kSphere
-                                     ? Eigen::Matrix3d::Identity()
-                                     : Eigen::Quaterniond::FromTwoVectors(
-                                           Rot(d_, g_.object_body).col(2), Eigen::Vector3d::UnitZ())
-                                           .toRotationMatrix();
+    const Eigen::Matrix3d turn =
+        g_.shape == GraspShape::kSphere
+            ? Eigen::Matrix3d::Identity()
+            : Eigen::Quaterniond::FromTwoVectors(seen.up, Eigen::Vector3d::UnitZ())
+                  .toRotationMatrix();
     if (err.norm() < o_.align_tol_m && Eigen::AngleAxisd(turn).angle() < o_.align_tilt_rad) break;
     const Eigen::Vector3d p(d_->site_xpos + 3 * ix_.arm.palm_site);
     if (!MovePalm(tr, c + turn * (p - c) - p + err, o_.align_s, {}, &turn)) {
@@ -477,6 +476,18 @@ TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const T
                            const StepHook& hook) {
   Run run(world, ix, goal, options, hook);
   return run.Go(policy);
+}
+
+ObjectView ObserveObject(const TabletopGoal& g, const mjData* d) {
+  if (g.observe) return g.observe(d);
+  ObjectView v;
+  const Eigen::Matrix3d r =
+      Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * g.object_body);
+  v.centre = Eigen::Vector3d(d->xipos + 3 * g.object_body);
+  v.base = Eigen::Vector3d(d->xpos + 3 * g.object_body);
+  v.up = r.col(2);
+  v.yaw_rad = std::atan2(r(1, 0), r(0, 0));
+  return v;
 }
 
 }  // namespace simhuman::control::manip

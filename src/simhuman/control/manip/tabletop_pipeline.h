@@ -25,6 +25,15 @@ namespace simhuman::control::manip {
 /// One policy step: kGraspObsDim observations in, kGraspActDim actions out.
 using GraspPolicyFn = std::function<void(const float* obs, float* action)>;
 
+/// How the controllers see the moved object: its centre (of mass), base centre and up axis
+/// (world), and for a box the yaw of a face normal.
+struct ObjectView {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d base = Eigen::Vector3d::Zero();
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  double yaw_rad = 0;
+};
+
 /// What to move and where.
 struct TabletopGoal {
   int object_body = -1;
@@ -36,7 +45,17 @@ struct TabletopGoal {
   /// of the object it is stacked on.
   Eigen::Vector3d target;
   int support_body = -1;  ///< the body it is stacked on (-1: the table)
+  /// How the controllers see the object while they work (the reach's box faces, the scripted
+  /// grasp's approach, transport, the alignment over the target). Empty: the simulation's own
+  /// state (ground truth); the vision module supplies its delayed camera estimates
+  /// (eval/tabletop_vision.h). Outcome checks (dropped, lifted, at rest) always read the
+  /// simulation.
+  std::function<ObjectView(const mjData* d)> observe;
 };
+
+/// `goal.observe(d)` when set, else the object's state in `d` (centre of mass, body origin at
+/// its base, body z axis, yaw of its body x axis).
+ObjectView ObserveObject(const TabletopGoal& goal, const mjData* d);
 
 /// Settings of RunTabletop.
 struct TabletopOptions {

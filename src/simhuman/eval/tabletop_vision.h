@@ -1,0 +1,83 @@
+#pragma once
+/// DASH's pipeline seeing through the head camera (issue 16): the task is planned from the first
+/// frame (the objects' positions, sizes and up axes as the vision module estimates them), and the
+/// controllers read the moved object's estimates at 20 Hz with a 50 ms delay (DASH Section 3.4).
+/// Which simulated body is "the red box" comes from the scene's names (the command's words pick
+/// it), never its position.
+
+#include <deque>
+#include <memory>
+#include <string>
+
+#include "simhuman/control/manip/tabletop_pipeline.h"
+#include "simhuman/core/scene_catalog.h"
+#include "simhuman/core/status.h"
+#include "simhuman/perceive/vision/associate.h"
+#include "simhuman/perceive/vision/vision_data.h"
+#include "simhuman/perceive/vision/vision_model.h"
+#include "simhuman/world/sim_world.h"
+
+namespace simhuman::eval {
+
+/// How often the camera runs and how late its estimates arrive (DASH: 20 Hz, 50 ms).
+struct VisionLoopOptions {
+  double rate_hz = 20;
+  double delay_s = 0.05;
+  /// The moved object's live estimates replace the planning estimate once it is seen this far
+  /// above where it was planned (lifted); before, the grasp works from the plan, as DASH's.
+  double lifted_m = 0.03;
+};
+
+/// The camera and the vision model across episodes (one OpenGL context; each episode's world is
+/// set with Begin()).
+class TabletopVision {
+ public:
+  /// Errors: the model file (naming it), no EGL (naming the renderer and --perception truth).
+  static core::StatusOr<std::unique_ptr<TabletopVision>> Create(const std::string& model_path,
+                                                                const mjModel* first_model,
+                                                                const VisionLoopOptions& o = {});
+
+  /// Starts an episode in `world`: looks at the table, estimates the objects, and fills the
+  /// geometry of `goal` (object body and shape given) from the estimates of the object of that
+  /// shape and colour; for a stack, the target is the top of the estimated `support` object.
+  /// Sets goal->observe to this camera's delayed estimates. NotFound when the named object is not
+  /// seen (the message lists what was).
+  core::Status Begin(world::SimWorld& world, const core::SceneCatalog& catalog,
+                     const std::string& object_id, const std::string& support_id,
+                     control::manip::TabletopGoal* goal);
+
+  /// Call after each physics step: renders and estimates at rate_hz.
+  core::Status OnStep(const mjData* d);
+
+  /// The moved object as the controllers see it now (delayed estimates).
+  control::manip::ObjectView View(const mjData* d) const;
+
+  int frames() const { return frames_; }
+  double vision_s() const { return vision_s_; }
+  double render_s() const { return render_s_; }
+
+ private:
+  struct Timed {
+    double t = 0;
+    perceive::ObjectEstimate e;
+  };
+  TabletopVision() = default;
+  control::manip::ObjectView ToView(const perceive::ObjectEstimate& e) const;
+
+  VisionLoopOptions o_;
+  std::unique_ptr<perceive::VisionModel> model_;
+  std::unique_ptr<perceive::HeadCamera> camera_;
+  world::SimWorld* world_ = nullptr;
+  perceive::ObjectTracker tracker_;
+  int moved_ = -1;  // index of the moved object in the tracker
+  perceive::ObjectEstimate planned_;
+  Eigen::Vector3d target_ = Eigen::Vector3d::Zero();
+  std::deque<Timed> queue_;
+  bool live_ = false;  // the moved object has been seen lifted: its live estimates are used
+  double next_t_ = 0;
+  int frames_ = 0;
+  double vision_s_ = 0, render_s_ = 0;
+  double height_m_ = 0;
+};
+
+}  // namespace simhuman::eval

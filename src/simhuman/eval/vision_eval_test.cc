@@ -1,0 +1,110 @@
+#include "simhuman/eval/vision_eval.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "simhuman/eval/tabletop_eval.h"
+#include "simhuman/eval/vision_frames.h"
+
+namespace simhuman::eval {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string ShippedModel() { return std::string(SIMHUMAN_SOURCE_DIR) + "/assets/vision/vision.pt"; }
+
+TEST(VisionTrainConfigTest, ErrorsNameTheKeyAndTheRange) {
+  auto unknown = VisionTrainConfig::FromJson({{"epochz", 3}});
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_THAT(std::string(unknown.status().message()), HasSubstr("epochz"));
+  auto bad = VisionTrainConfig::FromJson({{"fovy_deg", 5}});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_THAT(std::string(bad.status().message()), HasSubstr("fovy_deg"));
+  auto ok = VisionTrainConfig::FromJson({{"epochs", 3}});
+  ASSERT_TRUE(ok.ok());
+  EXPECT_EQ(ok->epochs, 3);
+  EXPECT_EQ(ok->ToJson()["epochs"], 3);
+}
+
+// the pinhole model the network reads rays from is the camera MuJoCo renders: each visible
+// object's true centre projects onto a pixel that shows that object
+TEST(VisionFramesTest, TrueCentresProjectOntoTheirObjectsIntegration) {
+  VisionFrameOptions o;
+  o.planning_scenes = 2;
+  o.placing_episodes = 0;
+  int frames = 0, checked = 0;
+  const core::Status s = CollectVisionFrames(o, [&](VisionFrame& f) {
+    ++frames;
+    EXPECT_EQ(f.stage, "planning");
+    EXPECT_GE(f.task_object, 0);
+    for (const perceive::ObjectTruth& t : f.truth) {
+      if (t.pixels < 60) continue;  // mostly hidden or out of view
+      double u, v;
+      ASSERT_TRUE(f.camera.Project(t.centre, &u, &v));
+      const int x = static_cast<int>(u), y = static_cast<int>(v);
+      ASSERT_TRUE(x >= 0 && y >= 0 && x < f.camera.width && y < f.camera.height);
+      EXPECT_EQ(f.body_ids[static_cast<size_t>(y) * f.camera.width + x], t.body) << t.id;
+      ++checked;
+    }
+  });
+  if (absl::IsUnavailable(s)) GTEST_SKIP() << s;
+  ASSERT_TRUE(s.ok()) << s;
+  EXPECT_EQ(frames, 2);
+  EXPECT_GE(checked, 4);
+}
+
+TEST(VisionEvalTest, TheShippedModelSeesThePlanningTablesIntegration) {
+  if (!std::filesystem::exists(ShippedModel())) GTEST_SKIP() << "no " << ShippedModel();
+  VisionEvalOptions o;
+  o.model = ShippedModel();
+  o.planning_scenes = 3;
+  o.placing_episodes = 0;
+  o.seed = 7;
+  auto m = RunVisionEval(o);
+  if (absl::IsUnavailable(m.status())) GTEST_SKIP() << m.status();
+  ASSERT_TRUE(m.ok()) << m.status();
+  const VisionStageMetrics& p = m->at("planning");
+  EXPECT_EQ(p.frames, 3);
+  ASSERT_GE(p.objects, 8);
+  EXPECT_GE(p.matched, p.objects - 1);
+  EXPECT_GE(p.colour_ok, p.matched - 1);
+  EXPECT_GE(p.shape_ok, p.matched - 1);
+  for (int k = 0; k < 3; ++k) EXPECT_LT(p.abs_err_cm[k] / p.matched, 2.5) << "axis " << k;
+}
+
+TEST(VisionEvalTest, AMissingOrWrongModelIsNamed) {
+  VisionEvalOptions o;
+  o.model = "/nonexistent/vision.pt";
+  auto m = RunVisionEval(o);
+  ASSERT_FALSE(m.ok());
+  EXPECT_TRUE(absl::IsNotFound(m.status()));
+  EXPECT_THAT(std::string(m.status().message()), HasSubstr("/nonexistent/vision.pt"));
+  TabletopEvalOptions t;
+  t.episodes = 1;
+  t.perception = "eyes";
+  auto r = RunTabletopEval(t);
+  ASSERT_FALSE(r.ok());
+  EXPECT_THAT(std::string(r.status().message()), HasSubstr("truth, vision"));
+}
+
+TEST(TabletopVisionTest, APlaceTaskRunsOnTheCamerasEstimatesIntegration) {
+  if (!std::filesystem::exists(ShippedModel())) GTEST_SKIP() << "no " << ShippedModel();
+  TabletopEvalOptions o;
+  o.episodes = 1;
+  o.kind = "place";
+  o.perception = "vision";
+  o.vision_model = ShippedModel();
+  auto s = RunTabletopEval(o);
+  if (absl::IsUnavailable(s.status())) GTEST_SKIP() << s.status();
+  ASSERT_TRUE(s.ok()) << s.status();
+  EXPECT_EQ(s->episodes, 1);
+  EXPECT_EQ(s->perception, "vision");
+  // the camera ran at 20 Hz through the episode (one planning frame, then every 50 ms)
+  EXPECT_GE(s->vision_frames, static_cast<int>(s->sim_s * 20) - 1);
+  EXPECT_LE(s->vision_frames, static_cast<int>(s->sim_s * 20) + 2);
+}
+
+}  // namespace
+}  // namespace simhuman::eval

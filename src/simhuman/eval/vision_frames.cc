@@ -1,0 +1,122 @@
+#include "simhuman/eval/vision_frames.h"
+
+#include <chrono>
+#include <memory>
+
+#include "simhuman/control/manip/tabletop_pipeline.h"
+#include "simhuman/control/policy/grasp_policy.h"
+#include "simhuman/core/rng.h"
+#include "simhuman/eval/tabletop_eval.h"
+#include "simhuman/world/seating.h"
+#include "simhuman/world/tabletop.h"
+
+namespace simhuman::eval {
+
+namespace {
+
+struct Episode {
+  world::TabletopScene ts;
+  core::SceneCatalog catalog;
+  std::unique_ptr<world::SimWorld> world;
+};
+
+core::StatusOr<Episode> MakeEpisode(uint64_t seed, const std::string& kind) {
+  Episode e;
+  SH_ASSIGN_OR_RETURN(e.ts, world::GenerateTabletop(seed, kind));
+  SH_ASSIGN_OR_RETURN(e.catalog, world::BuildCatalog(e.ts.scene));
+  SH_ASSIGN_OR_RETURN(world::AgentSpec human,
+                      world::AgentFromHuman(e.ts.scene.humans[0], 0, e.catalog));
+  SH_ASSIGN_OR_RETURN(e.world,
+                      world::SimWorld::Create(e.catalog, {human}, world::DexterousModelOptions()));
+  mj_forward(e.world->model(), e.world->data());
+  return e;
+}
+
+Eigen::Vector3d Jitter(core::Rng& rng, double r) {
+  return Eigen::Vector3d(rng.Uniform(-r, r), rng.Uniform(-r, r), 0.0);
+}
+
+// renders one frame of `d` with its truth and hands it on
+core::Status Shoot(perceive::HeadCamera& cam, const Episode& e, const mjData* d,
+                   const Eigen::Vector3d& gaze, const std::string& stage, uint64_t seed,
+                   const std::function<void(VisionFrame&)>& on_frame) {
+  VisionFrame f;
+  f.stage = stage;
+  f.scene_seed = seed;
+  f.camera = cam.Aim(*e.world, d, 0, gaze);
+  const auto t0 = std::chrono::steady_clock::now();
+  SH_RETURN_IF_ERROR(cam.Capture(d, f.camera, &f.rgb));
+  f.render_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  SH_RETURN_IF_ERROR(cam.CaptureBodyIds(d, f.camera, &f.body_ids));
+  f.truth = perceive::TableObjectsTruth(*e.world, e.catalog, d);
+  perceive::CountPixels(f.body_ids, &f.truth);
+  for (size_t i = 0; i < f.truth.size(); ++i) {
+    if (f.truth[i].id == e.ts.task.object_id) f.task_object = static_cast<int>(i);
+  }
+  on_frame(f);
+  return absl::OkStatus();
+}
+
+// a renderer draws the model it was given: each scene's world is another model
+core::Status UseModel(const VisionFrameOptions& o, const mjModel* m,
+                      std::unique_ptr<perceive::HeadCamera>* cam) {
+  if (*cam) return (*cam)->SetModel(m);
+  SH_ASSIGN_OR_RETURN(*cam, perceive::HeadCamera::Create(m, o.width, o.height, o.fovy_deg));
+  return absl::OkStatus();
+}
+
+}  // namespace
+
+core::Status CollectVisionFrames(const VisionFrameOptions& o,
+                                 const std::function<void(VisionFrame&)>& on_frame) {
+  std::unique_ptr<perceive::HeadCamera> cam;
+  for (int i = 0; i < o.planning_scenes; ++i) {
+    const uint64_t seed = core::DeriveSeed(o.seed, 0x7151, o.stream, static_cast<uint64_t>(i));
+    SH_ASSIGN_OR_RETURN(Episode e, MakeEpisode(seed, i % 2 == 0 ? "place" : "stack"));
+    SH_RETURN_IF_ERROR(UseModel(o, e.world->model(), &cam));
+    core::Rng rng(core::DeriveSeed(seed, 0x9a2e));
+    for (int v = 0; v < o.planning_views; ++v) {
+      const Eigen::Vector3d gaze = perceive::PlanningGaze() + Jitter(rng, o.gaze_jitter_m);
+      SH_RETURN_IF_ERROR(Shoot(*cam, e, e.world->data(), gaze, "planning", seed, on_frame));
+    }
+  }
+  if (o.placing_episodes <= 0) return absl::OkStatus();
+  SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
+                      control::LoadGraspPolicy("scripted"));
+  const control::manip::TabletopOptions pipeline;
+  for (int i = 0; i < o.placing_episodes; ++i) {
+    const uint64_t seed = core::DeriveSeed(o.seed, 0x7152, o.stream, static_cast<uint64_t>(i));
+    const std::string kind = i % 2 == 0 ? "place" : "stack";
+    SH_ASSIGN_OR_RETURN(Episode e, MakeEpisode(seed, kind));
+    SH_RETURN_IF_ERROR(UseModel(o, e.world->model(), &cam));
+    SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix,
+                        control::manip::MakeGraspIndex(*e.world, 0, true));
+    SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopSceneGoal(e.ts, *e.world));
+    const control::manip::GraspPolicyFn grasp =
+        make_grasp(e.world->model(), e.world->data(), ix, goal, pipeline);
+    core::Rng rng(core::DeriveSeed(seed, 0x9a2f));
+    const Eigen::Vector3d aim = goal.target + Jitter(rng, o.position_noise_m);
+    const Eigen::Vector3d start =
+        Eigen::Map<const Eigen::Vector3d>(e.world->data()->xpos + 3 * goal.object_body);
+    int step = 0, shot = 0;
+    core::Status status;
+    const int every = std::max(
+        1, static_cast<int>(std::lround(o.placing_every_s / e.world->model()->opt.timestep)));
+    auto hook = [&](const mjData* d) {
+      if (++step % every != 0 || shot >= o.placing_frames || !status.ok()) return;
+      const Eigen::Map<const Eigen::Vector3d> p(d->xpos + 3 * goal.object_body);
+      // placing: lifted and over the destination (within 8 cm of it)
+      const bool lifted = p.z() > start.z() + 0.03;
+      const bool near = (p - goal.target).head<2>().norm() < 0.08;
+      if (!lifted || !near) return;
+      const Eigen::Vector3d gaze = aim + Jitter(rng, o.gaze_jitter_m);
+      status = Shoot(*cam, e, d, gaze, kind == "place" ? "placing" : "stacking", seed, on_frame);
+      ++shot;
+    };
+    control::manip::RunTabletop(*e.world, ix, goal, grasp, pipeline, hook);
+    SH_RETURN_IF_ERROR(status);
+  }
+  return absl::OkStatus();
+}
+
+}  // namespace simhuman::eval
