@@ -102,6 +102,27 @@ TEST(CliTest, RunRequiresSceneAndPlan) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+TEST(CliTest, VisionCommandsRefuseBadInput) {
+  const std::string out = OutDir("vision");
+  ExpectBadInput(Cli({"train", "--task", "vision", "--out", out, "--steps", "5"}),
+                 {"--task vision takes --out, --config and --seed only"});
+  ExpectBadInput(Cli({"train", "--task", "vision"}), {"--out"});
+  ExpectBadInput(Cli({"eval", "--suite", "vision", "--vision-model", out + "/none.pt", "--out",
+                      out + "/e"}),
+                 {out + "/none.pt", "train --task vision"});
+  ExpectBadInput(Cli({"eval", "--suite", "place", "--perception", "vision", "--vision-model",
+                      out + "/none.pt", "--out", out + "/p"}),
+                 {out + "/none.pt"});
+  EXPECT_FALSE(std::filesystem::exists(out + "/e"));
+  EXPECT_FALSE(std::filesystem::exists(out + "/p"));
+  ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--perception", "eyes"}),
+                 {"--perception", "truth", "vision"});
+  ExpectBadInput(Cli({"run", "--scene", "tabletop_demo", "--perception", "eyes", "--command",
+                      "put the red box on the blue cylinder"}),
+                 {"--perception"});
+  EXPECT_FALSE(std::filesystem::exists(out + "/vision.pt"));
+}
+
 TEST(CliTest, ReplayAndServeRefuseBadInput) {
   const std::string missing = OutDir("no_run");
   ExpectBadInput(Cli({"replay", missing, "--html", missing + ".html"}),

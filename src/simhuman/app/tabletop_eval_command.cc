@@ -32,6 +32,11 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   o.grasp = eval::DefaultGraspPolicy(flags.grasp_policy);
   o.perception = flags.perception;
   o.vision_model = flags.vision_model.empty() ? DefaultVisionModel() : flags.vision_model;
+  if (o.perception == "vision") {
+    if (absl::Status s = CheckVisionModelFile(o.vision_model); !s.ok()) {
+      return ReportError(err, kCommand, s);
+    }
+  }
   const std::string dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
   absl::Status made = MakeOutputDir(dir);
   if (!made.ok()) return ReportError(err, kCommand, made);

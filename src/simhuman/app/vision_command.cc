@@ -17,6 +17,12 @@ std::string DefaultVisionModel() {
   return std::string(SIMHUMAN_SOURCE_DIR) + "/assets/vision/vision.pt";
 }
 
+absl::Status CheckVisionModelFile(const std::string& path) {
+  if (std::filesystem::is_regular_file(path)) return absl::OkStatus();
+  return absl::NotFoundError(path + ": cannot open the vision model file (make one with "
+                                    "`simhuman train --task vision`)");
+}
+
 int VisionTrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) {
   const char* cmd = "train";
   if (!flags.resume.empty() || flags.steps_given || flags.envs || flags.threads ||
@@ -81,6 +87,7 @@ int VisionEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& e
   o.planning_scenes = flags.episodes;
   o.placing_episodes = flags.episodes;
   o.seed = flags.seed;
+  if (absl::Status s = CheckVisionModelFile(o.model); !s.ok()) return ReportError(err, cmd, s);
   const std::string dir = flags.out.empty() ? "out/eval_vision" : flags.out;
   if (absl::Status s = MakeOutputDir(dir); !s.ok()) return ReportError(err, cmd, s);
   out << "simhuman eval: suite vision, model " << o.model << ", " << o.planning_scenes

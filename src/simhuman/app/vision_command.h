@@ -12,6 +12,9 @@ namespace simhuman::app {
 /// The model shipped in the checkout (assets/vision/vision.pt).
 std::string DefaultVisionModel();
 
+/// NotFound naming `path` when it is not a file (checked before an output folder is made).
+absl::Status CheckVisionModelFile(const std::string& path);
+
 /// `simhuman train --task vision --out DIR [--config F] [--seed S]`: renders the training
 /// frames, trains, writes DIR/vision.pt and DIR/vision.json (config, measured losses, times,
 /// git revision, command). --steps, --resume and the PPO flags do not apply (refused by name).
