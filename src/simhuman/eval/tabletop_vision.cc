@@ -64,7 +64,8 @@ core::Status TabletopVision::Begin(world::SimWorld& world, const core::SceneCata
   world_ = &world;
   SH_RETURN_IF_ERROR(camera_->SetModel(world.model()));
   queue_.clear();
-  live_ = false;
+  arrived_.clear();
+  held_ = false;
   const mjData* d = world.data();
   next_t_ = d->time;
   // task planning: one frame of the table
@@ -90,7 +91,7 @@ core::Status TabletopVision::Begin(world::SimWorld& world, const core::SceneCata
     goal->target = est[s].centre + 0.5 * est[s].height_m * est[s].up;
   }
   target_ = goal->target;
-  goal->observe = [this](const mjData* dd) { return View(dd); };
+  goal->observe = [this](const mjData* dd, bool held) { return View(dd, held); };
   return absl::OkStatus();
 }
 
@@ -106,8 +107,8 @@ control::manip::ObjectView TabletopVision::ToView(const perceive::ObjectEstimate
 core::Status TabletopVision::OnStep(const mjData* d) {
   if (world_ == nullptr || d->time + 1e-9 < next_t_) return absl::OkStatus();
   next_t_ += 1.0 / o_.rate_hz;
-  // look at the object until it is lifted, then at where it goes
-  const Eigen::Vector3d gaze = live_ ? target_ : tracker_.objects()[moved_].centre;
+  // look at the object until it is held, then at where it goes
+  const Eigen::Vector3d gaze = held_ ? target_ : tracker_.objects()[moved_].centre;
   const perceive::PinholeCamera cam = camera_->Aim(*world_, d, 0, gaze);
   std::vector<uint8_t> rgb;
   auto t0 = Clock::now();
@@ -118,20 +119,30 @@ core::Status TabletopVision::OnStep(const mjData* d) {
   vision_s_ += Since(t0);
   ++frames_;
   queue_.push_back({d->time, tracker_.objects()[moved_]});
-  // keep the newest estimate that has arrived, and those still on their way
-  while (queue_.size() > 1 && queue_[1].t + o_.delay_s <= d->time + 1e-9) queue_.pop_front();
-  if (!live_ && queue_.front().t + o_.delay_s <= d->time + 1e-9 &&
-      queue_.front().e.centre.z() > planned_.centre.z() + o_.lifted_m) {
-    live_ = true;
+  // estimates arrive delay_s after their frame
+  while (!queue_.empty() && queue_.front().t + o_.delay_s <= d->time + 1e-9) {
+    arrived_.push_back(queue_.front().e);
+    queue_.pop_front();
+    if (static_cast<int>(arrived_.size()) > std::max(1, o_.smooth_frames)) arrived_.pop_front();
   }
   return absl::OkStatus();
 }
 
-control::manip::ObjectView TabletopVision::View(const mjData* d) const {
-  if (!live_ || queue_.empty() || queue_.front().t + o_.delay_s > d->time + 1e-9) {
-    return ToView(planned_);
+control::manip::ObjectView TabletopVision::View(const mjData* /*d*/, bool held) const {
+  held_ = held_ || held;
+  if (!held || arrived_.empty()) return ToView(planned_);
+  // per-axis medians of the centre and the up axis over the arrived frames
+  perceive::ObjectEstimate e = arrived_.back();
+  std::vector<double> v(arrived_.size());
+  for (int k = 0; k < 6; ++k) {
+    for (size_t i = 0; i < arrived_.size(); ++i) {
+      v[i] = k < 3 ? arrived_[i].centre[k] : arrived_[i].up[k - 3];
+    }
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    (k < 3 ? e.centre[k] : e.up[k - 3]) = v[v.size() / 2];
   }
-  return ToView(queue_.front().e);
+  if (e.up.norm() > 1e-6) e.up.normalize();
+  return ToView(e);
 }
 
 }  // namespace simhuman::eval

@@ -23,9 +23,9 @@ namespace simhuman::eval {
 struct VisionLoopOptions {
   double rate_hz = 20;
   double delay_s = 0.05;
-  /// The moved object's live estimates replace the planning estimate once it is seen this far
-  /// above where it was planned (lifted); before, the grasp works from the plan, as DASH's.
-  double lifted_m = 0.03;
+  /// The object in the hand is read as the per-axis median of this many newest arrived frames
+  /// (0.25 s at 20 Hz): the hand hides part of it and single frames err by a few cm.
+  int smooth_frames = 5;
 };
 
 /// The camera and the vision model across episodes (one OpenGL context; each episode's world is
@@ -49,8 +49,10 @@ class TabletopVision {
   /// Call after each physics step: renders and estimates at rate_hz.
   core::Status OnStep(const mjData* d);
 
-  /// The moved object as the controllers see it now (delayed estimates).
-  control::manip::ObjectView View(const mjData* d) const;
+  /// The moved object as the controllers see it now: in the hand, the newest estimate that has
+  /// arrived (delayed); before, the task planning estimate (DASH's grasp works from the plan: the
+  /// hand hides the object while it closes, and the network errs by several cm then).
+  control::manip::ObjectView View(const mjData* d, bool held) const;
 
   int frames() const { return frames_; }
   double vision_s() const { return vision_s_; }
@@ -72,8 +74,9 @@ class TabletopVision {
   int moved_ = -1;  // index of the moved object in the tracker
   perceive::ObjectEstimate planned_;
   Eigen::Vector3d target_ = Eigen::Vector3d::Zero();
-  std::deque<Timed> queue_;
-  bool live_ = false;  // the moved object has been seen lifted: its live estimates are used
+  std::deque<Timed> queue_;  // estimates still on their way (not yet delay_s old)
+  std::deque<perceive::ObjectEstimate> arrived_;  // the newest smooth_frames that have arrived
+  mutable bool held_ = false;  // the controllers have asked for the object in the hand
   double next_t_ = 0;
   int frames_ = 0;
   double vision_s_ = 0, render_s_ = 0;

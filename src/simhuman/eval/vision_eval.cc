@@ -38,6 +38,9 @@ const core::FieldTable<VisionTrainConfig>& Table() {
            .In(R::Closed(0, 100000)),
        F("placing_frames", &VisionTrainConfig::placing_frames, "frames per placing episode")
            .In(R::Closed(1, 200)),
+       F("placing_near_m", &VisionTrainConfig::placing_near_m,
+         "placing frames while the held object is within this of its destination (m)")
+           .In(R::Closed(0.01, 2.0)),
        F("gaze_jitter_m", &VisionTrainConfig::gaze_jitter_m, "gaze point jitter (m)")
            .In(R::Closed(0, 0.3)),
        F("position_noise_m", &VisionTrainConfig::position_noise_m,
@@ -101,6 +104,7 @@ core::StatusOr<std::unique_ptr<perceive::VisionModel>> TrainVisionModel(
   fo.planning_views = c.planning_views;
   fo.placing_episodes = c.placing_episodes;
   fo.placing_frames = c.placing_frames;
+  fo.placing_near_m = c.placing_near_m;
   fo.gaze_jitter_m = c.gaze_jitter_m;
   fo.position_noise_m = c.position_noise_m;
   fo.seed = c.seed;
@@ -175,9 +179,11 @@ nlohmann::json VisionStageMetrics::ToJson() const {
           {"height_mae_cm", matched ? height_err_cm / matched : 0.0},
           {"width_mae_cm", matched ? width_err_cm / matched : 0.0},
           {"false_positives", false_positives},
+          {"cut_by_frame_edge", at_edge},
           {"moved_object",
            {{"in_view", task_objects},
             {"detected", task_matched},
+            {"shape_accuracy_pct", pct(task_shape_ok, task_matched)},
             {"position_mae_cm_xyz", mae(task_abs_err_cm, task_matched)}}},
           {"vision_ms_per_frame", frames ? 1000 * frame_s / frames : 0.0},
           {"render_ms_per_frame", frames ? 1000 * render_s / frames : 0.0}};
@@ -185,30 +191,35 @@ nlohmann::json VisionStageMetrics::ToJson() const {
 
 namespace {
 
-// scores one frame's estimates against its truth: each visible object is matched to at most one
-// estimate by position alone (Hungarian, within match_m), so shape and colour are scored fairly
+// scores one frame's estimates against its truth: each object in the frame is matched to at most
+// one estimate by position alone (Hungarian, within match_m), so shape and colour are scored
+// fairly. Objects with at least visible_pixels pixels, none on the frame's edge, are scored; an
+// estimate matching no object in the frame at all is a false positive.
 void ScoreFrame(const VisionFrame& f, const std::vector<perceive::ObjectEstimate>& est,
                 const VisionEvalOptions& o, VisionStageMetrics* m) {
-  std::vector<int> vis;
+  std::vector<int> in_frame;
   for (size_t i = 0; i < f.truth.size(); ++i) {
-    if (f.truth[i].pixels >= o.visible_pixels) vis.push_back(static_cast<int>(i));
+    if (f.truth[i].pixels > 0) in_frame.push_back(static_cast<int>(i));
   }
   ++m->frames;
-  m->objects += static_cast<int>(vis.size());
-  std::vector<std::vector<double>> cost(vis.size(), std::vector<double>(est.size()));
-  for (size_t i = 0; i < vis.size(); ++i) {
+  std::vector<std::vector<double>> cost(in_frame.size(), std::vector<double>(est.size()));
+  for (size_t i = 0; i < in_frame.size(); ++i) {
     for (size_t j = 0; j < est.size(); ++j) {
-      cost[i][j] = (f.truth[vis[i]].centre - est[j].centre).norm();
+      cost[i][j] = (f.truth[in_frame[i]].centre - est[j].centre).norm();
     }
   }
   const std::vector<int> a = perceive::HungarianAssign(cost);
   std::vector<char> used(est.size(), 0);
-  for (size_t i = 0; i < vis.size(); ++i) {
-    const bool task = vis[i] == f.task_object;
+  for (size_t i = 0; i < in_frame.size(); ++i) {
+    const bool hit = !a.empty() && a[i] >= 0 && cost[i][a[i]] <= o.match_m;
+    if (hit) used[a[i]] = 1;
+    const perceive::ObjectTruth& t = f.truth[in_frame[i]];
+    if (t.at_edge) ++m->at_edge;
+    if (t.pixels < o.visible_pixels || t.at_edge) continue;
+    const bool task = in_frame[i] == f.task_object;
+    ++m->objects;
     m->task_objects += task;
-    if (a.empty() || a[i] < 0 || cost[i][a[i]] > o.match_m) continue;
-    used[a[i]] = 1;
-    const perceive::ObjectTruth& t = f.truth[vis[i]];
+    if (!hit) continue;
     const perceive::ObjectEstimate& e = est[a[i]];
     ++m->matched;
     m->shape_ok += e.shape == t.shape;
@@ -218,12 +229,13 @@ void ScoreFrame(const VisionFrame& f, const std::vector<perceive::ObjectEstimate
     m->width_err_cm += 100 * std::abs(e.width_m - t.width_m);
     if (task) {
       ++m->task_matched;
-      for (int k = 0; k < 3; ++k)
+      m->task_shape_ok += e.shape == t.shape;
+      for (int k = 0; k < 3; ++k) {
         m->task_abs_err_cm[k] += 100 * std::abs(e.centre[k] - t.centre[k]);
+      }
     }
     if (t.shape == 0) {
-      double e_yaw = std::remainder(e.yaw_rad - t.yaw_rad, M_PI / 2);
-      m->yaw_err_deg += std::abs(e_yaw) * 180 / M_PI;
+      m->yaw_err_deg += std::abs(std::remainder(e.yaw_rad - t.yaw_rad, M_PI / 2)) * 180 / M_PI;
       ++m->yaw_count;
     }
     if (t.shape != 2) {

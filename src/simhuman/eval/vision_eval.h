@@ -19,10 +19,13 @@ namespace simhuman::eval {
 struct VisionTrainConfig {
   int width = 240, height = 180;
   double fovy_deg = 60;
-  int planning_scenes = 1500;
+  int planning_scenes = 1200;
   int planning_views = 2;
   int placing_episodes = 300;
-  int placing_frames = 8;
+  int placing_frames = 12;
+  /// Held-object frames from anywhere on the way (the loop reads the object in the hand from
+  /// the start of transport), not only over the destination as the eval's placing stage
+  double placing_near_m = 1.0;
   double gaze_jitter_m = 0.05;
   double position_noise_m = 0.02;
   int epochs = 25;
@@ -56,7 +59,8 @@ core::StatusOr<std::unique_ptr<perceive::VisionModel>> TrainVisionModel(
 /// DASH Table 2's metrics for one stage.
 struct VisionStageMetrics {
   int frames = 0;
-  int objects = 0;  ///< truth objects in view (>= visible_pixels pixels)
+  int objects = 0;  ///< truth objects in view (>= visible_pixels pixels, none on the edge)
+  int at_edge = 0;  ///< objects cut by the frame's edge (not scored: no estimate is made)
   int matched = 0;  ///< of those, with an estimate within match_m
   int shape_ok = 0, colour_ok = 0;
   double abs_err_cm[3] = {0, 0, 0};            ///< sums over matched objects (world x, y, z)
@@ -65,8 +69,8 @@ struct VisionStageMetrics {
   double yaw_err_deg = 0;  ///< sum over matched boxes (face yaw, modulo 90 degrees)
   int yaw_count = 0;
   int up_count = 0;
-  int false_positives = 0;                 ///< estimates matched to no visible object
-  int task_objects = 0, task_matched = 0;  ///< the object being moved
+  int false_positives = 0;  ///< estimates matched to no visible object
+  int task_objects = 0, task_matched = 0, task_shape_ok = 0;  ///< the object being moved
   double task_abs_err_cm[3] = {0, 0, 0};
   double frame_s = 0;   ///< vision inference time, sum over frames (one thread)
   double render_s = 0;  ///< the renderer's time, sum over frames

@@ -49,7 +49,7 @@ core::Status Shoot(perceive::HeadCamera& cam, const Episode& e, const mjData* d,
   f.render_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   SH_RETURN_IF_ERROR(cam.CaptureBodyIds(d, f.camera, &f.body_ids));
   f.truth = perceive::TableObjectsTruth(*e.world, e.catalog, d);
-  perceive::CountPixels(f.body_ids, &f.truth);
+  perceive::CountPixels(f.body_ids, f.camera.width, f.camera.height, &f.truth);
   for (size_t i = 0; i < f.truth.size(); ++i) {
     if (f.truth[i].id == e.ts.task.object_id) f.task_object = static_cast<int>(i);
   }
@@ -105,9 +105,9 @@ core::Status CollectVisionFrames(const VisionFrameOptions& o,
     auto hook = [&](const mjData* d) {
       if (++step % every != 0 || shot >= o.placing_frames || !status.ok()) return;
       const Eigen::Map<const Eigen::Vector3d> p(d->xpos + 3 * goal.object_body);
-      // placing: lifted and over the destination (within 8 cm of it)
+      // placing: lifted and over the destination
       const bool lifted = p.z() > start.z() + 0.03;
-      const bool near = (p - goal.target).head<2>().norm() < 0.08;
+      const bool near = (p - goal.target).head<2>().norm() < o.placing_near_m;
       if (!lifted || !near) return;
       const Eigen::Vector3d gaze = aim + Jitter(rng, o.gaze_jitter_m);
       status = Shoot(*cam, e, d, gaze, kind == "place" ? "placing" : "stacking", seed, on_frame);

@@ -34,12 +34,13 @@ struct VisionFrameOptions {
   /// Scenes at task planning, and frames of each (the gaze jittered by up to gaze_jitter_m)
   int planning_scenes = 100;
   int planning_views = 1;
-  /// Pick-and-place episodes whose placing/stacking stage (the object lifted and within 8 cm of
-  /// its destination) is sampled every placing_every_s (at most placing_frames per episode);
-  /// the scripted grasp
+  /// Pick-and-place episodes whose placing/stacking stage (the object lifted and within
+  /// placing_near_m of its destination, horizontally) is sampled every placing_every_s (at most
+  /// placing_frames per episode); the scripted grasp
   int placing_episodes = 50;
   int placing_frames = 8;
   double placing_every_s = 0.15;
+  double placing_near_m = 0.08;
   double gaze_jitter_m = 0.05;
   /// DASH's 2 cm position noise: the gaze during placing aims at the destination moved by up to
   /// this much, as the estimate it is computed from would be

@@ -50,7 +50,7 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     }
     // the palm: to the object's side along its normal, `press_m` into it, by inverse kinematics
     // from the current targets, so the servos' lag does not stall the approach
-    const Eigen::Vector3d c = ObserveObject(goal, d).centre;
+    const Eigen::Vector3d c = ObserveObject(goal, d, false).centre;
     const Eigen::Vector3d p(d->site_xpos + 3 * ix.arm.palm_site);
     const Eigen::Vector3d n = PalmNormal(d, ix);
     // the reach may take a far object higher than the default grip height

@@ -226,7 +226,7 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   // either side) when the arm can; from all around (as round objects) when it cannot
   std::vector<double> faces, around;
   if (g_.shape == GraspShape::kBox) {
-    const double yaw = ObserveObject(g_, d_).yaw_rad;
+    const double yaw = ObserveObject(g_, d_, false).yaw_rad;
     for (int k = 0; k < 4; ++k) {
       for (double off : {0.0, -1.0, 1.0, -2.0, 2.0})
         faces.push_back(yaw + k * M_PI / 2 + off * o_.box_face_spread_rad);
@@ -313,7 +313,7 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   const int hb = ix_.arm.hand_body;
   const Eigen::Matrix3d rh = Rot(d_, hb);
   const Eigen::Vector3d ph(d_->xpos + 3 * hb);
-  const ObjectView seen = ObserveObject(g_, d_);
+  const ObjectView seen = ObserveObject(g_, d_, true);
   const Eigen::Vector3d r_obj = rh.transpose() * (seen.base - ph);
   const Eigen::Vector3d r_palm =
       rh.transpose() * (Eigen::Vector3d(d_->site_xpos + 3 * ix_.arm.palm_site) - ph);
@@ -397,7 +397,7 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
   // place: the object upright (it tilts in the grip on the way) with its centre of mass over the
   // target, turning the hand about that centre; then down until it bears on its support
   for (int k = 0; k < o_.align_passes; ++k) {
-    const ObjectView seen = ObserveObject(g_, d_);
+    const ObjectView seen = ObserveObject(g_, d_, true);
     const Eigen::Vector3d c = seen.centre;
     Eigen::Vector3d err = g_.target - c;
     err.z() = 0;
@@ -478,8 +478,8 @@ TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const T
   return run.Go(policy);
 }
 
-ObjectView ObserveObject(const TabletopGoal& g, const mjData* d) {
-  if (g.observe) return g.observe(d);
+ObjectView ObserveObject(const TabletopGoal& g, const mjData* d, bool held) {
+  if (g.observe) return g.observe(d, held);
   ObjectView v;
   const Eigen::Matrix3d r =
       Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * g.object_body);

@@ -50,12 +50,14 @@ struct TabletopGoal {
   /// state (ground truth); the vision module supplies its delayed camera estimates
   /// (eval/tabletop_vision.h). Outcome checks (dropped, lifted, at rest) always read the
   /// simulation.
-  std::function<ObjectView(const mjData* d)> observe;
+  /// `held`: the object is in the hand (transport, alignment) rather than on the table (reach,
+  /// grasp).
+  std::function<ObjectView(const mjData* d, bool held)> observe;
 };
 
-/// `goal.observe(d)` when set, else the object's state in `d` (centre of mass, body origin at
-/// its base, body z axis, yaw of its body x axis).
-ObjectView ObserveObject(const TabletopGoal& goal, const mjData* d);
+/// `goal.observe(d, held)` when set, else the object's state in `d` (centre of mass, body origin
+/// at its base, body z axis, yaw of its body x axis).
+ObjectView ObserveObject(const TabletopGoal& goal, const mjData* d, bool held);
 
 /// Settings of RunTabletop.
 struct TabletopOptions {

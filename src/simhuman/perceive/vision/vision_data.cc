@@ -90,12 +90,20 @@ core::Status HeadCamera::CaptureBodyIds(const mjData* d, const PinholeCamera& ca
   return renderer_->RenderBodyIds(d, cam.Spec(), ids);
 }
 
-void CountPixels(const std::vector<int>& ids, std::vector<ObjectTruth>* truth) {
+void CountPixels(const std::vector<int>& ids, int width, int height,
+                 std::vector<ObjectTruth>* truth) {
   std::map<int, int> count;
-  for (int b : ids) {
-    if (b >= 0) ++count[b];
+  std::map<int, bool> edge;
+  for (size_t i = 0; i < ids.size(); ++i) {
+    if (ids[i] < 0) continue;
+    ++count[ids[i]];
+    const int x = static_cast<int>(i % width), y = static_cast<int>(i / width);
+    if (x == 0 || y == 0 || x == width - 1 || y == height - 1) edge[ids[i]] = true;
   }
-  for (ObjectTruth& t : *truth) t.pixels = count.count(t.body) ? count[t.body] : 0;
+  for (ObjectTruth& t : *truth) {
+    t.pixels = count.count(t.body) ? count[t.body] : 0;
+    t.at_edge = edge.count(t.body) > 0;
+  }
 }
 
 void AddColourPixels(const std::vector<uint8_t>& rgb, const std::vector<int>& ids,

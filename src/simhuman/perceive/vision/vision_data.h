@@ -28,9 +28,10 @@ struct ObjectTruth {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< world: its solids' bounding-box centre
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();     ///< its body's z axis (a sphere: world z)
   double height_m = 0;
-  double width_m = 0;  ///< a box's side, a cylinder's or sphere's diameter
-  double yaw_rad = 0;  ///< world yaw of its body's x axis
-  int pixels = 0;      ///< how many pixels of the last labelled frame show it
+  double width_m = 0;    ///< a box's side, a cylinder's or sphere's diameter
+  double yaw_rad = 0;    ///< world yaw of its body's x axis
+  int pixels = 0;        ///< how many pixels of the last labelled frame show it
+  bool at_edge = false;  ///< some of them on the frame's edge (partly out of view)
 };
 
 /// The objects of `catalog` the vision module knows, at their poses in `d`.
@@ -69,8 +70,10 @@ class HeadCamera {
   int frames_ = 0;
 };
 
-/// Counts each truth object's pixels in `ids` (into ObjectTruth::pixels).
-void CountPixels(const std::vector<int>& ids, std::vector<ObjectTruth>* truth);
+/// Counts each truth object's pixels in `ids` (a width x height frame) into ObjectTruth::pixels,
+/// and whether any lies on the frame's edge.
+void CountPixels(const std::vector<int>& ids, int width, int height,
+                 std::vector<ObjectTruth>* truth);
 
 /// Adds a frame's pixels to a colour table: object pixels as their colour, all others as
 /// background.

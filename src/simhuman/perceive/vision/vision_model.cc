@@ -299,7 +299,15 @@ core::StatusOr<std::unique_ptr<VisionModel>> VisionModel::Load(const std::string
 std::vector<ObjectEstimate> VisionModel::Estimate(const std::vector<uint8_t>& rgb,
                                                   const PinholeCamera& cam) const {
   std::vector<ObjectEstimate> out;
-  const std::vector<Blob> blobs = FindBlobs(rgb, cam.width, cam.height, colours_, min_pixels);
+  std::vector<Blob> blobs = FindBlobs(rgb, cam.width, cam.height, colours_, min_pixels);
+  // an object cut by the frame's edge is not seen whole: no estimate (its position would be a
+  // guess)
+  blobs.erase(std::remove_if(blobs.begin(), blobs.end(),
+                             [&](const Blob& b) {
+                               return b.x0 == 0 || b.y0 == 0 || b.x1 == cam.width - 1 ||
+                                      b.y1 == cam.height - 1;
+                             }),
+              blobs.end());
   if (blobs.empty()) return out;
   std::vector<BlobSample> samples;
   for (const Blob& b : blobs) samples.push_back(MakeBlobSample(rgb, cam, b));
@@ -334,7 +342,14 @@ std::vector<ObjectEstimate> VisionModel::Estimate(const std::vector<uint8_t>& rg
     e.pixels = blobs[i].pixels;
     e.u = blobs[i].cu;
     e.v = blobs[i].cv;
-    out.push_back(e);
+    // a hand or another object can split one object into blobs: estimates of one colour whose
+    // centres lie closer than any two objects can are one object, seen by its largest blob
+    // (blobs come largest first)
+    bool duplicate = false;
+    for (const ObjectEstimate& o : out) {
+      duplicate = duplicate || (o.colour == e.colour && (o.centre - e.centre).norm() < merge_m);
+    }
+    if (!duplicate) out.push_back(e);
   }
   return out;
 }

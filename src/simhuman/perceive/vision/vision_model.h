@@ -79,7 +79,9 @@ class VisionModel {
   const ColourTable& colours() const { return colours_; }
 
   /// The objects in one frame: blobs of >= min_pixels, then the network on all of them in one
-  /// batch; blobs it calls "not an object" are dropped. Runs on the calling thread.
+  /// batch; blobs touching the frame's edge (an object partly out of view), blobs it calls "not
+  /// an object", and smaller blobs whose estimate lies within merge_m of a larger one's of the
+  /// same colour are dropped. Runs on the calling thread.
   std::vector<ObjectEstimate> Estimate(const std::vector<uint8_t>& rgb,
                                        const PinholeCamera& cam) const;
 
@@ -90,6 +92,9 @@ class VisionModel {
   VisionLosses Evaluate(const std::vector<BlobSample>& samples) const;
 
   int min_pixels = 12;
+  /// Estimates of one colour closer than this are one object split by an occluder (tabletop
+  /// objects are at least 9.75 cm across, so two of them cannot be this close).
+  double merge_m = 0.06;
   /// The camera it was trained for (frames should come from the same size and field of view).
   int width = 160, height = 120;
   double fovy_deg = 60;
