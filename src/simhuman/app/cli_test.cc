@@ -107,9 +107,9 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
   ExpectBadInput(Cli({"train", "--task", "vision", "--out", out, "--steps", "5"}),
                  {"--task vision takes --out, --config and --seed only"});
   ExpectBadInput(Cli({"train", "--task", "vision"}), {"--out"});
-  ExpectBadInput(Cli({"eval", "--suite", "vision", "--vision-model", out + "/none.pt", "--out",
-                      out + "/e"}),
-                 {out + "/none.pt", "train --task vision"});
+  ExpectBadInput(
+      Cli({"eval", "--suite", "vision", "--vision-model", out + "/none.pt", "--out", out + "/e"}),
+      {out + "/none.pt", "train --task vision"});
   ExpectBadInput(Cli({"eval", "--suite", "place", "--perception", "vision", "--vision-model",
                       out + "/none.pt", "--out", out + "/p"}),
                  {out + "/none.pt"});

@@ -19,8 +19,9 @@ std::string DefaultVisionModel() {
 
 absl::Status CheckVisionModelFile(const std::string& path) {
   if (std::filesystem::is_regular_file(path)) return absl::OkStatus();
-  return absl::NotFoundError(path + ": cannot open the vision model file (make one with "
-                                    "`simhuman train --task vision`)");
+  return absl::NotFoundError(path +
+                             ": cannot open the vision model file (make one with "
+                             "`simhuman train --task vision`)");
 }
 
 int VisionTrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err) {
