@@ -217,7 +217,7 @@ const std::string& OffscreenRenderer::egl_platform() const { return egl_->platfo
 
 const std::string& OffscreenRenderer::gl_renderer() const { return egl_->gl_renderer(); }
 
-absl::Status OffscreenRenderer::PrepareScene(const mjData* d, const CameraSpec& cam) {
+absl::Status OffscreenRenderer::DrawScene(const mjData* d, const CameraSpec& cam, bool segment) {
   if (std::this_thread::get_id() != owner_thread_) {
     return absl::FailedPreconditionError(
         "OffscreenRenderer::Render called from a thread other than the one that created the "
@@ -235,6 +235,18 @@ absl::Status OffscreenRenderer::PrepareScene(const mjData* d, const CameraSpec& 
         "OffscreenRenderer: the scene needs more than RendererOptions.max_geoms = ", scene_.maxgeom,
         " geoms; raise it"));
   }
+  // the lit image, or each geom painted with its index (+1) for RenderBodyIds
+  scene_.flags[mjRND_SHADOW] = !segment && options_.shadows ? 1 : 0;
+  scene_.flags[mjRND_REFLECTION] = !segment && options_.reflections ? 1 : 0;
+  scene_.flags[mjRND_SKYBOX] = !segment && options_.skybox ? 1 : 0;
+  scene_.flags[mjRND_SEGMENT] = segment ? 1 : 0;
+  scene_.flags[mjRND_IDCOLOR] = segment ? 1 : 0;
+  const mjrRect viewport = {0, 0, width_, height_};
+  mjr_setBuffer(mjFB_OFFSCREEN, &context_);
+  mjr_render(viewport, &scene_, &context_);
+  // rows of odd widths are not 4-byte aligned
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   return absl::OkStatus();
 }
 
@@ -243,18 +255,8 @@ absl::Status OffscreenRenderer::Render(const mjData* d, const CameraSpec& cam,
   if (d == nullptr || rgb == nullptr) {
     return absl::InvalidArgumentError("OffscreenRenderer::Render: data or output is null");
   }
-  if (absl::Status s = PrepareScene(d, cam); !s.ok()) return s;
-  scene_.flags[mjRND_SHADOW] = options_.shadows ? 1 : 0;
-  scene_.flags[mjRND_REFLECTION] = options_.reflections ? 1 : 0;
-  scene_.flags[mjRND_SKYBOX] = options_.skybox ? 1 : 0;
-  scene_.flags[mjRND_SEGMENT] = 0;
-  scene_.flags[mjRND_IDCOLOR] = 0;
+  if (absl::Status s = DrawScene(d, cam, false); !s.ok()) return s;
   const mjrRect viewport = {0, 0, width_, height_};
-  mjr_setBuffer(mjFB_OFFSCREEN, &context_);
-  mjr_render(viewport, &scene_, &context_);
-  // rows of odd widths are not 4-byte aligned
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   if (options_.sky) {
     // the sky goes under the caption: read, paint, draw back, then the caption
     mjr_readPixels(bottom_up_.data(), depth_.data(), viewport, &context_);
@@ -288,19 +290,9 @@ absl::Status OffscreenRenderer::RenderBodyIds(const mjData* d, const CameraSpec&
   if (d == nullptr || body_ids == nullptr) {
     return absl::InvalidArgumentError("OffscreenRenderer::RenderBodyIds: data or output is null");
   }
-  if (absl::Status s = PrepareScene(d, cam); !s.ok()) return s;
-  scene_.flags[mjRND_SHADOW] = 0;
-  scene_.flags[mjRND_REFLECTION] = 0;
-  scene_.flags[mjRND_SKYBOX] = 0;
-  scene_.flags[mjRND_SEGMENT] = 1;
-  scene_.flags[mjRND_IDCOLOR] = 1;
+  if (absl::Status s = DrawScene(d, cam, true); !s.ok()) return s;
   const mjrRect viewport = {0, 0, width_, height_};
-  mjr_setBuffer(mjFB_OFFSCREEN, &context_);
-  mjr_render(viewport, &scene_, &context_);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
   mjr_readPixels(bottom_up_.data(), nullptr, viewport, &context_);
-  scene_.flags[mjRND_SEGMENT] = 0;
-  scene_.flags[mjRND_IDCOLOR] = 0;
   if (const GLenum err = glGetError(); err != GL_NO_ERROR) {
     return absl::InternalError(
         absl::StrCat("OffscreenRenderer::RenderBodyIds: OpenGL error 0x", absl::Hex(err)));

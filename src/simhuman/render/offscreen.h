@@ -123,8 +123,9 @@ class OffscreenRenderer {
 
   // copies `m` into model_ and makes the scene and MuJoCo's render context for it
   absl::Status LoadModel(const mjModel* m, int max_samples);
-  // makes the context current and the scene from `d` seen by `cam`
-  absl::Status PrepareScene(const mjData* d, const CameraSpec& cam);
+  // makes the context current and draws the scene from `d` seen by `cam` into the offscreen
+  // buffer: lit (options_) or, with `segment`, each geom in its segmentation id colour
+  absl::Status DrawScene(const mjData* d, const CameraSpec& cam, bool segment);
 };
 
 }  // namespace simhuman::render
