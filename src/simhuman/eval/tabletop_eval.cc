@@ -171,7 +171,8 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
       if (!vision) {
         SH_ASSIGN_OR_RETURN(vision, TabletopVision::Create(o.vision_model, w->model()));
       }
-      seen = vision->Begin(*w, catalog, ts.task.object_id, ts.task.target_id, &goal);
+      seen =
+          vision->Begin(*w, catalog, ts.task.object_id, ts.task.target_id, &goal, ix.arm.hand_body);
       if (!seen.ok() && !absl::IsNotFound(seen)) return seen;
       hook = [&](const mjData* d) {
         if (core::Status s = vision->OnStep(d); !s.ok()) seen = s;
@@ -306,6 +307,7 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
                                                        control::Trajectory* trajectory,
                                                        const std::string& vision_model) {
   SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopGoalFromPlan(chain, w));
+  SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(w, 0, true));
   std::unique_ptr<TabletopVision> vision;
   if (!vision_model.empty()) {
     SH_ASSIGN_OR_RETURN(vision, TabletopVision::Create(vision_model, w.model()));
@@ -314,10 +316,10 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
     for (const plan::ContactPair& p : chain.steps[1].pairs) {
       if (p.subject_object && *p.subject_object == held.object) support = p.object;
     }
-    SH_RETURN_IF_ERROR(vision->Begin(w, w.catalog(), held.object, support, &goal));
+    SH_RETURN_IF_ERROR(
+        vision->Begin(w, w.catalog(), held.object, support, &goal, ix.arm.hand_body));
   }
   core::Status seen = absl::OkStatus();
-  SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(w, 0, true));
   const control::manip::TabletopOptions options;
   SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
                       control::LoadGraspPolicy(grasp_policy));

@@ -60,8 +60,14 @@ core::StatusOr<std::unique_ptr<TabletopVision>> TabletopVision::Create(
 
 core::Status TabletopVision::Begin(world::SimWorld& world, const core::SceneCatalog& catalog,
                                    const std::string& object_id, const std::string& support_id,
-                                   control::manip::TabletopGoal* goal) {
+                                   control::manip::TabletopGoal* goal, int hand_body) {
   world_ = &world;
+  hand_body_ = hand_body;
+  in_hand_.clear();
+  held_since_ = 0;
+  anchor_.reset();
+  prior_c_.reset();
+  prior_up_.reset();
   SH_RETURN_IF_ERROR(camera_->SetModel(world.model()));
   queue_.clear();
   arrived_.clear();
@@ -115,22 +121,93 @@ core::Status TabletopVision::OnStep(const mjData* d) {
   SH_RETURN_IF_ERROR(camera_->Capture(d, cam, &rgb));
   render_s_ += Since(t0);
   t0 = Clock::now();
-  tracker_.Update(model_->Estimate(rgb, cam));
+  const std::vector<perceive::ObjectEstimate> est = model_->Estimate(rgb, cam);
+  tracker_.Update(est);
   vision_s_ += Since(t0);
   ++frames_;
-  queue_.push_back({d->time, tracker_.objects()[moved_]});
+  Timed f{d->time, tracker_.objects()[moved_]};
+  if (hand_body_ >= 0) {
+    f.hand_pos = Eigen::Vector3d(d->xpos + 3 * hand_body_);
+    f.hand_rot =
+        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * hand_body_);
+    // once the object's place in the hand is known, it is the estimate of its colour nearest
+    // to where the hand holds it (the tracker may give its identity to a neighbour it passes)
+    f.in_hand = !anchor_;
+    if (anchor_) {
+      const Eigen::Vector3d at = f.hand_rot * *anchor_ + f.hand_pos;
+      double best = o_.in_hand_gate_m;
+      for (const perceive::ObjectEstimate& e : est) {
+        const double dist = (e.centre - at).norm();
+        if (e.colour == planned_.colour && dist < best) {
+          best = dist;
+          f.e = e;
+          f.in_hand = true;
+        }
+      }
+    }
+  }
+  queue_.push_back(f);
   // estimates arrive delay_s after their frame
   while (!queue_.empty() && queue_.front().t + o_.delay_s <= d->time + 1e-9) {
-    arrived_.push_back(queue_.front().e);
-    queue_.pop_front();
+    const Timed& a = queue_.front();
+    arrived_.push_back(a.e);
     if (static_cast<int>(arrived_.size()) > std::max(1, o_.smooth_frames)) arrived_.pop_front();
+    if (a.in_hand && o_.in_hand_frames > 0) {
+      in_hand_.push_back({a.t, a.hand_rot.transpose() * (a.e.centre - a.hand_pos),
+                          a.hand_rot.transpose() * a.e.up, a.hand_rot, a.hand_pos});
+      if (static_cast<int>(in_hand_.size()) > o_.in_hand_frames) in_hand_.pop_front();
+    }
+    queue_.pop_front();
   }
   return absl::OkStatus();
 }
 
-control::manip::ObjectView TabletopVision::View(const mjData* /*d*/, bool held) const {
+namespace {
+
+// per-axis medians of the centres and up axes of `frames` (in the hand's frame)
+void MedianInHand(const std::vector<const TabletopVision::InHand*>& frames, Eigen::Vector3d* c,
+                  Eigen::Vector3d* up) {
+  std::vector<double> v(frames.size());
+  for (int k = 0; k < 6; ++k) {
+    for (size_t i = 0; i < frames.size(); ++i)
+      v[i] = k < 3 ? frames[i]->centre[k] : frames[i]->up[k - 3];
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    (k < 3 ? (*c)[k] : (*up)[k - 3]) = v[v.size() / 2];
+  }
+}
+
+}  // namespace
+
+control::manip::ObjectView TabletopVision::View(const mjData* d, bool held) const {
+  if (held && !held_) held_since_ = d->time;
   held_ = held_ || held;
   if (!held || arrived_.empty()) return ToView(planned_);
+  // in the hand's frame: the frames since the grip closed, carried by the hand's pose now
+  std::vector<const InHand*> use;
+  for (const InHand& h : in_hand_) {
+    if (h.t >= held_since_ - o_.in_hand_lead_s) use.push_back(&h);
+  }
+  if (!use.empty()) {
+    Eigen::Vector3d c, up;
+    MedianInHand(use, &c, &up);
+    if (!prior_c_) {
+      // the grasp prior: the object where the plan saw it, upright as it stood, when the grip
+      // had closed (the oldest frame counted as held), carried by the hand since
+      const InHand& h0 = *use.front();
+      prior_c_ = h0.hand_rot.transpose() * (planned_.centre - h0.hand_pos);
+      prior_up_ = h0.hand_rot.transpose() * planned_.up;
+    }
+    c = o_.prior_weight * *prior_c_ + (1 - o_.prior_weight) * c;
+    if (up.norm() > 1e-6) up.normalize();
+    up = o_.prior_up_weight * *prior_up_ + (1 - o_.prior_up_weight) * up;
+    if (!anchor_) anchor_ = c;
+    const Eigen::Matrix3d r =
+        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * hand_body_);
+    perceive::ObjectEstimate e = arrived_.back();
+    e.centre = r * c + Eigen::Vector3d(d->xpos + 3 * hand_body_);
+    e.up = up.norm() > 1e-6 ? Eigen::Vector3d(r * up.normalized()) : e.up;
+    return ToView(e);
+  }
   // per-axis medians of the centre and the up axis over the arrived frames
   perceive::ObjectEstimate e = arrived_.back();
   std::vector<double> v(arrived_.size());

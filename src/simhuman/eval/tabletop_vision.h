@@ -7,6 +7,7 @@
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "simhuman/control/manip/tabletop_pipeline.h"
@@ -26,6 +27,26 @@ struct VisionLoopOptions {
   /// The object in the hand is read as the per-axis median of this many newest arrived frames
   /// (0.25 s at 20 Hz): the hand hides part of it and single frames err by a few cm.
   int smooth_frames = 5;
+  /// The object in the hand is also kept in the hand's frame (the hand's pose at each frame's
+  /// capture is known from the body's own joints): its estimate is the per-axis median of the
+  /// newest `in_hand_frames` frames taken since the grip closed, carried by the hand's current
+  /// pose. The hand's own moves then move the estimate exactly, and noise averages out instead
+  /// of making the placing controller chase it. 0: off (the world-frame median above).
+  int in_hand_frames = 20;
+  /// Frames this long before the controllers first ask for the object in the hand count as
+  /// held (the lift: the grip has closed and the hand rises).
+  double in_hand_lead_s = 0.6;
+  /// Once its place in the hand is known, the held object is the estimate of its colour within
+  /// this distance of that place (none: the frame gives no estimate of it)
+  double in_hand_gate_m = 0.06;
+  /// The held object's estimate blends, in the hand's frame, a grasp prior (the object where
+  /// task planning saw it and upright, taken into the hand's frame when the grip closed; it errs
+  /// by what the grasp pushed or tipped it) with the in-hand median of the frames (its error is
+  /// mostly a bias of 1-4 cm and several degrees where the hand hides the object, which the
+  /// median does not average away): weight of the prior for the centre and for the up axis
+  /// (chosen on 32 episodes: docs/BENCHMARKS.md, issue 16 session 22). 0: the frames alone.
+  double prior_weight = 0.8;
+  double prior_up_weight = 0.8;
 };
 
 /// The camera and the vision model across episodes (one OpenGL context; each episode's world is
@@ -41,17 +62,19 @@ class TabletopVision {
   /// geometry of `goal` (object body and shape given) from the estimates of the object of that
   /// shape and colour; for a stack, the target is the top of the estimated `support` object.
   /// Sets goal->observe to this camera's delayed estimates. NotFound when the named object is not
-  /// seen (the message lists what was).
+  /// seen (the message lists what was). `hand_body`: the hand that takes the object (its frame
+  /// keeps the held object's estimates; -1: none).
   core::Status Begin(world::SimWorld& world, const core::SceneCatalog& catalog,
                      const std::string& object_id, const std::string& support_id,
-                     control::manip::TabletopGoal* goal);
+                     control::manip::TabletopGoal* goal, int hand_body = -1);
 
   /// Call after each physics step: renders and estimates at rate_hz.
   core::Status OnStep(const mjData* d);
 
-  /// The moved object as the controllers see it now: in the hand, the newest estimate that has
-  /// arrived (delayed); before, the task planning estimate (DASH's grasp works from the plan: the
-  /// hand hides the object while it closes, and the network errs by several cm then).
+  /// The moved object as the controllers see it now: in the hand, the arrived (delayed)
+  /// estimates, fused in the hand's frame when a hand is known; before, the task planning estimate
+  /// (DASH's grasp works from the plan: the hand hides the object while it closes, and the network
+  /// errs by several cm then).
   control::manip::ObjectView View(const mjData* d, bool held) const;
 
   int frames() const { return frames_; }
@@ -62,7 +85,22 @@ class TabletopVision {
   struct Timed {
     double t = 0;
     perceive::ObjectEstimate e;
+    // the hand's pose when the frame was taken
+    Eigen::Vector3d hand_pos = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d hand_rot = Eigen::Matrix3d::Identity();
+    bool in_hand = false;  // `e` is the held object's estimate, for the in-hand median
   };
+
+ public:
+  /// One arrived estimate of the held object in the hand's frame.
+  struct InHand {
+    double t = 0;
+    Eigen::Vector3d centre, up;
+    Eigen::Matrix3d hand_rot;  // the hand's pose when the frame was taken
+    Eigen::Vector3d hand_pos;
+  };
+
+ private:
   TabletopVision() = default;
   control::manip::ObjectView ToView(const perceive::ObjectEstimate& e) const;
 
@@ -76,7 +114,13 @@ class TabletopVision {
   Eigen::Vector3d target_ = Eigen::Vector3d::Zero();
   std::deque<Timed> queue_;  // estimates still on their way (not yet delay_s old)
   std::deque<perceive::ObjectEstimate> arrived_;  // the newest smooth_frames that have arrived
-  mutable bool held_ = false;  // the controllers have asked for the object in the hand
+  std::deque<InHand> in_hand_;  // the newest arrived estimates in the hand's frame
+  int hand_body_ = -1;
+  mutable bool held_ = false;      // the controllers have asked for the object in the hand
+  mutable double held_since_ = 0;  // when they first did
+  // the grasp prior in the hand's frame: the planned centre and up axis when the grip closed
+  mutable std::optional<Eigen::Vector3d> prior_c_, prior_up_;
+  mutable std::optional<Eigen::Vector3d> anchor_;  // where the hand holds the object (hand frame)
   double next_t_ = 0;
   int frames_ = 0;
   double vision_s_ = 0, render_s_ = 0;

@@ -127,6 +127,70 @@ TEST(TabletopVisionTest, TheGoalIsPlannedFromTheFirstFrameIntegration) {
   EXPECT_THAT(std::string(missing.message()), HasSubstr("seen:"));
 }
 
+// Once held, the object is kept in the hand's frame: when the hand moves, the estimate moves
+// with it at once (before any new frame arrives). The "hand" here is the object's own body, so
+// the object sits still in it; with the in-hand estimate off, the estimate stays behind.
+TEST(TabletopVisionTest, TheHeldObjectsEstimateMovesWithTheHandIntegration) {
+  if (!std::filesystem::exists(ShippedModel())) GTEST_SKIP() << "no " << ShippedModel();
+  auto ts = world::GenerateTabletop(11, "place");
+  ASSERT_TRUE(ts.ok());
+  auto catalog = world::BuildCatalog(ts->scene);
+  ASSERT_TRUE(catalog.ok());
+  auto human = world::AgentFromHuman(ts->scene.humans[0], 0, *catalog);
+  ASSERT_TRUE(human.ok());
+  auto w = world::SimWorld::Create(*catalog, {*human}, world::DexterousModelOptions());
+  ASSERT_TRUE(w.ok());
+  const mjModel* m = (*w)->model();
+  mjData* d = (*w)->data();
+  mj_forward(m, d);
+  auto truth = TabletopSceneGoal(*ts, **w);
+  ASSERT_TRUE(truth.ok());
+  const int body = truth->object_body;
+  const int adr = m->jnt_qposadr[m->body_jntadr[body]];
+  for (int in_hand : {20, 0}) {
+    VisionLoopOptions lo;
+    lo.in_hand_frames = in_hand;
+    auto vision = TabletopVision::Create(ShippedModel(), m, lo);
+    if (absl::IsUnavailable(vision.status())) GTEST_SKIP() << vision.status();
+    ASSERT_TRUE(vision.ok()) << vision.status();
+    control::manip::TabletopGoal goal = *truth;
+    ASSERT_TRUE(
+        (*vision)->Begin(**w, *catalog, ts->task.object_id, "", &goal, /*hand_body=*/body).ok());
+    // a second of frames, then the controllers take the object as held
+    for (int k = 0; k < 20; ++k) {
+      d->time += 0.05;
+      ASSERT_TRUE((*vision)->OnStep(d).ok());
+    }
+    const control::manip::ObjectView before = goal.observe(d, true);
+    const Eigen::Vector3d c0(d->xipos + 3 * body);
+    EXPECT_LT((before.centre - c0).norm(), 0.03) << "in_hand_frames " << in_hand;
+    // the hand (the object's body) lifts by 10 cm and turns 30 degrees about the vertical
+    const double q0[7] = {d->qpos[adr],     d->qpos[adr + 1], d->qpos[adr + 2], d->qpos[adr + 3],
+                          d->qpos[adr + 4], d->qpos[adr + 5], d->qpos[adr + 6]};
+    d->qpos[adr + 2] += 0.1;
+    const Eigen::Quaterniond turn(Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d::UnitZ()));
+    const Eigen::Quaterniond q = turn * Eigen::Quaterniond(d->qpos[adr + 3], d->qpos[adr + 4],
+                                                           d->qpos[adr + 5], d->qpos[adr + 6]);
+    d->qpos[adr + 3] = q.w();
+    d->qpos[adr + 4] = q.x();
+    d->qpos[adr + 5] = q.y();
+    d->qpos[adr + 6] = q.z();
+    mj_forward(m, d);
+    const Eigen::Vector3d c1(d->xipos + 3 * body);
+    const control::manip::ObjectView after = goal.observe(d, true);
+    if (in_hand > 0) {
+      EXPECT_LT((after.centre - c1).norm(), 0.03);
+      // the same error as before, turned with the hand
+      EXPECT_LT(((after.centre - c1) - turn * (before.centre - c0)).norm(), 0.001);
+    } else {
+      EXPECT_LT((after.centre - before.centre).norm(), 1e-9);  // no new frame yet
+    }
+    mju_copy(d->qpos + adr, q0, 7);
+    mj_forward(m, d);
+    d->time = 0;
+  }
+}
+
 TEST(TabletopVisionTest, APlaceTaskRunsOnTheCamerasEstimatesSlow) {
   if (!std::filesystem::exists(ShippedModel())) GTEST_SKIP() << "no " << ShippedModel();
   TabletopEvalOptions o;
