@@ -181,6 +181,16 @@ TEST(OfflinePlannerTest, WrappersAndFillersAreStripped) {
   }
   EXPECT_EQ(PlanText("living_room", "sit on the couch for a while, and once you're done, get up"),
             sofa + " / sofa005|none|none|none|front");
+  // spoken fillers, a reason clause, stage directions in brackets, a tester's numbered steps
+  for (const char* c : {"uh hey sit on the couch", "erm sit on the sofa since your feet hurt",
+                        "[she sits on the settee]", "Step 3: sit on the sofa."}) {
+    EXPECT_EQ(PlanText("living_room", c), sofa) << c;
+  }
+  EXPECT_EQ(PlanText("living_room", "wander over to the sofa because it is comfy, then sit on it"),
+            "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up");
+  // a reason ends at its clause: what follows is still planned
+  EXPECT_EQ(PlanText("living_room", "sit on the couch because you are tired, then get up"),
+            sofa + " / sofa005|none|none|none|front");
   // an unknown action word still says what is understood
   core::Status st = PlanStatus("living_room", "do a little dance");
   EXPECT_TRUE(absl::IsInvalidArgument(st)) << st;

@@ -35,7 +35,8 @@ core::StatusOr<Tokens> Tokenize(std::string_view command) {
                c == '/') {
       flush();
     } else if (c == ',' || c == '.' || c == ';' || c == '!' || c == '?' || c == ':' ||
-               c == '>') {  // "sit chair002 -> type on laptop001": an arrow sequences
+               c == '>' ||  // "sit chair002 -> type on laptop001": an arrow sequences
+               c == '(' || c == ')' || c == '[' || c == ']') {  // "[sits in the chair]"
       flush();
       out.push_back("then");
     } else {

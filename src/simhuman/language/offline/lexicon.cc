@@ -190,6 +190,29 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
       {{"head", "over", "to"}, {"go"}},
       {{"head", "to"}, {"go"}},
       {{"head", "towards"}, {"go"}},
+      {{"nip", "over", "to"}, {"go"}},
+      {{"nip", "to"}, {"go"}},
+      {{"wander", "over", "to"}, {"go"}},
+      {{"wander", "to"}, {"go"}},
+      {{"crash", "on"}, {"lie", "on"}},
+      {{"crash", "in"}, {"lie", "in"}},
+      {{"have", "a", "lie"}, {"lie"}},  // "have a lie-down"
+      {{"have", "a", "sit"}, {"sit"}},  // "have a sit down"
+      {{"take", "hold", "of"}, {"grab"}},
+      {{"settle", "into"}, {"sit", "in"}},
+      {{"settle", "in"}, {"sit", "in"}},
+      {{"pop", "yourself"}, {"sit"}},  // "pop yourself down on the settee"
+      {{"rises"}, {"stand", "up"}},
+      {{"crosses", "to"}, {"go"}},  // a stage direction: "[crosses to the armchair]"
+      {{"cross", "to"}, {"go"}},
+      // a director's and a tester's framing: "from the top: ...", "Step 1: ..."
+      {{"from", "the", "top"}, {}},
+      {{"on", "action"}, {}},
+      {{"step", "1"}, {}},
+      {{"step", "2"}, {}},
+      {{"step", "3"}, {}},
+      {{"step", "4"}, {}},
+      {{"step", "5"}, {}},
   };
   static const auto* all = [] {
     auto* v = new std::vector<std::pair<Tokens, Tokens>>(*phrases);
@@ -233,6 +256,7 @@ const std::map<std::string, std::string>& Synonyms() {
       {"plop", "sit"},        {"plonk", "sit"},        {"resting", "with"},
       {"typing", "type"},     {"pls", "please"},       {"plz", "please"},
       {"but", "and"},         {"flattest", "flat"},    {"pick", "grab"},
+      {"fwd", "forward"},     {"pop", "put"},
   };
   return *words;
 }
@@ -240,13 +264,14 @@ const std::map<std::string, std::string>& Synonyms() {
 // words dropped everywhere: fillers and determiners (relations and "your" are kept)
 const std::set<std::string>& Fillers() {
   static const auto* words = new std::set<std::string>{
-      "the",      "a",        "an",        "please",      "now",      "just",    "first",
-      "slowly",   "gently",   "carefully", "quickly",     "also",     "again",   "down",
-      "over",     "kindly",   "could",     "you",         "can",      "should",  "i",
-      "want",     "would",    "like",      "to_",         "for",      "this",    "my",
-      "both_",    "along",    "there_",    "comfortably", "straight", "located", "placed",
-      "standing", "sitting_", "lying_",    "one_",        "ok",       "okay",    "so",
-      "u",        "thanks",   "thank",     "thx",         "some",     "yeah",    "alright"};
+      "the", "a", "an", "please", "now", "just", "first", "slowly", "gently", "carefully",
+      "quickly", "also", "again", "down", "over", "kindly", "could", "you", "can", "should", "i",
+      "want", "would", "like", "to_", "for", "this", "my", "both_", "along", "there_",
+      "comfortably", "straight", "located", "placed", "standing", "sitting_", "lying_", "one_",
+      "ok", "okay", "so", "u", "thanks", "thank", "thx", "some", "yeah", "alright",
+      // spoken fillers and slang ("um can you like sit down", "yo go sit on the couch fr")
+      "um", "uh", "erm", "hmm", "hey", "yo", "fr", "rn", "bro", "cheers", "briefly", "bit",
+      "round"};
   return *words;
 }
 
@@ -358,6 +383,11 @@ Tokens Normalize(const Tokens& in) {
       continue;
     }
     std::string w = in[i++];
+    // a reason says why, not what: "sit down because you're tired" (up to the clause's end)
+    if (w == "because" || w == "since" || w == "cause" || w == "cuz") {
+      while (i < in.size() && in[i] != "then") ++i;
+      continue;
+    }
     auto syn = Synonyms().find(w);
     if (syn != Synonyms().end()) w = syn->second;
     if (Fillers().count(w)) continue;
