@@ -93,19 +93,34 @@ TEST(VisionEvalTest, AMissingOrWrongModelIsNamed) {
   EXPECT_THAT(std::string(r.status().message()), HasSubstr("truth, vision"));
 }
 
+// a generated table scene's world (the seated dexterous human), forwarded, and its true goal
+struct TableWorld {
+  world::TabletopScene ts;
+  core::SceneCatalog catalog;
+  std::unique_ptr<world::SimWorld> w;
+  control::manip::TabletopGoal truth;
+};
+core::StatusOr<TableWorld> MakeTableWorld(uint64_t seed, const std::string& kind) {
+  TableWorld t;
+  SH_ASSIGN_OR_RETURN(t.ts, world::GenerateTabletop(seed, kind));
+  SH_ASSIGN_OR_RETURN(t.catalog, world::BuildCatalog(t.ts.scene));
+  SH_ASSIGN_OR_RETURN(world::AgentSpec human,
+                      world::AgentFromHuman(t.ts.scene.humans[0], 0, t.catalog));
+  SH_ASSIGN_OR_RETURN(t.w,
+                      world::SimWorld::Create(t.catalog, {human}, world::DexterousModelOptions()));
+  mj_forward(t.w->model(), t.w->data());
+  SH_ASSIGN_OR_RETURN(t.truth, TabletopSceneGoal(t.ts, *t.w));
+  return t;
+}
+
 TEST(TabletopVisionTest, TheGoalIsPlannedFromTheFirstFrameIntegration) {
   if (!std::filesystem::exists(ShippedModel())) GTEST_SKIP() << "no " << ShippedModel();
-  auto ts = world::GenerateTabletop(11, "stack");
-  ASSERT_TRUE(ts.ok());
-  auto catalog = world::BuildCatalog(ts->scene);
-  ASSERT_TRUE(catalog.ok());
-  auto human = world::AgentFromHuman(ts->scene.humans[0], 0, *catalog);
-  ASSERT_TRUE(human.ok());
-  auto w = world::SimWorld::Create(*catalog, {*human}, world::DexterousModelOptions());
-  ASSERT_TRUE(w.ok());
-  mj_forward((*w)->model(), (*w)->data());
-  auto truth = TabletopSceneGoal(*ts, **w);
-  ASSERT_TRUE(truth.ok());
+  auto tw = MakeTableWorld(11, "stack");
+  ASSERT_TRUE(tw.ok()) << tw.status();
+  const world::TabletopScene* ts = &tw->ts;
+  const core::SceneCatalog* catalog = &tw->catalog;
+  std::unique_ptr<world::SimWorld>* w = &tw->w;
+  const control::manip::TabletopGoal* truth = &tw->truth;
   auto vision = TabletopVision::Create(ShippedModel(), (*w)->model());
   if (absl::IsUnavailable(vision.status())) GTEST_SKIP() << vision.status();
   ASSERT_TRUE(vision.ok()) << vision.status();
@@ -132,19 +147,14 @@ TEST(TabletopVisionTest, TheGoalIsPlannedFromTheFirstFrameIntegration) {
 // the object sits still in it; with the in-hand estimate off, the estimate stays behind.
 TEST(TabletopVisionTest, TheHeldObjectsEstimateMovesWithTheHandIntegration) {
   if (!std::filesystem::exists(ShippedModel())) GTEST_SKIP() << "no " << ShippedModel();
-  auto ts = world::GenerateTabletop(11, "place");
-  ASSERT_TRUE(ts.ok());
-  auto catalog = world::BuildCatalog(ts->scene);
-  ASSERT_TRUE(catalog.ok());
-  auto human = world::AgentFromHuman(ts->scene.humans[0], 0, *catalog);
-  ASSERT_TRUE(human.ok());
-  auto w = world::SimWorld::Create(*catalog, {*human}, world::DexterousModelOptions());
-  ASSERT_TRUE(w.ok());
+  auto tw = MakeTableWorld(11, "place");
+  ASSERT_TRUE(tw.ok()) << tw.status();
+  const world::TabletopScene* ts = &tw->ts;
+  const core::SceneCatalog* catalog = &tw->catalog;
+  std::unique_ptr<world::SimWorld>* w = &tw->w;
+  const control::manip::TabletopGoal* truth = &tw->truth;
   const mjModel* m = (*w)->model();
   mjData* d = (*w)->data();
-  mj_forward(m, d);
-  auto truth = TabletopSceneGoal(*ts, **w);
-  ASSERT_TRUE(truth.ok());
   const int body = truth->object_body;
   const int adr = m->jnt_qposadr[m->body_jntadr[body]];
   for (int in_hand : {20, 0}) {
