@@ -1,6 +1,9 @@
 #include "simhuman/app/cli.h"
 
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -133,6 +136,29 @@ TEST(CliTest, ReplayAndServeRefuseBadInput) {
   ExpectBadInput(Cli({"serve"}), {"--scene"});
   ExpectBadInput(Cli({"serve", "--scene", "nowhere"}), {"--scene", "living_room"});
   ExpectBadInput(Cli({"serve", "--scene", "sit_demo", "--speed", "-1"}), {"--speed"});
+}
+
+// a port in use is named (it is bound before the session is built, which takes seconds)
+TEST(CliTest, ServeNamesAPortInUseAndAMissingPolicy) {
+  const int sock = socket(AF_INET, SOCK_STREAM, 0);
+  ASSERT_GE(sock, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  a.sin_port = 0;
+  ASSERT_EQ(bind(sock, reinterpret_cast<sockaddr*>(&a), sizeof(a)), 0);
+  ASSERT_EQ(listen(sock, 1), 0);
+  socklen_t len = sizeof(a);
+  ASSERT_EQ(getsockname(sock, reinterpret_cast<sockaddr*>(&a), &len), 0);
+  const std::string port = std::to_string(ntohs(a.sin_port));
+  CliRun r = Cli({"serve", "--scene", "sit_demo", "--port", port});
+  close(sock);
+  EXPECT_EQ(r.code, kExitInternal) << r.err;
+  EXPECT_NE(r.err.find("127.0.0.1:" + port), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("in use"), std::string::npos) << r.err;
+  // a walking policy file that is not there is named before anything starts
+  ExpectBadInput(Cli({"serve", "--scene", "sit_demo", "--policy", "/nonexistent/walk.pt"}),
+                 {"--policy", "/nonexistent/walk.pt"});
 }
 
 TEST(CliTest, PlanPrintsTheChainAndExplains) {

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <csignal>
+#include <filesystem>
 #include <thread>
 
 #include "simhuman/app/common.h"
@@ -64,6 +65,14 @@ int ServeCommand(const ServeFlags& flags, std::ostream& out, std::ostream& err) 
   live.walk_policy = flags.no_walk ? "" : eval::DefaultWalkPolicy(flags.policy);
   absl::Status valid = live.Validate();
   if (!valid.ok()) return ReportError(err, kCommand, core::Annotate(valid, "--speed"));
+  std::error_code ec;
+  if (!flags.policy.empty() && !flags.no_walk &&
+      !std::filesystem::is_regular_file(flags.policy, ec)) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError("--policy: no policy file '" + flags.policy +
+                                                  "' (a walking policy, e.g. "
+                                                  "assets/policies/walk.pt)"));
+  }
 
   // SIGINT and SIGTERM go to one waiting thread only (blocked here, before any thread starts)
   sigset_t signals;
@@ -75,15 +84,17 @@ int ServeCommand(const ServeFlags& flags, std::ostream& out, std::ostream& err) 
   web::ServerOptions server_options;
   server_options.bind = flags.bind;
   server_options.port = flags.port;
-  core::StatusOr<std::unique_ptr<web::LiveSession>> session =
-      web::LiveSession::Start(*scene, std::move(*planner), live);
-  if (!session.ok()) return ReportError(err, kCommand, session.status());
-  web::LiveServer server(session->get(), server_options);
+  // the address first: a port in use is said before seconds go into building the session
+  web::LiveServer server(nullptr, server_options);
   absl::Status bound = server.Bind();
   if (!bound.ok()) {
     err << "simhuman serve: error: " << bound.message() << std::endl;
     return kExitInternal;
   }
+  core::StatusOr<std::unique_ptr<web::LiveSession>> session =
+      web::LiveSession::Start(*scene, std::move(*planner), live);
+  if (!session.ok()) return ReportError(err, kCommand, session.status());
+  server.set_session(session->get());
   if (flags.bind != "127.0.0.1" && flags.bind != "localhost") {
     err << "simhuman serve: warning: listening on " << flags.bind
         << ": other machines can reach this server, and it has no authentication" << std::endl;

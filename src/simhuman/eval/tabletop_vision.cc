@@ -107,6 +107,7 @@ control::manip::ObjectView TabletopVision::ToView(const perceive::ObjectEstimate
   v.up = e.shape == 2 ? Eigen::Vector3d::UnitZ() : e.up;
   v.base = e.centre - 0.5 * height_m_ * v.up;
   v.yaw_rad = e.yaw_rad;
+  v.estimated = true;
   return v;
 }
 

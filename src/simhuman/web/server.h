@@ -31,8 +31,11 @@ struct ServerOptions {
 /// The server. Serve() blocks; Stop() may be called from any thread.
 class LiveServer {
  public:
-  /// `session` must outlive the server.
+  /// `session` must outlive the server. It may be null until set_session(), so that the address
+  /// is bound (and a port in use reported) before a session is built.
   LiveServer(LiveSession* session, const ServerOptions& options);
+  /// The session the routes serve; call before Serve().
+  void set_session(LiveSession* session) { session_ = session; }
   ~LiveServer();
   LiveServer(const LiveServer&) = delete;
   LiveServer& operator=(const LiveServer&) = delete;

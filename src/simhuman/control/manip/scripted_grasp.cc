@@ -50,7 +50,8 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     }
     // the palm: to the object's side along its normal, `press_m` into it, by inverse kinematics
     // from the current targets, so the servos' lag does not stall the approach
-    const Eigen::Vector3d c = ObserveObject(goal, d, false).centre;
+    const ObjectView seen = ObserveObject(goal, d, false);
+    const Eigen::Vector3d& c = seen.centre;
     const Eigen::Vector3d p(d->site_xpos + 3 * ix.arm.palm_site);
     const Eigen::Vector3d n = PalmNormal(d, ix);
     // the reach may take a far object higher than the default grip height
@@ -70,7 +71,9 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
         st->palm_goal = c - behind * f;
         st->palm_goal.z() = c.z() + goal.half_width_m - o.press_m;
       } else {
-        const double gap = (c - p).dot(n) - goal.half_width_m;
+        // the palm on the object: no gap, whatever an estimate says (it would not follow an
+        // object the palm pushes; the simulation's state does)
+        const double gap = seen.estimated && palm ? 0.0 : (c - p).dot(n) - goal.half_width_m;
         st->palm_goal = p + n * (gap + o.press_m);
         st->palm_goal.z() = st->grip_z;
       }

@@ -32,6 +32,9 @@ struct ObjectView {
   Eigen::Vector3d base = Eigen::Vector3d::Zero();
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
   double yaw_rad = 0;
+  /// An estimate (a camera's) rather than the simulation's state: controllers that would follow
+  /// the object's every move (the grasp's palm while it presses) go by touch instead.
+  bool estimated = false;
 };
 
 /// What to move and where.
