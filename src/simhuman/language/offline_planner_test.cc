@@ -188,6 +188,13 @@ TEST(OfflinePlannerTest, WrappersAndFillersAreStripped) {
   }
   EXPECT_EQ(PlanText("living_room", "wander over to the sofa because it is comfy, then sit on it"),
             "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up");
+  // a correction ("not ...", "don't go ...") names what not to do; encouragement is filler
+  for (const char* c : {"sit on the sofa, not the armchair",
+                        "don't sit on the armchair, sit on "
+                        "the sofa instead",
+                        "let's get you sitting on the sofa, nice and easy"}) {
+    EXPECT_EQ(PlanText("living_room", c), sofa) << c;
+  }
   // a reason ends at its clause: what follows is still planned
   EXPECT_EQ(PlanText("living_room", "sit on the couch because you are tired, then get up"),
             sofa + " / sofa005|none|none|none|front");

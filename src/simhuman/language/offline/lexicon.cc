@@ -213,6 +213,11 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
       {{"step", "3"}, {}},
       {{"step", "4"}, {}},
       {{"step", "5"}, {}},
+      // a nurse's encouragement: "let's get you sitting down ...", "that's it"
+      {{"lets", "get", "you"}, {}},
+      {{"thats", "it"}, {}},
+      {{"nice", "and", "slow"}, {}},
+      {{"nice", "and", "easy"}, {}},
   };
   static const auto* all = [] {
     auto* v = new std::vector<std::pair<Tokens, Tokens>>(*phrases);
@@ -270,8 +275,8 @@ const std::set<std::string>& Fillers() {
       "comfortably", "straight", "located", "placed", "standing", "sitting_", "lying_", "one_",
       "ok", "okay", "so", "u", "thanks", "thank", "thx", "some", "yeah", "alright",
       // spoken fillers and slang ("um can you like sit down", "yo go sit on the couch fr")
-      "um", "uh", "erm", "hmm", "hey", "yo", "fr", "rn", "bro", "cheers", "briefly", "bit",
-      "round"};
+      "um", "uh", "erm", "hmm", "hey", "yo", "fr", "rn", "bro", "cheers", "briefly", "bit", "round",
+      "lets", "instead"};
   return *words;
 }
 
@@ -383,8 +388,14 @@ Tokens Normalize(const Tokens& in) {
       continue;
     }
     std::string w = in[i++];
-    // a reason says why, not what: "sit down because you're tired" (up to the clause's end)
-    if (w == "because" || w == "since" || w == "cause" || w == "cuz") {
+    // a reason says why, not what: "sit down because you're tired" (up to the clause's end);
+    // a clause that starts with "not" corrects the one before: "sit on the stool, not the chair"
+    // as does "don't go/sit/lie ..." before what to do instead
+    const bool clause_start = out.empty() || out.back() == "then";
+    const bool dont_move = w == "dont" && clause_start && i < in.size() &&
+                           (in[i] == "go" || in[i] == "walk" || in[i] == "sit" || in[i] == "lie");
+    if (w == "because" || w == "since" || w == "cause" || w == "cuz" ||
+        (w == "not" && clause_start) || dont_move) {
       while (i < in.size() && in[i] != "then") ++i;
       continue;
     }
