@@ -136,6 +136,30 @@ TEST(WalkTask, ObservationsFiniteRewardPositiveFallDetectedIntegration) {
   EXPECT_TRUE(fell);
 }
 
+// the reward weights reach the task: a narrower gait term scores the same state lower, and a
+// zero weight leaves it out of the total
+TEST(WalkTask, RewardWeightsShapeTheGaitTermIntegration) {
+  WalkRewardWeights narrow;
+  narrow.gait_legs_width = 0.05;
+  WalkRewardWeights none;
+  none.gait_legs = 0;
+  std::vector<double> term, total;
+  for (const WalkRewardWeights& w : {WalkRewardWeights(), narrow, none}) {
+    auto task = WalkTask::Create(1, WalkPhysicsSolver::kNewton, {1.0}, "", w);
+    ASSERT_TRUE(task.ok()) << task.status();
+    std::vector<float> obs(control::kWalkObsDim), act(control::kWalkActDim, 0.3f);
+    (*task)->Reset(0, 3, obs.data());
+    StepInfo info;
+    for (int k = 0; k < 5; ++k) (*task)->Step(0, act.data(), obs.data(), &info);
+    term.push_back((*task)->last_terms(0).gait_legs);
+    total.push_back(info.reward);
+  }
+  EXPECT_GT(term[0], 0.0);
+  EXPECT_LT(term[1], term[0]);
+  EXPECT_NEAR(term[2], term[0], 1e-12);  // the same state and width
+  EXPECT_NEAR(total[0] - total[2], 0.1 * term[0], 1e-6);
+}
+
 TEST(WalkTask, BodiesOfEverySizeSeeTheAdultsObservationIntegration) {
   // a child (0.6) and a tall adult (1.2) started alike observe the same numbers: the task works
   // in the adult's units (control::WalkScale)

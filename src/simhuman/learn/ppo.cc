@@ -39,6 +39,9 @@ TaskOptions OptionsOf(const PpoConfig& c) {
   o.solver = c.physics_solver;
   o.body_scales = c.body_scales;
   o.walk_gait = c.walk_gait;
+  o.walk_gait_weight = c.walk_gait_weight;
+  o.walk_gait_width = c.walk_gait_width;
+  o.walk_foot_slip_weight = c.walk_foot_slip_weight;
   return o;
 }
 

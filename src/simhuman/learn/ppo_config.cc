@@ -39,6 +39,15 @@ const core::FieldTable<PpoConfig>& Table() {
            .In(NumberRange::Closed(0.5, 1.5)),
        F("walk_gait", &PpoConfig::walk_gait,
          "walk task's reference gait (\"\" the original, or human)"),
+       F("walk_gait_weight", &PpoConfig::walk_gait_weight,
+         "walk task: weight of the reward for the legs following the reference gait")
+           .In(kAtLeast0),
+       F("walk_gait_width", &PpoConfig::walk_gait_width,
+         "walk task: that term is exp(-summed squared leg error / this), rad^2")
+           .In(kPositive),
+       F("walk_foot_slip_weight", &PpoConfig::walk_foot_slip_weight,
+         "walk task: weight of the penalty on feet sliding while on the ground")
+           .In(kAtLeast0),
        F("seed", &PpoConfig::seed, "run seed"),
        F("rollout_steps", &PpoConfig::rollout_steps, "steps per env per iteration").In(kAtLeast1),
        F("epochs", &PpoConfig::epochs, "PPO epochs per iteration").In(kAtLeast1),
@@ -117,6 +126,15 @@ absl::Status PpoConfig::Validate() const {
   if (!walk_gait.empty() && !TaskHasBodyScales(task)) {
     return absl::InvalidArgumentError("training config: walk_gait '" + walk_gait +
                                       "' applies to the walk task only; task is '" + task + "'");
+  }
+  const PpoConfig defaults;
+  if (!TaskHasBodyScales(task) && (walk_gait_weight != defaults.walk_gait_weight ||
+                                   walk_gait_width != defaults.walk_gait_width ||
+                                   walk_foot_slip_weight != defaults.walk_foot_slip_weight)) {
+    return absl::InvalidArgumentError(
+        "training config: walk_gait_weight, walk_gait_width and walk_foot_slip_weight apply to "
+        "the walk task only; task is '" +
+        task + "'");
   }
   if (static_cast<int>(body_scales.size()) > num_envs) {
     return absl::InvalidArgumentError(

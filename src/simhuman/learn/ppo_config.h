@@ -35,6 +35,10 @@ struct PpoConfig {
   /// The walk task's reference gait (control::WalkGait: "" the original, "human"); recorded in
   /// the policy file, which then runs with it.
   std::string walk_gait;
+  /// walk task's reward: the leg gait term's weight and width (rad^2), the foot-slip weight
+  double walk_gait_weight = 1.0;
+  double walk_gait_width = 0.5;
+  double walk_foot_slip_weight = 0.5;
   uint64_t seed = 1;
   int rollout_steps = 32;  ///< per env per iteration
   int epochs = 3;

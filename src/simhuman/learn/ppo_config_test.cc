@@ -19,9 +19,10 @@ std::string Error(const json& j) {
 TEST(PpoConfigTable, DefaultsRoundTripThroughToJsonWithEveryKey) {
   const PpoConfig defaults;
   json j = defaults.ToJson();
-  // every key (38 before the table, + target_kl, body_scales, walk_gait)
-  EXPECT_EQ(j.size(), 41u);
+  // every key (38 before the table, + target_kl, body_scales, walk_gait, the walk reward's 3)
+  EXPECT_EQ(j.size(), 44u);
   EXPECT_EQ(j["walk_gait"], "");
+  EXPECT_EQ(j["walk_gait_weight"], 1.0);
   EXPECT_EQ(j["body_scales"], json::array({1.0}));
   EXPECT_EQ(j["target_kl"], 0.0);
   EXPECT_TRUE(j["seed"].is_number_unsigned());
@@ -53,6 +54,10 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
             "training config 'body_scales' = [0.6, 2] is invalid; entry 1 (2) is outside the "
             "valid range [0.5, 1.5]");
   EXPECT_THAT(Error(json{{"body_scales", json::array()}}), HasSubstr("at least 1 entry"));
+  EXPECT_THAT(Error(json{{"walk_gait_width", 0}}),
+              HasSubstr("training config 'walk_gait_width' = 0 is invalid; valid range is (0"));
+  EXPECT_THAT(Error(json{{"task", "grasp"}, {"walk_foot_slip_weight", 2}}),
+              HasSubstr("apply to the walk task only; task is 'grasp'"));
   EXPECT_THAT(Error(json{{"body_scales", {1, "big"}}}), HasSubstr("/body_scales/1"));
   EXPECT_THAT(Error(json{{"body_scales", {0.8, 1.0}}, {"amp_clips", {"a.bvh"}}}),
               HasSubstr("body_scales other than [1] cannot be combined with amp_clips"));

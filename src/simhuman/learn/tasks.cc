@@ -11,11 +11,15 @@ const std::vector<TaskDef>& Tasks() {
   static const std::vector<TaskDef> tasks = {
       {"walk", "walk to a target stand point and stop there facing a heading",
        [](int envs, const TaskOptions& o) -> core::StatusOr<std::unique_ptr<VecTask>> {
+         WalkRewardWeights w;
+         w.gait_legs = o.walk_gait_weight;
+         w.gait_legs_width = o.walk_gait_width;
+         w.foot_slip = o.walk_foot_slip_weight;
          SH_ASSIGN_OR_RETURN(
              std::unique_ptr<WalkTask> t,
              WalkTask::Create(
                  envs, o.solver != "newton" ? WalkPhysicsSolver::kPgs : WalkPhysicsSolver::kNewton,
-                 o.body_scales, o.walk_gait));
+                 o.body_scales, o.walk_gait, w));
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "", true},

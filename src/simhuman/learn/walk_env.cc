@@ -22,11 +22,13 @@ constexpr int kFirstLegJoint = 14;
 
 core::StatusOr<std::unique_ptr<WalkTask>> WalkTask::Create(int num_envs, WalkPhysicsSolver solver,
                                                            const std::vector<double>& body_scales,
-                                                           const std::string& gait) {
+                                                           const std::string& gait,
+                                                           const WalkRewardWeights& weights) {
   if (num_envs <= 0) return absl::InvalidArgumentError("walk task: --envs must be positive");
   if (body_scales.empty()) return absl::InvalidArgumentError("walk task: no body scales");
   std::unique_ptr<WalkTask> t(new WalkTask());
   SH_ASSIGN_OR_RETURN(t->params_, control::WalkGait(gait));
+  t->w_ = weights;
   world::ModelOptions opt;
   opt.timestep_s = control::kWalkPhysicsDt;
   opt.solver = solver == WalkPhysicsSolver::kPgs ? "pgs" : "newton";
@@ -218,7 +220,7 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
     double dq = d->qpos[a.hinge_qpos[j]] - ref[j];
     (j >= kFirstLegJoint ? err_legs : err_upper) += dq * dq;
   }
-  t.gait_legs = std::exp(-err_legs / 0.5);
+  t.gait_legs = std::exp(-err_legs / w_.gait_legs_width);
   t.gait_upper = std::exp(-err_upper / 1.0);
   bool lc, rc;
   control::FootContacts(d, ix, &lc, &rc);

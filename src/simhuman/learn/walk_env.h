@@ -27,6 +27,8 @@ namespace simhuman::learn {
 struct WalkRewardWeights {
   double velocity = 1.0, progress = 1.5, yaw_rate = 0.5, facing = 0.5, gait_legs = 1.0,
          gait_upper = 0.3, contact = 0.3, upright = 0.5, height = 0.3, alive = 0.5, at_target = 1.0;
+  /// the leg term is exp(-sum of squared leg errors to the reference / this), rad^2
+  double gait_legs_width = 0.5;
   /// head and trunk held upright, as a person walks (1/e at about 20 degrees of tilt each)
   double posture = 1.0;
   double action_rate = 0.02, power = 2e-5, foot_slip = 0.5;
@@ -48,11 +50,12 @@ enum class WalkPhysicsSolver { kNewton, kPgs };
 class WalkTask : public VecTask {
  public:
   /// Builds one model per body scale and `num_envs` mjData, env i holding a human of
-  /// `body_scales[i % size]`, walking to the reference `gait` (control::WalkGait). Errors from
-  /// model building, scales outside [0.5, 1.5] and unknown gaits.
+  /// `body_scales[i % size]`, walking to the reference `gait` (control::WalkGait), rewarded
+  /// with `weights`. Errors from model building, scales outside [0.5, 1.5] and unknown gaits.
   static core::StatusOr<std::unique_ptr<WalkTask>> Create(
       int num_envs, WalkPhysicsSolver solver = WalkPhysicsSolver::kNewton,
-      const std::vector<double>& body_scales = {1.0}, const std::string& gait = "");
+      const std::vector<double>& body_scales = {1.0}, const std::string& gait = "",
+      const WalkRewardWeights& weights = {});
   ~WalkTask() override;
 
   std::string name() const override { return "walk"; }
