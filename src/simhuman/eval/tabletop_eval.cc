@@ -22,6 +22,18 @@ const std::vector<std::string>& PerceptionNames() {
   return k;
 }
 
+core::StatusOr<TableWorld> MakeTableWorld(uint64_t seed, const std::string& kind) {
+  TableWorld t;
+  SH_ASSIGN_OR_RETURN(t.ts, world::GenerateTabletop(seed, kind));
+  SH_ASSIGN_OR_RETURN(t.catalog, world::BuildCatalog(t.ts.scene));
+  SH_ASSIGN_OR_RETURN(world::AgentSpec human,
+                      world::AgentFromHuman(t.ts.scene.humans[0], 0, t.catalog));
+  SH_ASSIGN_OR_RETURN(t.world,
+                      world::SimWorld::Create(t.catalog, {human}, world::DexterousModelOptions()));
+  mj_forward(t.world->model(), t.world->data());
+  return t;
+}
+
 core::StatusOr<control::manip::TabletopGoal> TabletopSceneGoal(const world::TabletopScene& ts,
                                                                const world::SimWorld& w) {
   const world::ObjectSpec* obj = nullptr;

@@ -9,11 +9,13 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "simhuman/control/manip/tabletop_pipeline.h"
 #include "simhuman/control/runner.h"
+#include "simhuman/core/scene_catalog.h"
 #include "simhuman/core/status.h"
 #include "simhuman/plan/contact_chain.h"
 #include "simhuman/world/sim_world.h"
@@ -79,6 +81,15 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     const std::function<void(const TabletopEpisode&)>& on_episode = {});
 
 nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e);
+
+/// A generated table scene (GenerateTabletop(seed, kind)) built into a world with the seated
+/// dexterous human, forwarded.
+struct TableWorld {
+  world::TabletopScene ts;
+  core::SceneCatalog catalog;
+  std::unique_ptr<world::SimWorld> world;
+};
+core::StatusOr<TableWorld> MakeTableWorld(uint64_t seed, const std::string& kind);
 
 /// The pipeline's goal for a generated scene's task in `world` (built from that scene): the
 /// object's body, shape, sizes and planned base position, the target and the support body.

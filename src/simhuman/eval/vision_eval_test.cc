@@ -93,34 +93,15 @@ TEST(VisionEvalTest, AMissingOrWrongModelIsNamed) {
   EXPECT_THAT(std::string(r.status().message()), HasSubstr("truth, vision"));
 }
 
-// a generated table scene's world (the seated dexterous human), forwarded, and its true goal
-struct TableWorld {
-  world::TabletopScene ts;
-  core::SceneCatalog catalog;
-  std::unique_ptr<world::SimWorld> w;
-  control::manip::TabletopGoal truth;
-};
-core::StatusOr<TableWorld> MakeTableWorld(uint64_t seed, const std::string& kind) {
-  TableWorld t;
-  SH_ASSIGN_OR_RETURN(t.ts, world::GenerateTabletop(seed, kind));
-  SH_ASSIGN_OR_RETURN(t.catalog, world::BuildCatalog(t.ts.scene));
-  SH_ASSIGN_OR_RETURN(world::AgentSpec human,
-                      world::AgentFromHuman(t.ts.scene.humans[0], 0, t.catalog));
-  SH_ASSIGN_OR_RETURN(t.w,
-                      world::SimWorld::Create(t.catalog, {human}, world::DexterousModelOptions()));
-  mj_forward(t.w->model(), t.w->data());
-  SH_ASSIGN_OR_RETURN(t.truth, TabletopSceneGoal(t.ts, *t.w));
-  return t;
-}
-
 TEST(TabletopVisionTest, TheGoalIsPlannedFromTheFirstFrameIntegration) {
   if (!std::filesystem::exists(ShippedModel())) GTEST_SKIP() << "no " << ShippedModel();
   auto tw = MakeTableWorld(11, "stack");
   ASSERT_TRUE(tw.ok()) << tw.status();
   const world::TabletopScene* ts = &tw->ts;
   const core::SceneCatalog* catalog = &tw->catalog;
-  std::unique_ptr<world::SimWorld>* w = &tw->w;
-  const control::manip::TabletopGoal* truth = &tw->truth;
+  std::unique_ptr<world::SimWorld>* w = &tw->world;
+  auto truth = TabletopSceneGoal(tw->ts, *tw->world);
+  ASSERT_TRUE(truth.ok()) << truth.status();
   auto vision = TabletopVision::Create(ShippedModel(), (*w)->model());
   if (absl::IsUnavailable(vision.status())) GTEST_SKIP() << vision.status();
   ASSERT_TRUE(vision.ok()) << vision.status();
@@ -151,8 +132,9 @@ TEST(TabletopVisionTest, TheHeldObjectsEstimateMovesWithTheHandIntegration) {
   ASSERT_TRUE(tw.ok()) << tw.status();
   const world::TabletopScene* ts = &tw->ts;
   const core::SceneCatalog* catalog = &tw->catalog;
-  std::unique_ptr<world::SimWorld>* w = &tw->w;
-  const control::manip::TabletopGoal* truth = &tw->truth;
+  std::unique_ptr<world::SimWorld>* w = &tw->world;
+  auto truth = TabletopSceneGoal(tw->ts, *tw->world);
+  ASSERT_TRUE(truth.ok()) << truth.status();
   const mjModel* m = (*w)->model();
   mjData* d = (*w)->data();
   const int body = truth->object_body;

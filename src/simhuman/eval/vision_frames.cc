@@ -14,23 +14,7 @@ namespace simhuman::eval {
 
 namespace {
 
-struct Episode {
-  world::TabletopScene ts;
-  core::SceneCatalog catalog;
-  std::unique_ptr<world::SimWorld> world;
-};
-
-core::StatusOr<Episode> MakeEpisode(uint64_t seed, const std::string& kind) {
-  Episode e;
-  SH_ASSIGN_OR_RETURN(e.ts, world::GenerateTabletop(seed, kind));
-  SH_ASSIGN_OR_RETURN(e.catalog, world::BuildCatalog(e.ts.scene));
-  SH_ASSIGN_OR_RETURN(world::AgentSpec human,
-                      world::AgentFromHuman(e.ts.scene.humans[0], 0, e.catalog));
-  SH_ASSIGN_OR_RETURN(e.world,
-                      world::SimWorld::Create(e.catalog, {human}, world::DexterousModelOptions()));
-  mj_forward(e.world->model(), e.world->data());
-  return e;
-}
+using Episode = TableWorld;
 
 Eigen::Vector3d Jitter(core::Rng& rng, double r) {
   return Eigen::Vector3d(rng.Uniform(-r, r), rng.Uniform(-r, r), 0.0);
@@ -72,7 +56,7 @@ core::Status CollectVisionFrames(const VisionFrameOptions& o,
   std::unique_ptr<perceive::HeadCamera> cam;
   for (int i = 0; i < o.planning_scenes; ++i) {
     const uint64_t seed = core::DeriveSeed(o.seed, 0x7151, o.stream, static_cast<uint64_t>(i));
-    SH_ASSIGN_OR_RETURN(Episode e, MakeEpisode(seed, i % 2 == 0 ? "place" : "stack"));
+    SH_ASSIGN_OR_RETURN(Episode e, MakeTableWorld(seed, i % 2 == 0 ? "place" : "stack"));
     SH_RETURN_IF_ERROR(UseModel(o, e.world->model(), &cam));
     core::Rng rng(core::DeriveSeed(seed, 0x9a2e));
     for (int v = 0; v < o.planning_views; ++v) {
@@ -87,7 +71,7 @@ core::Status CollectVisionFrames(const VisionFrameOptions& o,
   for (int i = 0; i < o.placing_episodes; ++i) {
     const uint64_t seed = core::DeriveSeed(o.seed, 0x7152, o.stream, static_cast<uint64_t>(i));
     const std::string kind = i % 2 == 0 ? "place" : "stack";
-    SH_ASSIGN_OR_RETURN(Episode e, MakeEpisode(seed, kind));
+    SH_ASSIGN_OR_RETURN(Episode e, MakeTableWorld(seed, kind));
     SH_RETURN_IF_ERROR(UseModel(o, e.world->model(), &cam));
     SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix,
                         control::manip::MakeGraspIndex(*e.world, 0, true));
