@@ -204,6 +204,90 @@ TEST(OfflinePlannerTest, WrappersAndFillersAreStripped) {
   EXPECT_THAT(st.message(), HasSubstr("I understand: sit, lie"));
 }
 
+// each phrasing plans as its plain form does (the plain form is checked elsewhere)
+void ExpectSamePlan(const std::string& scene,
+                    const std::vector<std::pair<std::string, std::string>>& pairs) {
+  for (const auto& [said, plain] : pairs) {
+    const std::string want = SortedPlan(scene, plain);
+    EXPECT_EQ(want.rfind("ERROR", 0), std::string::npos) << plain << ": " << want;
+    EXPECT_EQ(SortedPlan(scene, said), want) << said;
+  }
+}
+
+TEST(OfflinePlannerTest, EverydayWrappersHedgesAndFraming) {
+  ExpectSamePlan("sit_demo", {{"would it be possible to sit on the chair", "sit down"},
+                              {"why don't you take a seat?", "sit down"},
+                              {"do me a favour and sit down, that would be great", "sit down"},
+                              {"I need the character to sit on the chair", "sit down"},
+                              {"make him sit down", "sit down"},
+                              {"the robot is going to sit on the chair", "sit down"},
+                              {"hello there! try sitting down, thank you", "sit down"},
+                              {"Task: sit on the chair.", "sit down"},
+                              {"sit down very calmly for a couple of minutes", "sit down"},
+                              {"“sit down” 🙂", "sit down"},
+                              {"he walked over and sat down", "sit down"}});
+  // lists, bullets, lines and sequencing words
+  ExpectSamePlan("sit_demo",
+                 {{"1) sit down 2) lean back 3) stand up", "sit, lean back, stand up"},
+                  {"- sit down\n- lean back\n- stand up", "sit, lean back, stand up"},
+                  {"Step 7: sit down. Step eight: stand up", "sit, then stand up"},
+                  {"start by sitting down and finish by standing up", "sit, then stand up"},
+                  {"sit down & lean back", "sit down and lean back"},
+                  {"sit down; once seated, lean back", "sit down, then lean back"},
+                  {"sit down, lastly get to your feet", "sit, then stand up"},
+                  {"sit down… then rise from the chair", "sit, then stand up"}});
+  // words that carry no action never make a nonsense command plannable
+  for (const char* c : {"fly to the moon", "eat the chair", "hello", "thanks a lot",
+                        "look at the sofa", "read a book on the sofa", "sing softly"}) {
+    core::Status st = PlanStatus("living_room", c);
+    EXPECT_TRUE(absl::IsInvalidArgument(st)) << c << ": " << st;
+  }
+  EXPECT_TRUE(absl::IsFailedPrecondition(PlanStatus("living_room", "lie on your side")));
+  EXPECT_TRUE(absl::IsFailedPrecondition(PlanStatus("living_room", "have a seat, would you?")));
+}
+
+TEST(OfflinePlannerTest, EverydayIdiomsAndSynonyms) {
+  ExpectSamePlan(
+      "living_room",
+      {{"park yourself on the loveseat", "sit on the sofa"},
+       {"stroll over to the settee and plop down", "sit on the sofa"},
+       {"see the couch? sit on it", "sit on the sofa"},
+       {"sit in the recliner and kick back", "recline in the armchair"},
+       {"sit in the armchair, grip the armrests",
+        "sit in the armchair, then put your hands on the armrests"},
+       {"climb into bed", "lie on the bed"},
+       {"stretch out under the covers", "lie on the bed"},
+       {"lie on the bed with bent knees", "lie on the bed with your knees up"},
+       {"lie on the bed on your left hand side", "lie on the bed on your left side"},
+       {"lie on the bed but keep your head off the pillow", "lie on the bed, head up"},
+       {"lie on the bed, then climb out of it", "lie on the bed, then stand up"},
+       {"jog over to the bed's left side", "go to the left side of the bed"},
+       {"walk to the desk and take a seat", "go to the table, then sit at the table"},
+       {"sit at the computer and tap away at the keyboard", "sit at the table and type"}});
+  ExpectSamePlan("sit_demo",
+                 {{"sit down and rest your back against the backrest", "sit and lean back"},
+                  {"sit down but do not lean back", "sit and lean forward"},
+                  {"sitt on the chiar", "sit down"},
+                  {"sit w/ ur hands in your lap", "sit with your hands on your knees"}});
+  ExpectSamePlan(
+      "tabletop_demo",
+      {{"lay the crimson block on top of the blue cube", "put the red box on the blue box"},
+       {"get the red box and balance it on the blue box", "put the red box on the blue box"},
+       {"pick the ball up and put it on the blue can", "put the ball on the cylinder"},
+       {"slide the red box right next to the orb", "put the red box next to the ball"}});
+}
+
+TEST(OfflinePlannerTest, RunOnsVerblessTouchesAndFrontedInstruments) {
+  ExpectSamePlan("living_room", {{"walk to the armchair sit down lean back",
+                                  "go to the armchair, sit down and lean back"}});
+  // a touch stated without a verb joins the sit; a fronted instrument modifies its clause
+  EXPECT_EQ(SortedPlan("office", "sit on the chair, both hands on the desk"),
+            "chair002|seat surface|pelvis|contact|up, table000|board|left hand|contact|none, "
+            "table000|board|right hand|contact|none");
+  ExpectSamePlan("tabletop_demo", {{"with your left hand put the ball on the cylinder",
+                                    "put the ball on the cylinder with your left hand"}});
+}
+
 TEST(OfflinePlannerTest, Idioms) {
   const std::string lie = "bed003|mattress|pelvis|contact|up, bed003|pillow|head|contact|up";
   for (const char* c :

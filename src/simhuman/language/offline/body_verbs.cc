@@ -39,8 +39,12 @@ Direction PartDirection(const std::string& part) {
 absl::Status Session::SitOrLie(const Tokens& t, size_t b, SitMode mode, const std::string& c) {
   // [on|in|at|onto] NP [with|while|your ...variant]
   size_t i = b;
-  while (i < t.size() && (t[i] == "on" || t[i] == "onto" || t[i] == "in" || t[i] == "at" ||
-                          t[i] == "to" || t[i] == "up")) {
+  // "sit next to / in front of the desk": at it, as "sit at the desk"
+  bool at = false;
+  while (i < t.size() &&
+         (t[i] == "on" || t[i] == "onto" || t[i] == "in" || t[i] == "at" || t[i] == "to" ||
+          t[i] == "up" || t[i] == "near" || t[i] == "front_of" || t[i] == "flat")) {
+    at = at || t[i] == "at" || t[i] == "near" || t[i] == "front_of";
     ++i;
   }
   static const std::set<std::string> kStop = {
@@ -56,15 +60,19 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, SitMode mode, const st
   if (np_end > i) {
     SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, np_end, 0, c));
     SH_ASSIGN_OR_RETURN(o, Resolve(np, c, part));
+  } else if (mode == SitMode::kRecline && on_ != nullptr &&
+             (HasPart(*on_, "mattress") || HasPart(*on_, "back surface"))) {
+    o = on_;  // "sit on the edge of the bed, then lie back"
   } else if (mode == SitMode::kRecline) {
     SH_ASSIGN_OR_RETURN(o, OnlyObjectWith({"seat surface", "back surface"}, "recline", c));
   } else if (on_ != nullptr && (HasPart(*on_, part) || (!lie && HasPart(*on_, "mattress")))) {
     o = on_;
+  } else if (const CatalogObject* seat = lie ? nullptr : SeatBy(focus_)) {
+    o = seat;  // "walk to the desk and sit down": the seat at it
   } else {
     SH_ASSIGN_OR_RETURN(o, OnlyObjectWith({part}, lie ? "lie" : "sit", c));
   }
-  if (!lie && !HasPart(*o, "seat surface") && !HasPart(*o, "mattress") && i > b &&
-      t[i - 1] == "at") {
+  if (!lie && !HasPart(*o, "seat surface") && !HasPart(*o, "mattress") && at) {
     SH_ASSIGN_OR_RETURN(o, SeatAt(*o, c));  // "sit at the table": the seat nearest to it
   }
   if (mode == SitMode::kRest || mode == SitMode::kRecline) {
@@ -75,10 +83,13 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, SitMode mode, const st
     EnsureFree(o);
     EnsureNear(*o);
   }
-  if (lie) {
+  // already sitting or lying there ("get into bed and lie on your left side"): a pose joins
+  const bool there = on_ == o && !steps_.empty() && steps_.back().object == o &&
+                     ((lie && posture_ == Posture::kLie && steps_.back().kind == StepDraft::kLie) ||
+                      (!lie && posture_ == Posture::kSit && steps_.back().kind == StepDraft::kSit));
+  if (lie && !there) {
     SH_RETURN_IF_ERROR(AddLie(*o));
-  } else if (!(on_ == o && posture_ == Posture::kSit && !steps_.empty() &&
-               steps_.back().kind == StepDraft::kSit && steps_.back().object == o)) {
+  } else if (!there) {
     SH_RETURN_IF_ERROR(AddSit(*o));
   }
   if (mode == SitMode::kRecline && !lie) {
@@ -161,6 +172,19 @@ absl::Status Session::Go(const Tokens& t, size_t b, const std::string& c) {
   return absl::OkStatus();
 }
 
+absl::Status Session::NoticeOrUse(const Tokens& t, size_t i, const std::string& c) {
+  if (i + 1 >= t.size()) {
+    return Invalid("\"" + c + "\": " + t[i] +
+                   " what? name an object; the scene has: " + DescribeSceneObjects(scene_));
+  }
+  SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i + 1, t.size(), 0, c));
+  SH_ASSIGN_OR_RETURN(const CatalogObject* o, Resolve(np, c));
+  focus_ = o;
+  if (t[i] == "notice") return absl::OkStatus();
+  if (HasPart(*o, "keyboard") || np.part == "keyboard") return Type(t, i + 1, c);
+  return SitOrLie(t, i + 1, SitMode::kRest, c);
+}
+
 absl::Status Session::StandUp(const std::string& c) {
   if (posture_ == Posture::kStand || on_ == nullptr) {
     return Invalid("\"" + c + "\": the human is already standing; say first what to sit or lie on");
@@ -204,7 +228,23 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c, bool in_pose)
   if (!np.part.empty() && np.part_side.empty() && np.part == "arm" && side != "both") {
     np.part_side = side;
   }
-  SH_ASSIGN_OR_RETURN(const CatalogObject* o, Resolve(np, c));
+  // seated, "the armrests" / "the backrest" are those of the seat
+  const CatalogObject* o = nullptr;
+  if (on_ != nullptr && posture_ != Posture::kStand && !np.part.empty() && !np.has_type &&
+      np.id.empty() && np.color.empty() && !np.pronoun && np.relations.empty() &&
+      !PartsNamed(*on_, np.part).empty()) {
+    o = on_;
+  } else {
+    SH_ASSIGN_OR_RETURN(o, Resolve(np, c));
+  }
+  // "grip the armrests" while sitting: the hands-on-armrests pose
+  if (o == on_ && posture_ == Posture::kSit && np.part == "arm") {
+    std::string s = np.part_side.empty() ? side : np.part_side;
+    if (hand == t.size() && (Has(t, 0, t.size(), "armrests") || Has(t, 0, t.size(), "arms"))) {
+      s = "both";
+    }
+    return AddVariant({VariantKind::kHandsOnArms, s, ""}, c);
+  }
   if (side == "both" && np.part == "arm" && np.part_side.empty() && HasPart(*o, "left arm") &&
       HasPart(*o, "right arm")) {
     // both hands on the armrests: each hand on its own side

@@ -1,5 +1,6 @@
 #include "simhuman/language/offline/clauses.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <optional>
@@ -13,6 +14,37 @@
 
 namespace simhuman::language::offline {
 
+namespace {
+
+// typographic punctuation and emoji (UTF-8) at s[i]: a curly apostrophe is dropped like "'"
+// (`kind` 0: the word goes on), curly quotes, dashes and emoji separate words (1), an
+// ellipsis, a bullet or an arrow separates clauses (2). Returns the bytes used (0: none of
+// these). Letters outside ASCII stay refused.
+size_t Utf8Punctuation(std::string_view s, size_t i, int& kind) {
+  auto byte = [&](size_t k) { return k < s.size() ? static_cast<unsigned char>(s[k]) : 0; };
+  const unsigned char c = byte(i), d = byte(i + 1), e = byte(i + 2);
+  kind = 1;
+  if (c == 0xe2 && d == 0x80) {
+    if (e == 0x98 || e == 0x99) kind = 0;  // curly apostrophes
+    if (e == 0xa6 || e == 0xa2) kind = 2;  // ellipsis, bullet
+    if (kind != 1 || e == 0x9c || e == 0x9d || e == 0x93 || e == 0x94) return 3;  // quotes, dashes
+  }
+  if (c == 0xe2 && d == 0x86 && e >= 0x90 && e <= 0x9f) {  // arrows
+    kind = 2;
+    return 3;
+  }
+  // pictographs and emoji: U+2600-U+27BF, U+1F300-U+1FAFF, and the emoji variation selector
+  if (c == 0xe2 && d >= 0x98 && d <= 0x9e && e >= 0x80 && e <= 0xbf) return 3;
+  if (c == 0xf0 && d == 0x9f && e >= 0x8c && e <= 0xab && byte(i + 3) >= 0x80 &&
+      byte(i + 3) <= 0xbf) {
+    return 4;
+  }
+  if (c == 0xef && d == 0xb8 && e == 0x8f) return 3;
+  return 0;
+}
+
+}  // namespace
+
 core::StatusOr<Tokens> Tokenize(std::string_view command) {
   if (command.size() > kMaxCommandBytes) {
     return Invalid("the command is " + std::to_string(command.size()) + " bytes long; at most " +
@@ -25,20 +57,29 @@ core::StatusOr<Tokens> Tokenize(std::string_view command) {
     if (!word.empty()) out.push_back(std::move(word));
     word.clear();
   };
+  int kind = 0;
   for (size_t i = 0; i < command.size(); ++i) {
     const unsigned char c = static_cast<unsigned char>(command[i]);
     if (std::isalnum(c)) {
       word += static_cast<char>(std::tolower(c));
     } else if (c == '\'') {
       continue;  // "chair's" -> "chairs", "don't" -> "dont"
-    } else if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '-' || c == '_' ||
-               c == '/') {
-      flush();
+    } else if (c == ' ' || c == '\t' || c == '\r' || c == '-' || c == '_' || c == '/' || c == '"' ||
+               c == '`' || c == '*' || c == '~' || c == '#') {
+      flush();  // quotes, markdown emphasis and bullets ("* sit", "#1") say nothing
     } else if (c == ',' || c == '.' || c == ';' || c == '!' || c == '?' || c == ':' ||
                c == '>' ||  // "sit chair002 -> type on laptop001": an arrow sequences
-               c == '(' || c == ')' || c == '[' || c == ']') {  // "[sits in the chair]"
+               c == '(' || c == ')' || c == '[' || c == ']' ||  // "[sits in the chair]"
+               c == '\n' || c == '|' || c == '=') {             // one step a line
       flush();
       out.push_back("then");
+    } else if (c == '&' || c == '+') {
+      flush();
+      out.push_back("and");
+    } else if (size_t n = Utf8Punctuation(command, i, kind)) {
+      if (kind > 0) flush();
+      if (kind == 2) out.push_back("then");
+      i += n - 1;
     } else {
       char buf[96];
       if (c >= 0x20 && c < 0x7f) {
@@ -54,10 +95,39 @@ core::StatusOr<Tokens> Tokenize(std::string_view command) {
   return out;
 }
 
+namespace {
+
+// a run-on without "and" ("go to the armchair sit down"): a verb right after an object, a body
+// part or a finished verb starts a new clause
+bool StartsRunOn(const Tokens& t, size_t k) {
+  static const std::set<std::string> kVerbs = {
+      "sit", "lie",   "stand", "touch", "type",  "recline", "lean",  "rest",  "go",
+      "put", "place", "grab",  "cross", "raise", "reach",   "carry", "stack", "turn"};
+  if (k == 0 || !kVerbs.count(t[k])) return false;
+  const std::string& p = t[k - 1];
+  if (p == "sit" || p == "lie" || p == "recline" || p == "up" || p == "it" || p == "them" ||
+      p == "there" || p == "here") {
+    return true;
+  }
+  if ((p == "legs" || p == "leg") && t[k] == "cross") return false;  // "legs cross"
+  auto type = TypeWords().find(p);
+  return (type != TypeWords().end() && p != "one") || PartWords().count(p) > 0 ||
+         (IsBodyWord(p) && p != "your" && p != "hand" && p != "hands") ||
+         (std::any_of(p.begin(), p.end(), [](char ch) { return std::isdigit(ch) != 0; }) &&
+          std::any_of(p.begin(), p.end(), [](char ch) { return std::isalpha(ch) != 0; }));
+}
+
+}  // namespace
+
 core::StatusOr<std::vector<ClauseWords>> SplitMarkedClauses(const Tokens& tokens) {
   std::vector<ClauseWords> clauses(1);
   bool then = false;  // a "then" since the last clause's words
-  for (const std::string& w : tokens) {
+  for (size_t k = 0; k < tokens.size(); ++k) {
+    const std::string& w = tokens[k];
+    if (!clauses.back().words.empty() && StartsRunOn(tokens, k)) {
+      clauses.emplace_back();
+      clauses.back().sequenced = false;
+    }
     if (w == "then" || w == "and") {
       then = then || w == "then";
       if (!clauses.back().words.empty()) clauses.emplace_back();
@@ -160,7 +230,14 @@ absl::Status Session::Clause(const Tokens& words) {
     return SitOrLie(t, i + 1, mode, c);
   }
   if (v == "type") return Type(t, i + 1, c);
+  if (v == "notice" || v == "use") return NoticeOrUse(t, i, c);
+  // "then stand", "stand up from the chair", "get off the bed" (stand up from)
+  if (v == "stand" && i + 1 == t.size()) return StandUp(c);
   if (v == "stand" && next(i + 1) == "up") {
+    if (i + 2 < t.size() && (t[i + 2] == "from" || t[i + 2] == "off" || t[i + 2] == "of" ||
+                             t[i + 2] == "in" || t[i + 2] == "on")) {
+      return StandUp(c);
+    }
     if (i + 2 < t.size() && t[i + 2] != "then") {
       return Invalid("did not understand '" + Join(t, i + 2, t.size()) +
                      "' after 'stand up' in \"" + c + "\"");
@@ -215,6 +292,11 @@ absl::Status Session::Clause(const Tokens& words) {
     return AddVariant(*var, c);
   }
   if (Has(t, i, t.size(), "touch") || Has(t, i, t.size(), "reach")) return Reach(t, c);
+  // ", both hands on the desk": a touch stated without a verb joins the sit it follows
+  if (attributive_ && posture_ == Posture::kSit &&
+      Find(t, i, t.size(), {"hand", "hands"}) < t.size()) {
+    return Reach(t, c, true);
+  }
   return Invalid("did not understand \"" + c +
                  "\"; commands start with sit, lie, rest, stand up, go to, walk to, approach, "
                  "touch, reach, put, place, stack, carry, bring, pick up, lean, cross, raise");

@@ -79,7 +79,8 @@ void Session::AddSeatedReach(const CatalogObject& o, const std::string& part,
       (sides.size() == 2 ? std::string("both hands on the ") : sides[0] + " hand on the ") + part +
       " of " + Describe(o);
   StepDraft* last = steps_.empty() ? nullptr : &steps_.back();
-  if (in_pose && last != nullptr && last->object == on_ && last->clause == clause_ &&
+  if (in_pose && last != nullptr && last->object == on_ &&
+      (last->clause == clause_ || attributive_) &&
       (last->kind == StepDraft::kSit || last->kind == StepDraft::kLie)) {
     for (const ContactPair& p : hands) last->step.pairs.push_back(p);
     last->variant_texts.push_back(what);
@@ -139,6 +140,19 @@ core::StatusOr<const CatalogObject*> Session::SeatAt(const CatalogObject& o,
   return best;
 }
 
+const CatalogObject* Session::SeatBy(const CatalogObject* o) const {
+  if (o == nullptr || HasPart(*o, "seat surface") || HasPart(*o, "mattress")) return nullptr;
+  constexpr double kSeatByM = 1.0;  // a seat pulled up to a table is well within this
+  const CatalogObject* found = nullptr;
+  for (const CatalogObject& x : scene_.objects) {
+    if (!HasPart(x, "seat surface")) continue;
+    if (FootprintDistance(*o, {x.pose.pos.x(), x.pose.pos.y()}) > kSeatByM) continue;
+    if (found != nullptr) return nullptr;  // several: the question lists them
+    found = &x;
+  }
+  return found;
+}
+
 absl::Status Session::ImpliedBase(const Variant& v, const Tokens& t, size_t b, size_t e,
                                   const std::string& c) {
   const std::vector<std::string> parts = ImpliedParts(v.kind);
@@ -174,6 +188,13 @@ absl::Status Session::Type(const Tokens& t, size_t b, const std::string& c) {
   if (i < t.size()) {
     SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, t.size(), 0, c));
     SH_ASSIGN_OR_RETURN(o, Resolve(np, c, "keyboard"));
+    // "type at the desk": the laptop on it
+    const CatalogObject* on = nullptr;
+    for (const CatalogObject& x : scene_.objects) {
+      if (HasPart(*o, "keyboard") || !HasPart(x, "keyboard") || !RestsOn(x, *o)) continue;
+      on = on == nullptr ? &x : o;  // several: keep `o` (the error names the laptops)
+    }
+    if (on != nullptr) o = on;
   } else {
     std::vector<const CatalogObject*> fit;
     for (const CatalogObject& x : scene_.objects) {

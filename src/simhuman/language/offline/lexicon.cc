@@ -18,8 +18,6 @@ const std::vector<std::pair<Tokens, Tokens>>& IdiomPhrases() {
       {{"sit", "back"}, {"recline"}},
       {{"leaning"}, {"with", "lean"}},
       {{"reclining"}, {"recline"}},  // a participle states a pose ("sit, leaning back")
-      {{"lie", "back"}, {"lie"}},
-      {{"lay", "back"}, {"lie"}},
       {{"hop", "into"}, {"rest", "in"}},
       {{"hop", "in"}, {"rest", "in"}},
       {{"hop", "up", "on"}, {"rest", "on"}},
@@ -222,13 +220,16 @@ const std::vector<std::pair<Tokens, Tokens>>& Phrases() {
   static const auto* all = [] {
     auto* v = new std::vector<std::pair<Tokens, Tokens>>(*phrases);
     v->insert(v->end(), IdiomPhrases().begin(), IdiomPhrases().end());
+    v->insert(v->end(), EverydayPhrases().begin(), EverydayPhrases().end());
     return v;
   }();
   return *all;
 }
 
-// single-word synonyms
-const std::map<std::string, std::string>& Synonyms() {
+namespace {
+
+// single-word synonyms (everyday ones are in everyday.cc)
+const std::map<std::string, std::string>& BasicSynonyms() {
   static const auto* words = new std::map<std::string, std::string>{
       {"couch", "sofa"},      {"settee", "sofa"},      {"desk", "table"},
       {"computer", "laptop"}, {"notebook", "laptop"},  {"crate", "box"},
@@ -254,15 +255,27 @@ const std::map<std::string, std::string>& Synonyms() {
       {"leftmost", "left"},   {"rightmost", "right"},  {"raise", "raise"},
       {"lift", "raise"},      {"bend", "raise"},       {"pull", "raise"},
       {"roll", "turn"},       {"towards", "to"},       {"toward", "to"},
-      {"into", "in"},         {"yourself", "your"},    {"dont", "dont"},
-      {"lap", "knees"},       {"thats", "that"},       {"crossed", "cross"},
-      {"crossing", "cross"},  {"bring", "carry"},      {"haul", "carry"},
-      {"lug", "carry"},       {"drop", "put"},         {"perch", "sit"},
-      {"plop", "sit"},        {"plonk", "sit"},        {"resting", "with"},
-      {"typing", "type"},     {"pls", "please"},       {"plz", "please"},
-      {"but", "and"},         {"flattest", "flat"},    {"pick", "grab"},
-      {"fwd", "forward"},     {"pop", "put"},
+      {"into", "in"},         {"dont", "dont"},        {"lap", "knees"},
+      {"thats", "that"},      {"crossed", "cross"},    {"crossing", "cross"},
+      {"bring", "carry"},     {"haul", "carry"},       {"lug", "carry"},
+      {"drop", "put"},        {"perch", "sit"},        {"plop", "sit"},
+      {"plonk", "sit"},       {"resting", "with"},     {"typing", "type"},
+      {"pls", "please"},      {"plz", "please"},       {"but", "and"},
+      {"flattest", "flat"},   {"pick", "grab"},        {"fwd", "forward"},
+      {"pop", "put"},
   };
+  return *words;
+}
+
+}  // namespace
+
+// single-word synonyms
+const std::map<std::string, std::string>& Synonyms() {
+  static const auto* words = [] {
+    auto* w = new std::map<std::string, std::string>(BasicSynonyms());
+    w->insert(EverydaySynonyms().begin(), EverydaySynonyms().end());
+    return w;
+  }();
   return *words;
 }
 
@@ -277,7 +290,12 @@ const std::set<std::string>& Fillers() {
       // spoken fillers and slang ("um can you like sit down", "yo go sit on the couch fr")
       "um", "uh", "erm", "hmm", "hey", "yo", "fr", "rn", "bro", "cheers", "briefly", "bit", "round",
       "lets", "instead"};
-  return *words;
+  static const auto* all = [] {
+    auto* w = new std::set<std::string>(*words);
+    w->insert(EverydayFillers().begin(), EverydayFillers().end());
+    return w;
+  }();
+  return *all;
 }
 
 const std::set<std::string>& Colors() {
@@ -353,7 +371,7 @@ const std::set<std::string>& OtherWords() {
       "center",  "there",   "yours",    "own",      "one",        "edge",    "each",   "against",
       "dont",    "lean",    "place",    "using",    "either",     "s",       "geton",  "carry",
       "here",    "team2",   "team3",    "team4",    "teamall",    "teamany", "door",   "doors",
-      "doorway", "exit",    "entrance", "recline",  "type",       "flat"};
+      "doorway", "exit",    "entrance", "recline",  "type",       "flat",    "notice", "use"};
   return *words;
 }
 
@@ -402,6 +420,8 @@ Tokens Normalize(const Tokens& in) {
     auto syn = Synonyms().find(w);
     if (syn != Synonyms().end()) w = syn->second;
     if (Fillers().count(w)) continue;
+    // a manner adverb the lexicon does not list ("softly", "calmly") says how, not what
+    if (w.size() >= 5 && w.compare(w.size() - 2, 2, "ly") == 0 && !Known(w)) continue;
     out.push_back(w);
   }
   return out;

@@ -33,6 +33,14 @@ const std::set<std::string>& Relations();
 /// Every other word a clause may contain (verbs, body words, sides, pronouns, ...).
 const std::set<std::string>& OtherWords();
 
+/// Everyday speech (everyday.cc), merged into the lists above: wrappers, hedges, sequencing
+/// words and idioms; synonyms of verbs, objects, parts and colours; words that carry no action.
+const std::vector<std::pair<Tokens, Tokens>>& EverydayPhrases();
+const std::map<std::string, std::string>& EverydaySynonyms();
+const std::set<std::string>& EverydayFillers();
+/// Who a scripted line is about ("npc", "the character", "he", "the robot"; phrasing.cc).
+const std::set<std::string>& Subjects();
+
 /// Whether `w` (normalised) is in any of the lists above. Object ids are checked separately.
 bool Known(const std::string& w);
 /// Whether `w` names a body part ("hand", "knees", "other_knee", ...) or is "your".

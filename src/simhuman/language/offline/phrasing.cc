@@ -1,11 +1,15 @@
 // Rewording of the offline planner on the raw words, before the lexicon: how people script a
 // character ("NPC walks to the armchair, sits, rests its hands on both armrests, then gets
-// up"), gerund continuations ("and then getting back up"), chat spellings ("ur", "goto"),
-// participle poses ("knees bent up", "head raised off the pillow"), a pose said by what it
-// avoids ("without touching the backrest") and trailing purpose clauses ("so the foot stays
-// flat"), which say nothing the pose does not.
+// up", "the robot is going to sit", "make him sit down"), gerund and past forms ("and then
+// getting back up", "he walked over and sat down"), chat spellings ("ur", "goto"), numbered
+// and framed steps ("1. sit", "Task: ..."), participle poses ("knees bent up", "with bent
+// knees", "head raised off the pillow"), a pose said by what it avoids ("without touching the
+// backrest", "don't touch the armrests"), the back as a body part ("rest your back against
+// the backrest"), objects set down with a posture verb ("lay the ball on the box") and
+// trailing purpose clauses ("so the foot stays flat"), which say nothing the pose does not.
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 #include <string>
@@ -14,32 +18,79 @@
 #include "simhuman/language/offline/rewrite.h"
 
 namespace simhuman::language::offline {
-namespace {
 
 // a character named as the subject of a scripted line, dropped at the start of a clause
 const std::set<std::string>& Subjects() {
   static const auto* words = new std::set<std::string>{
-      "npc", "character", "agent", "avatar", "human", "person", "player", "he", "she", "they"};
+      "npc",   "character",   "agent", "avatar",    "human",  "person",  "player",  "he",
+      "she",   "they",        "hes",   "shes",      "theyre", "man",     "woman",   "guy",
+      "girl",  "boy",         "lady",  "gentleman", "figure", "actor",   "actress", "model",
+      "robot", "bot",         "dummy", "mannequin", "sim",    "puppet",  "patient", "subject",
+      "user",  "protagonist", "hero",  "kid",       "child",  "humanoid"};
   return *words;
 }
 
-// third-person and -ing forms of the verbs the lexicon reads, and chat spellings
+namespace {
+
+// third-person, -ing and past forms of the verbs the lexicon reads, and chat spellings
 const std::map<std::string, std::string>& VerbForms() {
   static const auto* words = new std::map<std::string, std::string>{
-      {"walks", "walk"},     {"walking", "walk"},  {"gets", "get"},       {"getting", "get"},
-      {"stands", "stand"},   {"crosses", "cross"}, {"rests", "rest"},     {"puts", "put"},
-      {"putting", "put"},    {"leans", "lean"},    {"goes", "go"},        {"going", "go"},
-      {"moves", "move"},     {"moving", "move"},   {"places", "place"},   {"placing", "place"},
-      {"picks", "pick"},     {"picking", "pick"},  {"lifts", "lift"},     {"lifting", "lift"},
-      {"raises", "raise"},   {"raising", "raise"}, {"turns", "turn"},     {"turning", "turn"},
-      {"types", "type"},     {"carries", "carry"}, {"carrying", "carry"}, {"bends", "bend"},
-      {"bending", "bend"},   {"grabs", "grab"},    {"grabbing", "grab"},  {"takes", "take"},
-      {"taking", "take"},    {"brings", "bring"},  {"bringing", "bring"}, {"stacks", "stack"},
-      {"stacking", "stack"}, {"sets", "set"},      {"lays", "lay"},       {"approaches", "go"},
-      {"approaching", "go"}, {"presses", "touch"}, {"press", "touch"},    {"pressing", "touch"},
-      {"chill", "rest"},     {"chills", "rest"},   {"chilling", "rest"},  {"ur", "your"},
-      {"yr", "your"}};
+      {"walks", "walk"},       {"walking", "walk"},     {"gets", "get"},
+      {"getting", "get"},      {"stands", "stand"},     {"crosses", "cross"},
+      {"rests", "rest"},       {"puts", "put"},         {"putting", "put"},
+      {"leans", "lean"},       {"goes", "go"},          {"going", "go"},
+      {"moves", "move"},       {"moving", "move"},      {"places", "place"},
+      {"placing", "place"},    {"picks", "pick"},       {"picking", "pick"},
+      {"lifts", "lift"},       {"lifting", "lift"},     {"raises", "raise"},
+      {"raising", "raise"},    {"turns", "turn"},       {"turning", "turn"},
+      {"types", "type"},       {"carries", "carry"},    {"carrying", "carry"},
+      {"bends", "bend"},       {"bending", "bend"},     {"grabs", "grab"},
+      {"grabbing", "grab"},    {"takes", "take"},       {"taking", "take"},
+      {"brings", "bring"},     {"bringing", "bring"},   {"stacks", "stack"},
+      {"stacking", "stack"},   {"sets", "set"},         {"lays", "lay"},
+      {"approaches", "go"},    {"approaching", "go"},   {"presses", "touch"},
+      {"press", "touch"},      {"pressing", "touch"},   {"chill", "rest"},
+      {"chills", "rest"},      {"chilling", "rest"},    {"ur", "your"},
+      {"yr", "your"},          {"laying", "lie"},       {"layin", "lie"},
+      {"lyin", "lie"},         {"sittin", "sit"},       {"touching", "touch"},
+      {"tapping", "tap"},      {"taps", "tap"},         {"holding", "hold"},
+      {"holds", "hold"},       {"heading", "head"},     {"heads", "head"},
+      {"coming", "come"},      {"comes", "come"},       {"running", "run"},
+      {"runs", "run"},         {"stepping", "step"},    {"steps", "step"},
+      {"relaxing", "relax"},   {"relaxes", "relax"},    {"napping", "nap"},
+      {"naps", "nap"},         {"sleeping", "sleep"},   {"sleeps", "sleep"},
+      {"lounging", "lounge"},  {"lounges", "lounge"},   {"perching", "perch"},
+      {"perches", "perch"},    {"settling", "settle"},  {"settles", "settle"},
+      {"climbing", "climb"},   {"climbs", "climb"},     {"hopping", "hop"},
+      {"hops", "hop"},         {"rising", "rise"},      {"strolls", "stroll"},
+      {"strolling", "stroll"}, {"wanders", "wander"},   {"wandering", "wander"},
+      {"uses", "use"},         {"using_", "use"},       {"works", "work"},
+      {"working", "work"},     {"reclines", "recline"}, {"reclining_", "recline"},
+      {"walked", "walk"},      {"went", "go"},          {"sat", "sit"},
+      {"stood", "stand"},      {"laid", "lay"},         {"leaned", "lean"},
+      {"leant", "lean"},       {"touched", "touch"},    {"reached", "reach"},
+      {"rested", "rest"},      {"placed_", "place"},    {"moved", "move"},
+      {"picked", "pick"},      {"grabbed", "grab"},     {"typed", "type"},
+      {"raised_", "raise"},    {"turned", "turn"},      {"rolled", "roll"},
+      {"approached", "go"},    {"headed", "head"},      {"stepped", "step"},
+      {"came", "come"},        {"ran", "run"},          {"got", "get"},
+      {"took", "take"},        {"stacked", "stack"},    {"carried", "carry"},
+      {"brought", "bring"},    {"dropped", "drop"},     {"relaxed_", "relax"},
+      {"napped", "nap"},       {"slept", "sleep"},      {"perched", "perch"},
+      {"plopped", "plop"},     {"settled", "settle"},   {"climbed", "climb"},
+      {"hopped", "hop"},       {"rose", "rise"},        {"tapped", "tap"},
+      {"pressed", "touch"},    {"crossed_", "cross"},   {"lifted_", "lift"}};
   return *words;
+}
+
+// verbs a clause starts with (after "going to", "gonna")
+bool IsVerbWord(const std::string& w) {
+  static const std::set<std::string> kVerbs = {
+      "sit",   "lie",   "lay",  "stand", "walk",  "go",    "touch",    "reach", "lean",
+      "put",   "place", "type", "rest",  "get",   "take",  "grab",     "pick",  "move",
+      "cross", "raise", "turn", "carry", "relax", "head",  "approach", "come",  "use",
+      "have",  "try",   "set",  "stack", "lift",  "bring", "hop",      "crash", "chill"};
+  return kVerbs.count(w) > 0;
 }
 
 // a limb of the character, after an optional side ("hands", "left knee"; not "left arm", an
@@ -61,6 +112,257 @@ bool IsSplitId(const std::string& w, const std::string& next) {
 
 bool IsSeparator(const std::string& w) { return w == "then" || w == "and"; }
 
+// "3", "2nd": a list number or ordinal (object ids have letters first)
+bool IsNumber(const std::string& w) {
+  if (w.empty() || !std::isdigit(static_cast<unsigned char>(w[0]))) return false;
+  const size_t letters = w.find_first_not_of("0123456789");
+  if (letters == std::string::npos) return true;
+  const std::string suffix = w.substr(letters);
+  return suffix == "st" || suffix == "nd" || suffix == "rd" || suffix == "th";
+}
+
+bool IsNumberWord(const std::string& w) {
+  static const std::set<std::string> kWords = {"one", "two",   "three", "four", "five",
+                                               "six", "seven", "eight", "nine", "ten"};
+  return kWords.count(w) > 0 || IsNumber(w);
+}
+
+// "Task: ...", "Step 3: ...", "1. ...": framing before the words that say what to do; returns
+// the words to skip at raw[i] (0: none)
+size_t FramingAt(const Tokens& raw, size_t i, bool start) {
+  static const std::set<std::string> kFrames = {
+      "task",    "tasks",    "goal",     "instruction", "instructions", "command", "commands",
+      "action",  "actions",  "todo",     "objective",   "directions",   "note",    "request",
+      "mission", "sequence", "scenario", "prompt",      "order",        "orders",  "steps"};
+  auto at = [&](size_t k) { return k < raw.size() ? raw[k] : std::string(); };
+  if (IsNumber(raw[i])) return 1;
+  if ((raw[i] == "step" || raw[i] == "steps") && IsNumberWord(at(i + 1))) return 2;
+  if (start && kFrames.count(raw[i]) && (at(i + 1).empty() || at(i + 1) == "then")) return 1;
+  return 0;
+}
+
+// a subject at raw[k] ("he", "the robot", "our guy"); returns its length (0: none)
+size_t SubjectAt(const Tokens& raw, size_t k) {
+  static const std::set<std::string> kDeterminers = {"the", "our", "my", "your", "this", "that"};
+  if (k < raw.size() && Subjects().count(raw[k])) return 1;
+  if (k + 1 < raw.size() && kDeterminers.count(raw[k]) && Subjects().count(raw[k + 1])) return 2;
+  return 0;
+}
+
+// what follows a dropped subject: "is going to", "will", "needs to", "should" (length)
+size_t AuxiliaryAt(const Tokens& raw, size_t k) {
+  static const std::set<std::string> kAux = {
+      "is",    "are",   "will", "should", "must", "can",   "could", "would", "shall", "may",
+      "might", "needs", "has",  "wants",  "ll",   "gonna", "going", "about", "to",    "then"};
+  size_t n = 0;
+  while (k + n < raw.size() && kAux.count(raw[k + n]) && raw[k + n] != "then") ++n;
+  return n;
+}
+
+// "make him sit", "have the character walk", "I'd like the human to ...": the causer's verb
+// (kept when it is part of a wrapper: "I want", "I'd like") and the subject are dropped
+size_t CausativeAt(const Tokens& raw, size_t i, Tokens& out) {
+  static const std::set<std::string> kCause = {"make",  "have", "let",  "get",  "tell", "ask",
+                                               "allow", "help", "want", "need", "like"};
+  if (!kCause.count(raw[i])) return 0;
+  size_t s = SubjectAt(raw, i + 1);
+  if (s == 0 && i + 1 < raw.size() && (raw[i + 1] == "him" || raw[i + 1] == "her")) s = 1;
+  if (s == 0) return 0;
+  if (raw[i] == "want" || raw[i] == "need" || raw[i] == "like") out.push_back(raw[i]);
+  size_t n = 1 + s;
+  if (i + n < raw.size() && raw[i + n] == "to") ++n;
+  return n;
+}
+
+// "don't touch the armrests", "without touching the backrest", "do not lean back": the pose
+// they leave; returns the words used (0: none)
+size_t AvoidedPose(const Tokens& raw, size_t i, Tokens& out) {
+  size_t k = i + 1;
+  if (raw[i] == "do" && (k >= raw.size() || raw[k] != "not")) return 0;
+  if (raw[i] == "do") ++k;
+  if (raw[i] != "without" && raw[i] != "dont" && raw[i] != "do" && raw[i] != "never") return 0;
+  static const std::set<std::string> kGoing = {"go", "walk", "move", "head", "come", "run"};
+  if (k < raw.size() && kGoing.count(raw[k])) return 0;  // "don't go to the back of the sofa"
+  for (size_t e = std::min(raw.size(), k + 4); k < e && !IsSeparator(raw[k]); ++k) {
+    const std::string& w = raw[k];
+    if (w == "backrest" || w == "back" || w == "seatback") {
+      if (k + 1 < raw.size() && raw[k + 1] == "rest") ++k;
+      out.insert(out.end(), {"leaning", "forward"});
+      return k + 1 - i;
+    }
+    if (w == "armrest" || w == "armrests" || w == "arms" ||
+        (w == "arm" && k + 1 < raw.size() && raw[k + 1] == "rests")) {
+      if (w == "arm") ++k;
+      out.insert(out.end(), {"with", "hands", "off", "armrests"});
+      return k + 1 - i;
+    }
+  }
+  return 0;
+}
+
+// the words of one clause so far in `out` (after its last separator)
+size_t ClauseStart(const Tokens& out) {
+  size_t b = out.size();
+  while (b > 0 && !IsSeparator(out[b - 1])) --b;
+  return b;
+}
+
+// rules about the character's body: "its hands", "your arms", "your back against ...",
+// "knees bent up", "with bent knees", "bring your knees up", "with your left"
+bool RewordBody(const Tokens& raw, size_t& i, Tokens& out) {
+  const std::string& w = raw[i];
+  auto at = [&](size_t k) { return k < raw.size() ? raw[k] : std::string(); };
+  const bool owner = w == "its" || w == "his" || w == "her" || w == "their";
+  const bool yours = w == "your" || w == "ur" || w == "yr" || (owner && w != "its");
+  // "its hands", "his left knee": the character's own body is "your"
+  if (owner && IsLimbAt(raw, i + 1)) {
+    out.push_back("your");
+    return true;
+  }
+  // "your arms on the armrests": the hands; "your forearms": the elbows
+  size_t a = i + 1;
+  if (at(a) == "left" || at(a) == "right" || at(a) == "both") ++a;
+  if (yours && (at(a) == "arm" || at(a) == "arms") && at(a + 1) != "rest" && at(a + 1) != "rests") {
+    out.push_back("your");
+    if (a > i + 1) out.push_back(raw[i + 1]);
+    out.push_back(at(a) == "arm" ? "hand" : "hands");
+    i = a;
+    return true;
+  }
+  // "rest your back against the backrest", "with your back against it": leaning back
+  if ((yours || w == "its") && at(i + 1) == "back" && (i == 0 || raw[i - 1] != "on")) {
+    static const std::set<std::string> kAgainst = {"against", "on",   "into",    "to",
+                                                   "onto",    "flat", "pressed", "firmly"};
+    static const std::set<std::string> kVerbs = {"rest",  "put", "press", "keep", "push",
+                                                 "place", "lay", "set",   "lean", "touch"};
+    if (kAgainst.count(at(i + 2))) {
+      if (!out.empty() && kVerbs.count(out.back())) out.pop_back();
+      out.insert(out.end(), {"lean", "back"});
+      ++i;
+      return true;
+    }
+  }
+  // "knees bent up", "head raised off the pillow": the limb is up
+  if ((w == "bent" || w == "raised" || w == "lifted") && !out.empty() &&
+      IsLimbAt(out, out.size() - 1)) {
+    out.push_back("up");
+    if (at(i + 1) == "up") ++i;
+    if (at(i + 1) == "off") {
+      size_t k = i + 2;
+      if (at(k) == "the") ++k;
+      if (at(k) == "pillow" || at(k) == "mattress" || at(k) == "bed") i = k;
+    }
+    return true;
+  }
+  // "with bent knees", "bring your knees up": raised
+  if (((w == "bent" || w == "raised" || w == "lifted") && IsLimbAt(raw, i + 1)) ||
+      (w == "bring" && (at(i + 1) == "your" || at(i + 1) == "ur") && IsLimbAt(raw, i + 2))) {
+    out.push_back("raise");
+    return true;
+  }
+  // "touch it with your left": the left hand
+  if ((w == "left" || w == "right") && i >= 2 && (raw[i - 2] == "with" || raw[i - 2] == "using") &&
+      (at(i + 1).empty() || IsSeparator(at(i + 1)))) {
+    out.insert(out.end(), {w, "hand"});
+    return true;
+  }
+  return false;
+}
+
+// rules about objects: "lay/sit/rest the ball on the box" (put), "pick the box up", "lift the
+// ball" (a grasp), "the blue can" (a cylinder), "the bed's left side", ids split at '_', "press
+// a key on the laptop"
+bool RewordObjects(const Tokens& raw, size_t& i, Tokens& out) {
+  const std::string& w = raw[i];
+  auto at = [&](size_t k) { return k < raw.size() ? raw[k] : std::string(); };
+  static const std::set<std::string> kDeterminers = {"the",  "a",    "an",    "it",   "them",
+                                                     "this", "that", "these", "those"};
+  static const std::set<std::string> kPosture = {"lay",    "lays",  "laid",  "sit",
+                                                 "sits",   "rest",  "rests", "stand",
+                                                 "stands", "plonk", "plop",  "perch"};
+  if (kPosture.count(w) && kDeterminers.count(at(i + 1))) {
+    out.push_back("put");
+    return true;
+  }
+  if ((w == "lay" || w == "lays" || w == "laid") &&
+      (at(i + 1) == "your" || at(i + 1) == "ur" || at(i + 1) == "a")) {
+    out.push_back("put");  // "lay your head on the pillow", "lay a hand on the table"
+    return true;
+  }
+  const size_t b = ClauseStart(out);
+  static const std::set<std::string> kGrasp = {"pick", "lift", "grab", "take", "scoop"};
+  if (w == "up" && out.size() > b + 1 && kGrasp.count(out[b]) &&
+      (at(i + 1).empty() || IsSeparator(at(i + 1)) || at(i + 1) == "with" ||
+       at(i + 1) == "using")) {
+    return true;  // "pick the box up"
+  }
+  if ((w == "lift" || w == "lifts") && !IsLimbAt(raw, i + 1) && at(i + 1) != "your" &&
+      at(i + 1) != "ur" && at(i + 1) != "them" && !IsSeparator(at(i + 1)) && !at(i + 1).empty()) {
+    out.push_back("grab");  // "lift the ball": a grasp (a carry when it is heavy)
+    if (at(i + 1) == "up") ++i;
+    return true;
+  }
+  if ((w == "can" || w == "cans") && i > 0 &&
+      (kDeterminers.count(raw[i - 1]) || Colors().count(raw[i - 1]))) {
+    out.push_back("cylinder");
+    return true;
+  }
+  // "the bed's left side": the left side of the bed
+  if (w.size() > 2 && w.back() == 's' && TypeWords().count(w.substr(0, w.size() - 1)) &&
+      (at(i + 1) == "left" || at(i + 1) == "right" || at(i + 1) == "front" ||
+       at(i + 1) == "back") &&
+      at(i + 2) == "side") {
+    out.insert(out.end(), {raw[i + 1], "side", "of", w.substr(0, w.size() - 1)});
+    i += 2;
+    return true;
+  }
+  if (IsSplitId(w, at(i + 1))) {
+    out.push_back(w + "_" + raw[++i]);
+    return true;
+  }
+  // "press a key on the laptop": the laptop's keyboard
+  if ((w == "key" || w == "keys") && (at(i + 1) == "on" || at(i + 1) == "of")) {
+    const size_t k = at(i + 2) == "the" ? i + 3 : i + 2;
+    if (at(k).rfind("laptop", 0) == 0 || at(k) == "computer" || at(k) == "notebook") {
+      out.insert(out.end(), {raw[k], "keyboard"});
+      i = k;
+      return true;
+    }
+  }
+  return false;
+}
+
+// chat spellings and clause-level rules: "goto", "chill out", "standing back up", a trailing
+// purpose clause
+bool RewordClause(const Tokens& raw, size_t& i, Tokens& out) {
+  const std::string& w = raw[i];
+  auto at = [&](size_t k) { return k < raw.size() ? raw[k] : std::string(); };
+  if (w == "goto") {
+    out.insert(out.end(), {"go", "to"});
+    return true;
+  }
+  // "..., so the foot stays flat": a purpose clause says nothing the pose does not
+  const bool start = out.empty() || IsSeparator(out.back());
+  if (w == "so" && !start && out.back() != "ok" && out.back() != "okay") {
+    static const std::set<std::string> kClause = {"that", "the", "your", "it", "its", "they", "my"};
+    if (kClause.count(at(i + 1))) {
+      while (i + 1 < raw.size() && raw[i + 1] != "then") ++i;
+      return true;
+    }
+  }
+  if (w == "chill" && at(i + 1) == "out") {
+    out.push_back("rest");
+    ++i;
+    return true;
+  }
+  // "and then standing back up" (a bare "standing" is a filler)
+  if (w == "standing" && (at(i + 1) == "up" || (at(i + 1) == "back" && at(i + 2) == "up"))) {
+    out.push_back("stand");
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Tokens Reword(const Tokens& raw) {
@@ -69,69 +371,31 @@ Tokens Reword(const Tokens& raw) {
   for (size_t i = 0; i < raw.size(); ++i) {
     const std::string& w = raw[i];
     const bool start = out.empty() || IsSeparator(out.back());
-    // "NPC sits ...", "the character walks to ...", "then he gets up"
-    if (start && (Subjects().count(w) || (w == "the" && Subjects().count(at(i + 1))))) {
-      if (w == "the") ++i;
+    if (size_t n = FramingAt(raw, i, start)) {
+      i += n - 1;
       continue;
     }
-    // "its hands", "his left knee": the character's own body is "your"
-    if ((w == "its" || w == "his" || w == "her" || w == "their") && IsLimbAt(raw, i + 1)) {
-      out.push_back("your");
+    // "NPC sits ...", "the character walks to ...", "then he gets up", "the robot will sit"
+    if (start && SubjectAt(raw, i) > 0) {
+      i += SubjectAt(raw, i);
+      i += AuxiliaryAt(raw, i);
+      --i;
       continue;
     }
-    if (IsSplitId(w, at(i + 1))) {
-      out.push_back(w + "_" + raw[++i]);
+    if (size_t n = CausativeAt(raw, i, out)) {
+      i += n - 1;
       continue;
     }
-    // "press a key on the laptop": the laptop's keyboard
-    if ((w == "key" || w == "keys") && (at(i + 1) == "on" || at(i + 1) == "of")) {
-      const size_t k = at(i + 2) == "the" ? i + 3 : i + 2;
-      if (at(k).rfind("laptop", 0) == 0 || at(k) == "computer" || at(k) == "notebook") {
-        out.insert(out.end(), {raw[k], "keyboard"});
-        i = k;
-        continue;
-      }
-    }
-    if (w == "goto") {
-      out.insert(out.end(), {"go", "to"});
+    // "going to sit", "gonna lie down": the verb that follows
+    if ((w == "going" || w == "about") && at(i + 1) == "to" && IsVerbWord(at(i + 2))) {
+      ++i;
       continue;
     }
-    // "without touching the backrest", "without leaning back": leaning forward
-    if (w == "without") {
-      size_t k = i + 1;
-      while (k < raw.size() && k <= i + 4 && raw[k] != "backrest" && raw[k] != "back") ++k;
-      if (k < raw.size() && k <= i + 4) {
-        if (at(k + 1) == "rest") ++k;
-        out.insert(out.end(), {"leaning", "forward"});
-        i = k;
-        continue;
-      }
-    }
-    // "knees bent up", "head raised off the pillow": the limb is up
-    if ((w == "bent" || w == "raised" || w == "lifted") && !out.empty() &&
-        IsLimbAt(out, out.size() - 1)) {
-      out.push_back("up");
-      if (at(i + 1) == "up") ++i;
-      if (at(i + 1) == "off") {
-        size_t k = i + 2;
-        if (at(k) == "the") ++k;
-        if (at(k) == "pillow" || at(k) == "mattress" || at(k) == "bed") i = k;
-      }
+    if (size_t n = AvoidedPose(raw, i, out)) {
+      i += n - 1;
       continue;
     }
-    // "..., so the foot stays flat": a purpose clause says nothing the pose does not
-    if (w == "so" && !start && out.back() != "ok" && out.back() != "okay") {
-      static const std::set<std::string> kClause = {"that", "the",  "your", "it",
-                                                    "its",  "they", "my"};
-      if (kClause.count(at(i + 1))) {
-        while (i + 1 < raw.size() && raw[i + 1] != "then") ++i;
-        continue;
-      }
-    }
-    if (w == "chill" && at(i + 1) == "out") ++i;
-    // "and then standing back up" (a bare "standing" is a filler)
-    if (w == "standing" && (at(i + 1) == "up" || (at(i + 1) == "back" && at(i + 2) == "up"))) {
-      out.push_back("stand");
+    if (RewordBody(raw, i, out) || RewordObjects(raw, i, out) || RewordClause(raw, i, out)) {
       continue;
     }
     auto form = VerbForms().find(w);

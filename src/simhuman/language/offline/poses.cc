@@ -263,7 +263,7 @@ core::StatusOr<std::optional<Variant>> Session::ParseVariant(const Tokens& t, si
       }
       return std::optional<Variant>(v);
     }
-    if (knee < e) {
+    if (knee < e || (foot < e && t[foot] != "feet" && t[foot] != "foot")) {  // "on your legs"
       v.kind = VariantKind::kHandsOnKnees;
       return std::optional<Variant>(v);
     }
@@ -286,15 +286,14 @@ core::StatusOr<std::optional<Variant>> Session::ParseVariant(const Tokens& t, si
   if (Has(t, b, e, "side") && foot == e && hand == e) {
     std::string s = SideBefore(t, b, Find(t, b, e, {"side"}));
     if (s != "left" && s != "right") {
-      return Invalid("\"" + c +
-                     "\": on which side? say \"on your left side\" or \"on your "
-                     "right side\"");
+      return Question("\"" + c + "\": on which side, your left side or your right side?");
     }
     v.kind = VariantKind::kOnSide;
     v.side = s;
     return std::optional<Variant>(v);
   }
-  if (Has(t, b, e, "head") && (Has(t, b, e, "up") || Has(t, b, e, "raise"))) {
+  // "head up", "keep your head off the pillow"
+  if (Has(t, b, e, "head") && (Has(t, b, e, "up") || Has(t, b, e, "raise") || away)) {
     v.kind = VariantKind::kHeadUp;
     return std::optional<Variant>(v);
   }

@@ -26,9 +26,14 @@ const std::set<std::string>& Vocabulary() {
 // the words a slip is corrected to: objects, parts, colours, body words, function words
 const std::set<std::string>& Targets() {
   static const auto* words = [] {
-    auto* w = new std::set<std::string>{"the",   "your",  "with",  "then",   "and",
-                                        "hand",  "hands", "elbow", "elbows", "knee",
-                                        "knees", "foot",  "feet",  "legs",   "stomach"};
+    auto* w = new std::set<std::string>{
+        "the",     "your",    "with",     "then",     "and",      "hand",    "hands",
+        "elbow",   "elbows",  "knee",     "knees",    "foot",     "feet",    "legs",
+        "stomach", "please",  "down",     "front",    "behind",   "left",    "right",
+        "side",    "onto",    "back",     "top",      "sit",      "lie",     "stand",
+        "walk",    "touch",   "reach",    "lean",     "cross",    "type",    "rest",
+        "put",     "place",   "grab",     "carry",    "sitting",  "lying",   "standing",
+        "walking", "leaning", "touching", "armrests", "backrest", "recline", "approach"};
     for (const auto& [from, to] : TypeWords()) {
       if (!to.empty()) w->insert(from);
     }
@@ -69,11 +74,43 @@ int EditDistance(const std::string& a, const std::string& b) {
   return d[n][m];
 }
 
+namespace {
+
+bool Readable(const std::string& w) { return Known(w) || Vocabulary().count(w) > 0; }
+
+// a word with a letter held down ("sitt", "bedd", "pleeease"), a plural or possessive of a
+// known word ("boxs", "couches", "desks"): that word; "" when there is none
+std::string KnownForm(const std::string& w) {
+  std::string once;  // every run of a letter once
+  for (char c : w) {
+    if (once.empty() || once.back() != c) once += c;
+  }
+  if (once != w && Readable(once)) return once;
+  std::string twice;  // runs of three or more letters twice ("coool")
+  for (size_t i = 0; i < w.size(); ++i) {
+    if (i >= 2 && w[i] == w[i - 1] && w[i] == w[i - 2]) continue;
+    twice += w[i];
+  }
+  if (twice != w && Readable(twice)) return twice;
+  for (size_t cut : {1, 2}) {
+    if (w.size() > cut + 2 && w.back() == 's' && Readable(w.substr(0, w.size() - cut))) {
+      return w.substr(0, w.size() - cut);
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
 Tokens CorrectTypos(const Tokens& raw) {
   Tokens out = raw;
   for (std::string& w : out) {
-    if (w.size() < 3 || Known(w) || Vocabulary().count(w)) continue;
+    if (w.size() < 3 || Readable(w)) continue;
     if (std::any_of(w.begin(), w.end(), [](char c) { return std::isdigit(c) != 0; })) continue;
+    if (std::string k = KnownForm(w); !k.empty()) {
+      w = k;
+      continue;
+    }
     const int allowed = w.size() >= 8 ? 2 : w.size() >= 5 ? 1 : 0;
     std::string best;
     int best_d = 3, count = 0;
@@ -155,6 +192,15 @@ bool TakeThemOff(const std::vector<ClauseWords>& clauses, size_t k, Tokens& b) {
 void JoinClauses(std::vector<ClauseWords>& clauses) {
   for (size_t k = 0; k < clauses.size(); ++k) {
     Tokens& a = clauses[k].words;
+    // "with your left hand put the box on ...": the instrument goes after what it does
+    for (size_t h = 1; h + 1 < a.size() && IsInstrument(a) == false; ++h) {
+      if ((a[h] != "hand" && a[h] != "hands") ||
+          !IsInstrument(Tokens(a.begin(), a.begin() + h + 1))) {
+        continue;
+      }
+      std::rotate(a.begin(), a.begin() + static_cast<long>(h) + 1, a.end());
+      break;
+    }
     // "sit with your hands on the keyboard": the seat at the laptop
     if (a.size() > 2 && a[0] == "sit" && a[1] == "with" &&
         (Contains(a, "keyboard") || Contains(a, "laptop"))) {

@@ -151,8 +151,14 @@ class Session {
   // ---- clause kinds (body_verbs.cc, tabletop.cc)
   absl::Status SitOrLie(const Tokens& t, size_t b, SitMode mode, const std::string& c);
   core::StatusOr<const CatalogObject*> SeatAt(const CatalogObject& o, const std::string& c) const;
+  /// The one seat within kSeatByM of `o` when `o` (the object last referred to) is no seat
+  /// itself; nullptr otherwise ("walk to the desk and sit down").
+  const CatalogObject* SeatBy(const CatalogObject* o) const;
   absl::Status SitPose(const Tokens& t, size_t j, const std::string& c);
   absl::Status Type(const Tokens& t, size_t b, const std::string& c);
+  /// "see the armchair? sit in it": the object becomes "it"; "use the chair / the laptop": rest
+  /// on it or type on it. t[i] is the verb.
+  absl::Status NoticeOrUse(const Tokens& t, size_t i, const std::string& c);
   absl::Status Go(const Tokens& t, size_t b, const std::string& c);
   absl::Status StandUp(const std::string& c);
   /// `in_pose`: the reach is a pose of the sit said in the same clause ("sit at the desk with
