@@ -4,6 +4,8 @@
 //
 //   build/simhuman_carry_probe [--episodes N] [--seed S] [--side M] [--mass KG]
 //                              [--policy FILE] [--seconds T] [--sheet DIR]
+//                              [--stand-gap M] [--grasp-frac F] [--reach-depth M] [--pose-at T]
+//                              [--torsion M] [--contacts 1]
 #include <torch/torch.h>
 
 #include <cmath>
@@ -30,6 +32,9 @@ struct Args {
   double seconds = 6;
   double stand_gap = -1, grasp_frac = -1, hold_rise = -9, hold_gap = -1;
   double pose_at = -1;  // >= 0: start posed inside the lift at this time (s)
+  double reach_depth = -1;
+  double torsion = -1;    // >= 0: the box's torsional friction (condim 3 at 0)
+  bool contacts = false;  // print every contact and its normal force
   std::string policy, sheet;
 };
 
@@ -60,6 +65,12 @@ Args Parse(int argc, char** argv) {
       a.hold_gap = std::atof(v);
     else if (k == "--pose-at")
       a.pose_at = std::atof(v);
+    else if (k == "--reach-depth")
+      a.reach_depth = std::atof(v);
+    else if (k == "--contacts")
+      a.contacts = std::atoi(v) != 0;
+    else if (k == "--torsion")
+      a.torsion = std::atof(v);
     else if (k == "--sheet")
       a.sheet = v;
     else {
@@ -75,12 +86,21 @@ void HandForces(const mjModel* m, const mjData* d, const sh::control::CarryIndex
   *left = *right = 0;
   for (int c = 0; c < d->ncon; ++c) {
     const mjContact& con = d->contact[c];
-    if (con.geom1 != box && con.geom2 != box) continue;
-    const int other = con.geom1 == box ? con.geom2 : con.geom1;
+    // the box body may hold several geoms (faces, rims): any of them counts
+    const int body = m->geom_bodyid[box];
+    const bool first = m->geom_bodyid[con.geom1] == body;
+    if (!first && m->geom_bodyid[con.geom2] != body) continue;
+    const int other = first ? con.geom2 : con.geom1;
     mjtNum f[6];
     mj_contactForce(m, d, c, f);
-    if (other == ix.left_hand_geom) *left += f[0];
-    if (other == ix.right_hand_geom) *right += f[0];
+    // a hand or its forearm: a hug presses with both
+    const int ob = m->geom_bodyid[other];
+    if (ob == m->geom_bodyid[ix.left_hand_geom] ||
+        ob == m->body_parentid[m->geom_bodyid[ix.left_hand_geom]])
+      *left += f[0];
+    if (ob == m->geom_bodyid[ix.right_hand_geom] ||
+        ob == m->body_parentid[m->geom_bodyid[ix.right_hand_geom]])
+      *right += f[0];
   }
 }
 
@@ -117,6 +137,7 @@ int main(int argc, char** argv) {
   if (a.grasp_frac >= 0) (*t)->params().grasp_frac = a.grasp_frac;
   if (a.hold_rise > -9) (*t)->params().hold_rise_m = a.hold_rise;
   if (a.hold_gap >= 0) (*t)->params().hold_gap_m = a.hold_gap;
+  if (a.reach_depth >= 0) (*t)->params().max_reach_depth_m = a.reach_depth;
   const auto& ix = (*t)->index();
   const int od = (*t)->obs_dim(), ad = (*t)->act_dim();
   std::vector<float> obs(od), act(ad, 0.f);
@@ -136,6 +157,11 @@ int main(int argc, char** argv) {
     (*t)->SetBox(0, side, mass, box_pos, yaw, (box_pos + 2.0 * fwd).head<2>(), obs.data());
     (*t)->StartLiftNow(0, obs.data(), a.pose_at);
     const mjModel* m = (*t)->model(0);
+    if (a.torsion >= 0) {  // a probe of the grip: the model is this probe's own
+      mjModel* mm = const_cast<mjModel*>(m);
+      mm->geom_friction[3 * (*t)->box_geom() + 1] = a.torsion;
+      mm->geom_condim[(*t)->box_geom()] = a.torsion > 0 ? 4 : 3;
+    }
     std::unique_ptr<sh::render::OffscreenRenderer> r;
     std::vector<std::vector<uint8_t>> frames;
     constexpr int kW = 320, kH = 240;
@@ -181,13 +207,24 @@ int main(int argc, char** argv) {
       const auto box = sh::control::ReadCarryBox(m, d, (*t)->box_geom());
       const double low = sh::control::BoxLowestZ(box);
       if ((*t)->state(0).phase == CarryPhase::kCarry) max_low = std::max(max_low, low);
+      if (a.contacts && k % 8 == 0) {
+        for (int c = 0; c < d->ncon; ++c) {
+          const mjContact& con = d->contact[c];
+          mjtNum f[6];
+          mj_contactForce(m, d, c, f);
+          std::printf("    con %s - %s  f %.0f\n", mj_id2name(m, mjOBJ_GEOM, con.geom1),
+                      mj_id2name(m, mjOBJ_GEOM, con.geom2), f[0]);
+        }
+      }
       if (k % 8 == 0 || info.terminated) {
         double fl, fr;
         HandForces(m, d, ix, (*t)->box_geom(), &fl, &fr);
         std::printf(
-            "  t %.2f %-8s pelvis z %.2f  box low %.3f  hands %4.0f %4.0f N  com ahead %+.3f\n",
+            "  t %.2f %-8s pelvis z %.2f  box low %.3f tilt %3.0f  hands %4.0f %4.0f N  com ahead "
+            "%+.3f\n",
             d->time, sh::control::CarryPhaseName((*t)->state(0).phase),
-            d->xpos[3 * ix.walk.agent.pelvis_body + 2], low, fl, fr, ComAhead(d, ix));
+            d->xpos[3 * ix.walk.agent.pelvis_body + 2], low,
+            std::acos(std::min(1.0, box.rot(2, 2))) * 180 / M_PI, fl, fr, ComAhead(d, ix));
       }
       if (r && k % 8 == 0) {
         sh::render::CameraSpec cam;
