@@ -288,6 +288,45 @@ TEST(OfflinePlannerTest, RunOnsVerblessTouchesAndFrontedInstruments) {
                                     "put the ball on the cylinder with your left hand"}});
 }
 
+TEST(OfflinePlannerTest, EverydayClauseShapes) {
+  // order words, a verb and its object said apart, an object that takes the verb before it
+  ExpectSamePlan(
+      "living_room",
+      {{"before you lie down, sit on the bed", "sit on the bed, then lie down"},
+       {"put your hands on the armrests after sitting in the armchair",
+        "sit in the armchair, then put your hands on the armrests"},
+       {"goto(sofa005); sit(sofa005)", "sit on the sofa"},
+       {"sofa. sit.", "sit on the sofa"},
+       {"SitOnSofa", "sit on the sofa"},
+       {"a) walk to the sofa b) sit", "sit on the sofa"},
+       {"walk to the sofa comma sit down period", "sit on the sofa"},
+       {"please to sit in the sofa", "sit on the sofa"},
+       {"sit on the sofa, then on the armchair", "sit on the sofa, then sit in the armchair"},
+       {"walk from the table to the bed", "go to the table, then go to the bed"},
+       {"sit with your legs crossed on the couch", "sit on the sofa and cross your legs"},
+       {"sit on the couch with your left leg over your right",
+        "sit on the sofa with your left foot on your right knee"},
+       {"sit on the sofa, arms on the armrests", "sit on the sofa, hands on the armrests"},
+       {"lie in bed with your head propped up", "lie on the bed with your head up"},
+       {"lie on the bed and roll over to the left", "lie on the bed and turn onto your left side"},
+       {"lie down, then sit up on the edge", "lie down, then sit on the bed"}});
+  ExpectSamePlan(
+      "sit_demo",
+      {{"sit down and lean forward, then backward", "sit and lean forward, then lean back"},
+       {"sit and relax against the back of the chair", "sit and lean back"}});
+  ExpectSamePlan("tabletop_demo",
+                 {{"red box on blue box", "put the red box on the blue box"},
+                  {"use your left hand to put the ball on the cylinder",
+                   "put the ball on the cylinder with your left hand"},
+                  {"put the ball on the cylinder, use your left hand",
+                   "put the ball on the cylinder with your left hand"},
+                  {"put the red box on the ball's right", "put the red box right of the ball"}});
+  // still refused: a facing direction, an unknown pose
+  EXPECT_TRUE(absl::IsInvalidArgument(PlanStatus("living_room", "lie on the bed facing the wall")));
+  EXPECT_TRUE(
+      absl::IsInvalidArgument(PlanStatus("sit_demo", "sit on the chair and cross your arms")));
+}
+
 TEST(OfflinePlannerTest, Idioms) {
   const std::string lie = "bed003|mattress|pelvis|contact|up, bed003|pillow|head|contact|up";
   for (const char* c :

@@ -6,6 +6,7 @@
 #include <tuple>
 #include <utility>
 
+#include "simhuman/language/offline/lexicon.h"
 #include "simhuman/language/offline/objects.h"
 #include "simhuman/language/offline/session.h"
 #include "simhuman/language/offline_planner.h"
@@ -51,6 +52,28 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, SitMode mode, const st
       "with",  "while", "your", "lean", "hand", "hands", "knees", "knee",  "head", "elbows",
       "elbow", "foot",  "feet", "legs", "leg",  "cross", "keep",  "raise", "and",  "facing"};
   size_t j = Find(t, i, t.size(), kStop);
+  // "lie in bed on the left side": the side is a pose
+  for (size_t k = i; k + 2 < j; ++k) {
+    if ((t[k] == "on" || t[k] == "onto") && (t[k + 1] == "left" || t[k + 1] == "right") &&
+        t[k + 2] == "side") {
+      j = k;
+    }
+  }
+  // "sit with your legs crossed on the sofa": the object named after the pose
+  if (j == i && j < t.size()) {
+    for (size_t k = t.size(); k-- > j + 1;) {
+      if (t[k] != "on" && t[k] != "in" && t[k] != "at" && t[k] != "onto") continue;
+      bool body = false;
+      for (size_t m = k + 1; m < t.size(); ++m) body = body || IsBodyWord(t[m]) || t[m] == "side";
+      if (body || k + 1 >= t.size() || !(TypeWords().count(t[k + 1]) || Colors().count(t[k + 1]))) {
+        break;
+      }
+      Tokens moved(t.begin(), t.begin() + static_cast<long>(i));
+      moved.insert(moved.end(), t.begin() + static_cast<long>(k), t.end());
+      moved.insert(moved.end(), t.begin() + static_cast<long>(j), t.begin() + static_cast<long>(k));
+      return SitOrLie(moved, b, mode, c);
+    }
+  }
   // "lie on the bed on your left side": a trailing "on" before "your" belongs to the pose
   size_t np_end = j;
   while (np_end > i && (t[np_end - 1] == "on" || t[np_end - 1] == "in")) --np_end;
@@ -59,7 +82,12 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, SitMode mode, const st
   const CatalogObject* o = nullptr;
   if (np_end > i) {
     SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, np_end, 0, c));
-    SH_ASSIGN_OR_RETURN(o, Resolve(np, c, part));
+    const CatalogObject* here = on_ != nullptr ? on_ : focus_;
+    if (np.part == "edge" && !np.has_type && np.id.empty() && !np.pronoun && here != nullptr) {
+      o = here;  // "sit up on the edge": of what the human is on
+    } else {
+      SH_ASSIGN_OR_RETURN(o, Resolve(np, c, part));
+    }
   } else if (mode == SitMode::kRecline && on_ != nullptr &&
              (HasPart(*on_, "mattress") || HasPart(*on_, "back surface"))) {
     o = on_;  // "sit on the edge of the bed, then lie back"
@@ -127,6 +155,20 @@ absl::Status Session::SitPose(const Tokens& t, size_t j, const std::string& c) {
 
 absl::Status Session::Go(const Tokens& t, size_t b, const std::string& c) {
   size_t i = b;
+  // "go from the sofa to the armchair": to the first (unless there already), then the second
+  if (i < t.size() && t[i] == "from") {
+    const size_t to = Find(t, i + 1, t.size(), {"to"});
+    if (to + 1 < t.size()) {
+      SH_ASSIGN_OR_RETURN(NounPhrase from, ParseNounPhrase(t, i + 1, to, 0, c));
+      SH_ASSIGN_OR_RETURN(const CatalogObject* o, Resolve(from, c));
+      const bool there = on_ == o || (!steps_.empty() && steps_.back().kind == StepDraft::kMove &&
+                                      steps_.back().object == o);
+      if (!there)
+        SH_RETURN_IF_ERROR(Go(
+            Tokens(t.begin() + static_cast<long>(i) + 1, t.begin() + static_cast<long>(to)), 0, c));
+      i = to + 1;
+    }
+  }
   Direction side = Direction::kFront;
   while (i < t.size() && (t[i] == "to" || t[i] == "near" || t[i] == "at" || t[i] == "up" ||
                           t[i] == "in" || t[i] == "on")) {

@@ -61,6 +61,10 @@ core::StatusOr<Tokens> Tokenize(std::string_view command) {
   for (size_t i = 0; i < command.size(); ++i) {
     const unsigned char c = static_cast<unsigned char>(command[i]);
     if (std::isalnum(c)) {
+      // "SitOnSofa": a capital after a small letter starts a word
+      if (std::isupper(c) && i > 0 && std::islower(static_cast<unsigned char>(command[i - 1]))) {
+        flush();
+      }
       word += static_cast<char>(std::tolower(c));
     } else if (c == '\'') {
       continue;  // "chair's" -> "chairs", "don't" -> "dont"

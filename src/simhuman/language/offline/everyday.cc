@@ -118,6 +118,13 @@ const PhraseList& Wrappers() {
       {{"turn", "around"}, {}},
       {{"across", "the", "room"}, {}},
       {{"wake", "up"}, {}},
+  };
+  return *phrases;
+}
+
+// sequencing: "to finish, ...", "start by ...", "when you get there, ..." (dropped or "then")
+const PhraseList& Sequencing() {
+  static const auto* phrases = new PhraseList{
       // sequencing: "to finish, ...", "start by ...", "when you get there, ..."
       {{"start", "by"}, {}},
       {{"begin", "by"}, {}},
@@ -167,7 +174,34 @@ const PhraseList& Wrappers() {
       {{"once", "youre", "seated"}, {"then"}},
       {{"once", "sitting"}, {"then"}},
       {{"once", "lying"}, {"then"}},
-      {{"before", "you"}, {"then"}},
+      {{"as", "soon", "as"}, {}},
+      {{"when", "you", "reach"}, {"go", "to"}},
+      {{"once", "you", "reach"}, {"go", "to"}},
+      {{"when", "you", "get", "to"}, {"go", "to"}},
+      {{"once", "you", "get", "to"}, {"go", "to"}},
+      {{"or", "something"}, {}},
+      {{"or", "so"}, {}},
+      {{"period"}, {"then"}},  // dictated punctuation
+      {{"comma"}, {"then"}},
+      {{"full", "stop"}, {"then"}},
+      {{"new", "line"}, {"then"}},
+      {{"come", "here"}, {}},
+      {{"come", "over", "here"}, {}},
+      {{"go", "over", "there"}, {}},
+      {{"with", "me"}, {}},
+      {{"stay", "there"}, {}},
+      {{"stay", "here"}, {}},
+      {{"stay", "put"}, {}},
+      {{"stay", "still"}, {}},
+      {{"stay", "seated"}, {}},
+      {{"stay", "sitting"}, {}},
+      {{"stay", "lying"}, {}},
+      {{"remain", "seated"}, {}},
+      {{"switch", "to"}, {}},  // "sit on the sofa, then switch to the armchair": the same verb
+      {{"change", "to"}, {}},
+      {{"swap", "to"}, {}},
+      {{"i", "want", "that", "you"}, {}},
+      {{"want", "that", "you"}, {}},
       {{"and", "also"}, {"and"}},
       {{"as", "well", "as"}, {"and"}},
   };
@@ -179,6 +213,45 @@ const PhraseList& Idioms() {
   static const auto* phrases = new PhraseList{
       // sitting
       {{"sit", "yourself"}, {"sit"}},
+      {{"sit", "back", "down"}, {"sit"}},
+      {{"back", "up"}, {}},
+      {{"lower", "yourself"}, {"rest"}},
+      {{"lower", "yourself", "down"}, {"rest"}},
+      {{"ease", "yourself"}, {"rest"}},
+      {{"ease", "yourself", "down"}, {"rest"}},
+      {{"drop", "into"}, {"rest", "in"}},
+      {{"drop", "down", "into"}, {"rest", "in"}},
+      {{"drop", "onto"}, {"rest", "on"}},
+      {{"collapse", "into"}, {"rest", "in"}},
+      {{"collapse", "onto"}, {"rest", "on"}},
+      {{"crash", "into"}, {"rest", "in"}},
+      {{"take", "a", "break"}, {"rest"}},
+      {{"rest", "against"}, {"lean", "back", "against"}},
+      {{"relax", "against"}, {"lean", "back", "against"}},
+      {{"right", "over", "left"}, {}},
+      {{"close", "your", "eyes"}, {}},
+      {{"shut", "your", "eyes"}, {}},
+      {{"curled", "up"}, {}},
+      {{"get", "up", "on"}, {"geton"}},
+      {{"get", "up", "onto"}, {"geton"}},
+      {{"one", "arm"}, {"your", "hand"}},
+      {{"one", "elbow"}, {"elbow"}},
+      {{"in", "your", "hand"}, {}},
+      {{"in", "your", "hands"}, {}},
+      {{"in", "both", "hands"}, {"with", "both", "hands"}},
+      {{"furthest", "left"}, {"left"}},
+      {{"farthest", "left"}, {"left"}},
+      {{"furthest", "right"}, {"right"}},
+      {{"farthest", "right"}, {"right"}},
+      {{"take", "place"}, {"sit"}},
+      {{"take", "a", "place"}, {"sit"}},
+      {{"do", "a", "sit"}, {"sit"}},
+      {{"put", "yourself", "on"}, {"rest", "on"}},
+      {{"put", "yourself", "in"}, {"rest", "in"}},
+      {{"put", "you", "on"}, {"rest", "on"}},
+      {{"put", "you", "in"}, {"rest", "in"}},
+      {{"get", "yourself", "to"}, {"go"}},
+      {{"get", "yourself", "over", "to"}, {"go"}},
       {{"plop", "yourself"}, {"sit"}},
       {{"plonk", "yourself"}, {"sit"}},
       {{"park", "yourself"}, {"sit"}},
@@ -279,6 +352,13 @@ const PhraseList& Idioms() {
       {{"position", "yourself"}, {"go"}},
       {{"place", "yourself"}, {"go"}},
       {{"right", "up", "to"}, {"to"}},
+  };
+  return *phrases;
+}
+
+// idioms for touching, typing and noticing, poses, places and objects
+const PhraseList& MoreIdioms() {
+  static const auto* phrases = new PhraseList{
       // touching, holding, typing
       {{"reach", "out", "and"}, {}},
       {{"reach", "out", "to"}, {"reach"}},
@@ -327,6 +407,15 @@ const PhraseList& Idioms() {
       {{"opposite", "leg"}, {"other_knee"}},
       {{"under", "your", "head"}, {"on", "pillow"}},
       {{"behind", "your", "head"}, {"on", "pillow"}},
+      {{"one", "foot"}, {"foot"}},
+      {{"one", "hand"}, {"hand"}},
+      {{"both", "of", "your"}, {"your", "both"}},
+      {{"facing", "left"}, {"on", "your", "left", "side"}},
+      {{"facing", "right"}, {"on", "your", "right", "side"}},
+      {{"take", "your", "hands", "off"}, {"keep", "your", "hands", "off"}},
+      {{"take", "your", "hands", "away", "from"}, {"keep", "your", "hands", "off"}},
+      {{"remove", "your", "hands", "from"}, {"keep", "your", "hands", "off"}},
+      {{"lift", "your", "hands", "off"}, {"keep", "your", "hands", "off"}},
       {{"left", "hand", "side"}, {"left", "side"}},
       {{"right", "hand", "side"}, {"right", "side"}},
       {{"left", "hand", "armrest"}, {"left", "armrest"}},
@@ -382,15 +471,18 @@ const PhraseList& Idioms() {
 const std::vector<std::pair<Tokens, Tokens>>& EverydayPhrases() {
   static const auto* all = [] {
     auto* v = new PhraseList(Wrappers());
+    v->insert(v->end(), Sequencing().begin(), Sequencing().end());
     v->insert(v->end(), Idioms().begin(), Idioms().end());
+    v->insert(v->end(), MoreIdioms().begin(), MoreIdioms().end());
     return v;
   }();
   return *all;
 }
 
-// single words: verbs, objects, parts, colours and chat spellings people use for the canonical
-// ones
-const std::map<std::string, std::string>& EverydaySynonyms() {
+namespace {
+
+// single words people use for the canonical verbs, and sequencing words
+const std::map<std::string, std::string>& VerbSynonyms() {
   static const auto* words = new std::map<std::string, std::string>{
       // verbs
       {"stroll", "go"},
@@ -446,9 +538,12 @@ const std::map<std::string, std::string>& EverydaySynonyms() {
       {"tuck", "raise"},
       {"occupy", "use"},
       {"work", "type"},
-      {"b4", "then"},
-      {"before", "then"},
+      {"b4", "before"},
       {"later", "then"},
+      {"until", "to"},
+      {"visit", "go"},
+      {"low", "flat"},
+      {"lowest", "flat"},
       {"eventually", "then"},
       {"subsequently", "then"},
       {"thereafter", "then"},
@@ -463,6 +558,13 @@ const std::map<std::string, std::string>& EverydaySynonyms() {
       {"n", "and"},
       {"plus", "and"},
       {"w", "with"},
+  };
+  return *words;
+}
+
+// objects, parts, body words, colours and chat spellings
+const std::map<std::string, std::string>& ThingSynonyms() {
+  static const auto* words = new std::map<std::string, std::string>{
       // objects, parts and body words
       {"loveseat", "sofa"},
       {"divan", "sofa"},
@@ -564,6 +666,17 @@ const std::map<std::string, std::string>& EverydaySynonyms() {
   return *words;
 }
 
+}  // namespace
+
+const std::map<std::string, std::string>& EverydaySynonyms() {
+  static const auto* words = [] {
+    auto* w = new std::map<std::string, std::string>(VerbSynonyms());
+    w->insert(ThingSynonyms().begin(), ThingSynonyms().end());
+    return w;
+  }();
+  return *words;
+}
+
 // words that carry no action: greetings, hedges, intensifiers, time words, adjectives of
 // material and comfort
 const std::set<std::string>& EverydayFillers() {
@@ -586,7 +699,8 @@ const std::set<std::string>& EverydayFillers() {
       "plastic",   "metal",       "leather",  "fabric",    "padded",     "comfy",      "cozy",
       "cosy",      "soft",        "dining",   "kitchen",   "writing",    "old",        "dark",
       "light",     "bright",      "pale",     "deep",      "yourself",   "our",        "whole",
-      "room",      "area",        "slow",     "quick",     "fast",       "ready",      "wait"};
+      "room",      "area",        "slow",     "quick",     "fast",       "ready",      "wait",
+      "upright",   "supine",      "bye",      "goodbye",   "cya",        "when",       "once"};
   return *words;
 }
 

@@ -183,10 +183,14 @@ absl::Status Session::ImpliedBase(const Variant& v, const Tokens& t, size_t b, s
 
 absl::Status Session::Type(const Tokens& t, size_t b, const std::string& c) {
   size_t i = b;
-  while (i < t.size() && (t[i] == "on" || t[i] == "at" || t[i] == "in" || t[i] == "using")) ++i;
+  while (i < t.size() &&
+         (t[i] == "on" || t[i] == "at" || t[i] == "in" || t[i] == "using" || t[i] == "away")) {
+    ++i;
+  }
+  const size_t e = Find(t, i, t.size(), {"with", "using"});  // "... with both hands"
   const CatalogObject* o = nullptr;
-  if (i < t.size()) {
-    SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, t.size(), 0, c));
+  if (i < e) {
+    SH_ASSIGN_OR_RETURN(NounPhrase np, ParseNounPhrase(t, i, e, 0, c));
     SH_ASSIGN_OR_RETURN(o, Resolve(np, c, "keyboard"));
     // "type at the desk": the laptop on it
     const CatalogObject* on = nullptr;

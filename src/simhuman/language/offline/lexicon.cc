@@ -371,7 +371,8 @@ const std::set<std::string>& OtherWords() {
       "center",  "there",   "yours",    "own",      "one",        "edge",    "each",   "against",
       "dont",    "lean",    "place",    "using",    "either",     "s",       "geton",  "carry",
       "here",    "team2",   "team3",    "team4",    "teamall",    "teamany", "door",   "doors",
-      "doorway", "exit",    "entrance", "recline",  "type",       "flat",    "notice", "use"};
+      "doorway", "exit",    "entrance", "recline",  "type",       "flat",    "notice", "use",
+      "before",  "after"};
   return *words;
 }
 

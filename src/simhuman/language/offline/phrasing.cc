@@ -112,6 +112,14 @@ bool IsSplitId(const std::string& w, const std::string& next) {
 
 bool IsSeparator(const std::string& w) { return w == "then" || w == "and"; }
 
+// an object type or a synonym of one ("bed", "ball", "couch")
+bool IsThing(const std::string& w) {
+  auto syn = Synonyms().find(w);
+  const std::string& type = syn != Synonyms().end() ? syn->second : w;
+  auto t = TypeWords().find(type);
+  return t != TypeWords().end() && !t->second.empty();
+}
+
 // "3", "2nd": a list number or ordinal (object ids have letters first)
 bool IsNumber(const std::string& w) {
   if (w.empty() || !std::isdigit(static_cast<unsigned char>(w[0]))) return false;
@@ -243,7 +251,7 @@ bool RewordBody(const Tokens& raw, size_t& i, Tokens& out) {
     }
   }
   // "knees bent up", "head raised off the pillow": the limb is up
-  if ((w == "bent" || w == "raised" || w == "lifted") && !out.empty() &&
+  if ((w == "bent" || w == "raised" || w == "lifted" || w == "flexed") && !out.empty() &&
       IsLimbAt(out, out.size() - 1)) {
     out.push_back("up");
     if (at(i + 1) == "up") ++i;
@@ -254,17 +262,63 @@ bool RewordBody(const Tokens& raw, size_t& i, Tokens& out) {
     }
     return true;
   }
+  // "elbow propped on the armrest", "hands resting on your knees": the limb is placed there
+  static const std::set<std::string> kPlaced = {"resting",    "placed", "planted", "propped",
+                                                "positioned", "folded", "clasped", "laid"};
+  if (kPlaced.count(w) && !out.empty() && IsLimbAt(out, out.size() - 1)) {
+    const std::string& limb = out.back();
+    if (w == "propped" && (limb == "head" || limb == "knee" || limb == "knees")) {
+      out.push_back("up");
+    }
+    return true;
+  }
+  // "arms on the armrests" said without "your": the hands
+  if ((w == "arms" || w == "arm") && (at(i + 1) == "on" || at(i + 1) == "onto") &&
+      (i == 0 || IsSeparator(raw[i - 1]) || raw[i - 1] == "with" || raw[i - 1] == "both")) {
+    out.push_back(w == "arms" ? "hands" : "hand");
+    return true;
+  }
   // "with bent knees", "bring your knees up": raised
-  if (((w == "bent" || w == "raised" || w == "lifted") && IsLimbAt(raw, i + 1)) ||
+  if (((w == "bent" || w == "raised" || w == "lifted" || w == "flexed") && IsLimbAt(raw, i + 1)) ||
       (w == "bring" && (at(i + 1) == "your" || at(i + 1) == "ur") && IsLimbAt(raw, i + 2))) {
     out.push_back("raise");
     return true;
   }
-  // "touch it with your left": the left hand
-  if ((w == "left" || w == "right") && i >= 2 && (raw[i - 2] == "with" || raw[i - 2] == "using") &&
-      (at(i + 1).empty() || IsSeparator(at(i + 1)))) {
-    out.insert(out.end(), {w, "hand"});
-    return true;
+  // "touch it with your left": the left hand; "lie on your right": the right side
+  if ((w == "left" || w == "right") && i >= 2 && (at(i + 1).empty() || IsSeparator(at(i + 1)))) {
+    if (raw[i - 2] == "with" || raw[i - 2] == "using") {
+      out.insert(out.end(), {w, "hand"});
+      return true;
+    }
+    if ((raw[i - 1] == "your" || raw[i - 1] == "ur") &&
+        (raw[i - 2] == "on" || raw[i - 2] == "onto" || raw[i - 2] == "to")) {
+      out.insert(out.end(), {w, "side"});
+      return true;
+    }
+  }
+  // "roll over to the left", "turn to your right": onto that side
+  if (w == "roll" || w == "rolls" || w == "turn" || w == "turns") {
+    for (size_t k = i + 1; k <= i + 4 && k < raw.size() && !IsSeparator(raw[k]); ++k) {
+      if ((raw[k] == "left" || raw[k] == "right") &&
+          (at(k + 1).empty() || IsSeparator(at(k + 1)))) {
+        out.insert(out.end(), {"turn", "onto", "your", raw[k], "side"});
+        i = k;
+        return true;
+      }
+      if (raw[k] == "left" || raw[k] == "right") break;
+    }
+  }
+  // "use your left hand to put ...": with the left hand
+  if ((w == "use" || w == "using") &&
+      (at(i + 1) == "your" || at(i + 1) == "ur" || at(i + 1) == "the")) {
+    size_t k = i + 2;
+    if (at(k) == "left" || at(k) == "right" || at(k) == "both") ++k;
+    if (at(k) == "hand" || at(k) == "hands") {
+      out.push_back("with");
+      for (size_t m = i + 1; m <= k; ++m) out.push_back(raw[m]);
+      i = at(k + 1) == "to" ? k + 1 : k;
+      return true;
+    }
   }
   return false;
 }
@@ -285,7 +339,8 @@ bool RewordObjects(const Tokens& raw, size_t& i, Tokens& out) {
     return true;
   }
   if ((w == "lay" || w == "lays" || w == "laid") &&
-      (at(i + 1) == "your" || at(i + 1) == "ur" || at(i + 1) == "a")) {
+      (at(i + 1) == "your" || at(i + 1) == "ur" || at(i + 1) == "a" || at(i + 1) == "both" ||
+       at(i + 1) == "one" || IsLimbAt(raw, i + 1))) {
     out.push_back("put");  // "lay your head on the pillow", "lay a hand on the table"
     return true;
   }
@@ -308,12 +363,27 @@ bool RewordObjects(const Tokens& raw, size_t& i, Tokens& out) {
     return true;
   }
   // "the bed's left side": the left side of the bed
-  if (w.size() > 2 && w.back() == 's' && TypeWords().count(w.substr(0, w.size() - 1)) &&
+  if (w.size() > 2 && w.back() == 's' && IsThing(w.substr(0, w.size() - 1)) &&
       (at(i + 1) == "left" || at(i + 1) == "right" || at(i + 1) == "front" ||
        at(i + 1) == "back") &&
       at(i + 2) == "side") {
     out.insert(out.end(), {raw[i + 1], "side", "of", w.substr(0, w.size() - 1)});
     i += 2;
+    return true;
+  }
+  // "put the ball on the red box's left": left of the red box
+  if (w.size() > 2 && w.back() == 's' && IsThing(w.substr(0, w.size() - 1)) &&
+      (at(i + 1) == "left" || at(i + 1) == "right") &&
+      (at(i + 2).empty() || IsSeparator(at(i + 2)))) {
+    size_t p = out.size();
+    while (p > 0 && (out[p - 1] == "the" || out[p - 1] == "a" || Colors().count(out[p - 1]))) --p;
+    Tokens np(out.begin() + static_cast<long>(p), out.end());
+    if (p > 0 && (out[p - 1] == "on" || out[p - 1] == "to" || out[p - 1] == "at")) --p;
+    out.resize(p);
+    out.insert(out.end(), {raw[i + 1], "of"});
+    out.insert(out.end(), np.begin(), np.end());
+    out.push_back(w.substr(0, w.size() - 1));
+    ++i;
     return true;
   }
   if (IsSplitId(w, at(i + 1))) {
@@ -341,8 +411,19 @@ bool RewordClause(const Tokens& raw, size_t& i, Tokens& out) {
     out.insert(out.end(), {"go", "to"});
     return true;
   }
-  // "..., so the foot stays flat": a purpose clause says nothing the pose does not
   const bool start = out.empty() || IsSeparator(out.back());
+  // "please to sit", "make sit on the chair": the verb that follows
+  const bool polite = !out.empty() && (out.back() == "please" || out.back() == "pls" ||
+                                       out.back() == "kindly" || out.back() == "just");
+  if (((w == "to" && (start || polite)) || w == "make" || w == "do") && IsVerbWord(at(i + 1))) {
+    return true;
+  }
+  // "a) walk ... b) sit": a list letter
+  if (w.size() == 1 && w != "a" && w != "i" && std::isalpha(static_cast<unsigned char>(w[0])) &&
+      at(i + 1) == "then") {
+    return true;
+  }
+  // "..., so the foot stays flat": a purpose clause says nothing the pose does not
   if (w == "so" && !start && out.back() != "ok" && out.back() != "okay") {
     static const std::set<std::string> kClause = {"that", "the", "your", "it", "its", "they", "my"};
     if (kClause.count(at(i + 1))) {

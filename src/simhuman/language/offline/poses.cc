@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <set>
 
+#include "simhuman/language/offline/lexicon.h"
 #include "simhuman/language/offline/objects.h"
 #include "simhuman/language/offline/session.h"
 
@@ -43,6 +44,30 @@ std::string VariantText(const Variant& v) {
       return "head on the pillow";
   }
   return "";
+}
+
+// a foot on a knee: "right foot on the left knee", "cross your legs", "cross your left leg over
+// your right (one)", "with your right leg over your left"; nullopt when the words say neither
+core::StatusOr<std::optional<Variant>> LegVariant(const Tokens& t, size_t b, size_t e, size_t foot,
+                                                  size_t knee, const std::string& c) {
+  std::string fs = SideBefore(t, b, foot), ks;
+  if (knee < e) {
+    ks = t[knee] == "other_knee" ? "" : SideBefore(t, b, knee);
+  } else {
+    for (size_t k = foot + 1; k < e && ks.empty(); ++k) {
+      if ((t[k] == "left" || t[k] == "right") && !(k + 1 < e && IsBodyWord(t[k + 1]))) ks = t[k];
+    }
+    if (ks.empty() && !Has(t, b, e, "cross")) return std::optional<Variant>();
+  }
+  if (fs.empty() && !ks.empty() && ks != "both") fs = ks == "left" ? "right" : "left";
+  if (fs.empty() || fs == "both") fs = "right";
+  if (ks.empty() || ks == "both") ks = fs == "left" ? "right" : "left";
+  if (ks == fs) {
+    return Invalid("\"" + c +
+                   "\": a foot cannot rest on its own knee; say e.g. \"right foot on the left "
+                   "knee\"");
+  }
+  return std::optional<Variant>(Variant{VariantKind::kFootOnKnee, fs, ks});
 }
 
 }  // namespace
@@ -217,35 +242,26 @@ core::StatusOr<std::optional<Variant>> Session::ParseVariant(const Tokens& t, si
   size_t arm = Find(t, b, e, kArm);
   Variant v{VariantKind::kLeanBack, "both", ""};
   if (Has(t, b, e, "lean")) {
-    v.kind = (Has(t, b, e, "forward") || Has(t, b, e, "front_of")) ? VariantKind::kLeanForward
-                                                                   : VariantKind::kLeanBack;
-    if (v.kind == VariantKind::kLeanBack && !Has(t, b, e, "back") && !Has(t, b, e, "against") &&
-        !Has(t, b, e, "backrest")) {
-      return Invalid("\"" + c + "\": lean which way? say \"lean forward\" or \"lean back\"");
+    // "lean on the left armrest (with your left elbow)": an elbow on the arm
+    if (arm < e && !Has(t, b, e, "back") && !Has(t, b, e, "forward")) {
+      v.kind = VariantKind::kElbowsOnArms;
+      v.side = elbow < e ? limb_side(elbow) : SideBefore(t, b, arm);
+      if (v.side.empty()) v.side = t[arm].back() == 's' ? "both" : "right";
+      return std::optional<Variant>(v);
+    }
+    // forward: "lean forward / in / towards the screen"; back: "lean back / against the back"
+    const bool back = Has(t, b, e, "back") || Has(t, b, e, "against") || Has(t, b, e, "backrest");
+    const bool forward = Has(t, b, e, "forward") || Has(t, b, e, "front_of") ||
+                         Has(t, b, e, "to") || Has(t, b, e, "near");
+    v.kind = forward && !Has(t, b, e, "back") ? VariantKind::kLeanForward : VariantKind::kLeanBack;
+    if (!back && !forward) {
+      return Question("\"" + c + "\": lean which way, forward or back?");
     }
     return std::optional<Variant>(v);
   }
-  if (foot < e && knee < e) {
-    v.kind = VariantKind::kFootOnKnee;
-    std::string fs = SideBefore(t, b, foot), ks = SideBefore(t, b, knee);
-    if (t[knee] == "other_knee") ks = "";
-    if (fs.empty() && !ks.empty()) fs = ks == "left" ? "right" : "left";
-    if (fs.empty() || fs == "both") fs = "right";
-    if (ks.empty() || ks == "both") ks = fs == "left" ? "right" : "left";
-    if (ks == fs) {
-      return Invalid("\"" + c +
-                     "\": a foot cannot rest on its own knee; say e.g. \"right foot "
-                     "on the left knee\"");
-    }
-    v.side = fs;
-    v.knee_side = ks;
-    return std::optional<Variant>(v);
-  }
-  if (Has(t, b, e, "cross") && (Has(t, b, e, "legs") || foot < e)) {
-    v.kind = VariantKind::kFootOnKnee;
-    v.side = "right";
-    v.knee_side = "left";
-    return std::optional<Variant>(v);
+  if (foot < e) {
+    SH_ASSIGN_OR_RETURN(std::optional<Variant> leg, LegVariant(t, b, e, foot, knee, c));
+    if (leg) return leg;
   }
   if (elbow < e && arm < e) {
     v.kind = VariantKind::kElbowsOnArms;

@@ -187,6 +187,10 @@ core::StatusOr<std::string> ResolvePart(const CatalogObject& o, const NounPhrase
   if (word == "arm" && !np.part_side.empty()) word = np.part_side + " arm";
   if (word == "seat") word = "seat surface";
   std::vector<const core::CatalogPart*> parts = PartsNamed(o, word);
+  // "the top of the stool": what faces up on an object without a top
+  for (const char* up : {"seat surface", "board", "mattress"}) {
+    if (parts.empty() && (word == "top" || word == "surface")) parts = PartsNamed(o, up);
+  }
   if (parts.size() > 1 && (side == "left" || side == "right")) {
     std::vector<const core::CatalogPart*> sided;
     for (const core::CatalogPart* p : parts) {

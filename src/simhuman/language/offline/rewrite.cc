@@ -187,9 +187,128 @@ bool TakeThemOff(const std::vector<ClauseWords>& clauses, size_t k, Tokens& b) {
   return false;
 }
 
+// verbs a clause may consist of alone ("sit", "go to") before its object comes as a clause
+// of its own ("sit(chair)", "sofa. sit.") or is left out ("sit on the sofa, then the armchair")
+bool IsBareVerb(const Tokens& a) {
+  static const std::set<std::string> kVerbs = {"sit",   "lie",  "rest", "recline", "go",
+                                               "touch", "grab", "type", "reach",   "notice"};
+  if (a.empty() || a.size() > 2 || !kVerbs.count(a[0])) return false;
+  return a.size() == 1 || a[1] == "to" || a[1] == "on" || a[1] == "in" || a[1] == "at";
+}
+
+// an object alone, after an optional preposition ("the armchair", "on the stool", "it")
+bool IsObjectOnly(const Tokens& b) {
+  size_t i = 0;
+  if (!b.empty() &&
+      (b[0] == "on" || b[0] == "onto" || b[0] == "in" || b[0] == "at" || b[0] == "to")) {
+    ++i;
+  }
+  if (i >= b.size()) return false;
+  if (!StartsWithObject(Tokens(b.begin() + static_cast<long>(i), b.end())) && b[i] != "it" &&
+      b[i] != "them" && !PartWords().count(b[i])) {
+    return false;
+  }
+  for (size_t k = i; k < b.size(); ++k) {
+    const std::string& w = b[k];
+    const bool object_word =
+        Colors().count(w) || TypeWords().count(w) || PartWords().count(w) || w == "it" ||
+        w == "them" || w == "big" || w == "small" || w == "flat" || w == "left" || w == "right" ||
+        w == "nearest" || w == "farthest" ||
+        std::any_of(w.begin(), w.end(), [](char c) { return std::isdigit(c) != 0; });
+    if (!object_word) return false;
+  }
+  return true;
+}
+
+bool HasRelation(const Tokens& b) {
+  return std::any_of(b.begin() + 1, b.end(), [](const std::string& w) { return RelFromWord(w); });
+}
+
+// "before X, Y" and "Y after X": X first; "after X, Y" is in order already
+void OrderBeforeAfter(std::vector<ClauseWords>& clauses) {
+  for (size_t k = 0; k < clauses.size(); ++k) {
+    Tokens& a = clauses[k].words;
+    const size_t p = static_cast<size_t>(
+        std::find_if(a.begin(), a.end(),
+                     [](const std::string& w) { return w == "before" || w == "after"; }) -
+        a.begin());
+    if (p >= a.size()) continue;
+    const bool before = a[p] == "before";
+    Tokens head(a.begin(), a.begin() + static_cast<long>(p));
+    Tokens tail(a.begin() + static_cast<long>(p) + 1, a.end());
+    if (p == 0 && before && k + 1 < clauses.size() && !tail.empty()) {
+      a = std::move(tail);  // "before you lie down, sit on the bed"
+      std::swap(clauses[k], clauses[k + 1]);
+      clauses[k].sequenced = clauses[k + 1].sequenced = true;
+      ++k;
+      continue;
+    }
+    if (head.empty() || tail.empty()) {
+      a = head.empty() ? tail : head;
+      continue;
+    }
+    a = before ? head : tail;
+    ClauseWords second{before ? tail : head, true};
+    clauses.insert(clauses.begin() + static_cast<long>(k) + 1, second);
+    ++k;
+  }
+  clauses.erase(std::remove_if(clauses.begin(), clauses.end(),
+                               [](const ClauseWords& c) { return c.words.empty(); }),
+                clauses.end());
+}
+
+// clauses that are pieces of one: a verb and its object said apart, an object that takes the
+// verb before it, a verbless placement ("red box on blue box"), a trailing instrument, and a
+// grasp said twice ("grab the ball and hold it")
+void JoinFragments(std::vector<ClauseWords>& clauses) {
+  OrderBeforeAfter(clauses);
+  // "climb onto the bar stool" with nothing after it: rest on it
+  if (!clauses.empty() && !clauses.back().words.empty() && clauses.back().words[0] == "geton") {
+    Tokens& last = clauses.back().words;
+    last[0] = "on";
+    last.insert(last.begin(), "rest");
+  }
+  for (size_t k = 0; k < clauses.size(); ++k) {
+    Tokens& b = clauses[k].words;
+    // "lean forward, then back (again)": the lean before
+    if (k > 0 && !b.empty() && (b[0] == "back" || b[0] == "forward") && b.size() <= 2 &&
+        Contains(clauses[k - 1].words, "lean")) {
+      b.insert(b.begin(), "lean");
+    }
+    if (StartsWithObject(b) && HasRelation(b) && !IsObjectOnly(b) &&
+        (k == 0 || clauses[k - 1].words.empty() ||
+         (clauses[k - 1].words[0] != "put" && clauses[k - 1].words[0] != "stack" &&
+          clauses[k - 1].words[0] != "move"))) {
+      b.insert(b.begin(), "put");  // "red box on blue box"
+    }
+    if (k == 0) continue;
+    Tokens& a = clauses[k - 1].words;
+    const bool join_verb = IsBareVerb(a) && IsObjectOnly(b);
+    const bool verb_after = IsObjectOnly(a) && IsBareVerb(b) && !IsBareVerb(a);
+    const bool instrument = IsInstrument(b) && k + 1 == clauses.size();
+    const bool regrasp = !a.empty() && a[0] == "grab" && b.size() == 2 && b[0] == "grab" &&
+                         (b[1] == "it" || b[1] == "them");
+    if (join_verb || instrument) {
+      a.insert(a.end(), b.begin(), b.end());
+    } else if (verb_after) {
+      a.insert(a.begin(), b.begin(), b.end());
+    } else if (!regrasp) {
+      // "sit on the sofa, then (on) the armchair": the verb before
+      static const std::set<std::string> kRepeat = {"sit", "lie", "rest", "recline", "touch", "go"};
+      if (!a.empty() && kRepeat.count(a[0]) && IsObjectOnly(b) && b[0] != "it" && b[0] != "them") {
+        b.insert(b.begin(), a[0]);
+      }
+      continue;
+    }
+    clauses.erase(clauses.begin() + static_cast<long>(k));
+    --k;
+  }
+}
+
 }  // namespace
 
 void JoinClauses(std::vector<ClauseWords>& clauses) {
+  JoinFragments(clauses);
   for (size_t k = 0; k < clauses.size(); ++k) {
     Tokens& a = clauses[k].words;
     // "with your left hand put the box on ...": the instrument goes after what it does
