@@ -1,6 +1,7 @@
 #include "simhuman/language/offline_planner.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "simhuman/language/offline/clauses.h"
@@ -25,9 +26,19 @@ core::StatusOr<PlanResult> OfflinePlanner::Plan(std::string_view command,
                                                 const PlanContext& context) {
   if (context.scene == nullptr) return offline::Invalid("no scene given to the planner");
   SH_ASSIGN_OR_RETURN(offline::Tokens raw, offline::Tokenize(command));
+  raw = offline::ApplyCorrections(raw);
   offline::Tokens tokens = offline::Normalize(offline::CorrectTypos(offline::Reword(raw)));
   SH_ASSIGN_OR_RETURN(std::vector<offline::ClauseWords> clauses,
                       offline::SplitMarkedClauses(tokens));
+  // chatter (vocatives, labels, "good job", scene descriptions) is dropped unless it is all
+  // the command says or follows a bare "and" as a verb would ("sit down and sing")
+  std::vector<offline::ClauseWords> kept;
+  for (size_t k = 0; k < clauses.size(); ++k) {
+    const bool coordinated = k > 0 && !clauses[k].sequenced;
+    if (!coordinated && offline::IsChatter(clauses[k].words, *context.scene)) continue;
+    kept.push_back(clauses[k]);
+  }
+  if (!kept.empty()) clauses = std::move(kept);
   offline::JoinClauses(clauses);
   offline::JoinParticipleBase(raw, clauses);
   offline::Session session(*context.scene, context);

@@ -121,7 +121,68 @@ bool StartsRunOn(const Tokens& t, size_t k) {
           std::any_of(p.begin(), p.end(), [](char ch) { return std::isalpha(ch) != 0; }));
 }
 
+bool IsIdLike(const std::string& w) {
+  return std::any_of(w.begin(), w.end(), [](char ch) { return std::isdigit(ch) != 0; }) &&
+         std::any_of(w.begin(), w.end(), [](char ch) { return std::isalpha(ch) != 0; });
+}
+
 }  // namespace
+
+bool IsChatter(const Tokens& words, const core::SceneCatalog& scene) {
+  // "there is/are ...": a description of the scene, not an instruction
+  if (!words.empty() && (words[0] == "theres" || (words[0] == "there" && words.size() > 1 &&
+                                                  (words[1] == "is" || words[1] == "are")))) {
+    return true;
+  }
+  for (const std::string& w : words) {
+    if (Known(w) || scene.Find(w) != nullptr || IsIdLike(w)) return false;
+  }
+  return true;
+}
+
+absl::Status Session::SkipUnknownWords(Tokens& t, const std::string& c) const {
+  static const std::set<std::string> kBefore = {"on",  "onto", "to",   "in",   "at",   "near",
+                                                "off", "of",   "from", "your", "with", "against"};
+  size_t verb = 0;
+  while (verb < t.size() && (t[verb] == "your" || t[verb] == "then" || t[verb] == "and")) ++verb;
+  Tokens kept;
+  for (size_t k = 0; k < t.size(); ++k) {
+    const std::string& w = t[k];
+    // "laptop002's keyboard": the id's possessive
+    if (IsIdLike(w) && w.back() == 's' && scene_.Find(w.substr(0, w.size() - 1)) != nullptr) {
+      kept.push_back(w.substr(0, w.size() - 1));
+      continue;
+    }
+    if (Known(w) || scene_.Find(w) != nullptr) {
+      kept.push_back(w);
+      continue;
+    }
+    // an unknown word is skipped inside a clause (a modifier, a name, a slip); it is an error as
+    // the action (the verb position), as an object (after a relation, a colour or a size, or
+    // ending the clause) and when it looks like an object id
+    const std::string& p = k > 0 ? t[k - 1] : std::string();
+    const bool object = kBefore.count(p) || Colors().count(p) || p == "big" || p == "small" ||
+                        p == "tall" || p == "short" || k + 1 == t.size() || IsIdLike(w);
+    if (k == verb) {
+      return Invalid("did not understand the action '" + w + "' in \"" + c +
+                     "\"; I understand: sit, lie, rest, stand up, go to / walk to / approach, "
+                     "touch / reach, put your hand(s) on, put the <colour> <shape> on <object>, "
+                     "carry / bring / pick up / put down <object> (to <object>), "
+                     "with object types chair, armchair, sofa, stool, high stool, bed, table, "
+                     "laptop, box, long box, cylinder, sphere. The scene has: " +
+                     DescribeSceneObjects(scene_));
+    }
+    if (object) {
+      return Invalid("did not understand the word '" + w + "' in \"" + c +
+                     "\"; I understand object types chair, armchair, sofa, stool, high stool, "
+                     "bed, table, laptop, box, long box, cylinder, sphere and body parts hands, "
+                     "elbows, knees, feet, stomach, head. The scene has: " +
+                     DescribeSceneObjects(scene_));
+    }
+  }
+  t = std::move(kept);
+  return absl::OkStatus();
+}
 
 core::StatusOr<std::vector<ClauseWords>> SplitMarkedClauses(const Tokens& tokens) {
   std::vector<ClauseWords> clauses(1);
@@ -186,17 +247,7 @@ absl::Status Session::Clause(const Tokens& words) {
         "0.." +
         std::to_string(scene_.num_agents() - 1));
   }
-  for (const std::string& w : t) {
-    if (!Known(w) && scene_.Find(w) == nullptr) {
-      return Invalid("did not understand the word '" + w + "' in \"" + c +
-                     "\"; I understand: sit, lie, rest, stand up, go to / walk to / approach, "
-                     "touch / reach, put your hand(s) on, put the <colour> <shape> on <object>, "
-                     "carry / bring / pick up / put down <object> (to <object>), "
-                     "with object types chair, armchair, sofa, stool, high stool, bed, table, "
-                     "laptop, box, long box, cylinder, sphere. The scene has: " +
-                     DescribeSceneObjects(scene_));
-    }
-  }
+  SH_RETURN_IF_ERROR(SkipUnknownWords(t, c));
   size_t i = 0;
   while (i < t.size() && (t[i] == "your" || t[i] == "then" || t[i] == "and")) ++i;
   if (i >= t.size()) return absl::OkStatus();

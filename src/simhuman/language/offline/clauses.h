@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "simhuman/core/scene_catalog.h"
 #include "simhuman/core/status.h"
 #include "simhuman/language/offline/common.h"
 
@@ -26,6 +27,10 @@ struct ClauseWords {
 /// Splits normalised words into clauses at "then" and "and" (dropping empty clauses).
 /// kInvalidArgument when there are more than kMaxClauses.
 core::StatusOr<std::vector<ClauseWords>> SplitMarkedClauses(const Tokens& tokens);
+/// Whether a clause is chatter to drop: no word of it is known or an object id (a vocative, a
+/// label, "good job"), or it describes the scene ("there are boxes on the table").
+bool IsChatter(const Tokens& words, const core::SceneCatalog& scene);
+
 /// SplitMarkedClauses() without the joins.
 core::StatusOr<std::vector<Tokens>> SplitClauses(const Tokens& tokens);
 

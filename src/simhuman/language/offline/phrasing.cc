@@ -22,11 +22,12 @@ namespace simhuman::language::offline {
 // a character named as the subject of a scripted line, dropped at the start of a clause
 const std::set<std::string>& Subjects() {
   static const auto* words = new std::set<std::string>{
-      "npc",   "character",   "agent", "avatar",    "human",  "person",  "player",  "he",
-      "she",   "they",        "hes",   "shes",      "theyre", "man",     "woman",   "guy",
-      "girl",  "boy",         "lady",  "gentleman", "figure", "actor",   "actress", "model",
-      "robot", "bot",         "dummy", "mannequin", "sim",    "puppet",  "patient", "subject",
-      "user",  "protagonist", "hero",  "kid",       "child",  "humanoid"};
+      "npc",   "character", "agent",    "avatar",  "human", "person",      "player",
+      "he",    "she",       "they",     "hes",     "shes",  "theyre",      "man",
+      "woman", "guy",       "girl",     "boy",     "lady",  "gentleman",   "figure",
+      "actor", "actress",   "model",    "robot",   "bot",   "dummy",       "mannequin",
+      "sim",   "puppet",    "patient",  "subject", "user",  "protagonist", "hero",
+      "kid",   "child",     "humanoid", "char",    "chara", "operator"};
   return *words;
 }
 
@@ -35,7 +36,8 @@ namespace {
 // third-person, -ing and past forms of the verbs the lexicon reads, and chat spellings
 const std::map<std::string, std::string>& VerbForms() {
   static const auto* words = new std::map<std::string, std::string>{
-      {"walks", "walk"},       {"walking", "walk"},     {"gets", "get"},
+      {"walks", "walk"},       {"makes", "make"},       {"reaches", "reach"},
+      {"lies", "lie"},         {"walking", "walk"},     {"gets", "get"},
       {"getting", "get"},      {"stands", "stand"},     {"crosses", "cross"},
       {"rests", "rest"},       {"puts", "put"},         {"putting", "put"},
       {"leans", "lean"},       {"goes", "go"},          {"going", "go"},
@@ -144,6 +146,11 @@ size_t FramingAt(const Tokens& raw, size_t i, bool start) {
       "mission", "sequence", "scenario", "prompt",      "order",        "orders",  "steps"};
   auto at = [&](size_t k) { return k < raw.size() ? raw[k] : std::string(); };
   if (IsNumber(raw[i])) return 1;
+  // "SHOT 7 - ...", "Beat 3: ...", "Scene 2, ...": a label and its number open a clause
+  if (start && IsNumber(at(i + 1)) && !IsVerbWord(raw[i]) && !Known(raw[i]) &&
+      !Synonyms().count(raw[i])) {
+    return 2;
+  }
   if ((raw[i] == "step" || raw[i] == "steps") && IsNumberWord(at(i + 1))) return 2;
   if (start && kFrames.count(raw[i]) && (at(i + 1).empty() || at(i + 1) == "then")) return 1;
   return 0;
@@ -167,11 +174,27 @@ size_t AuxiliaryAt(const Tokens& raw, size_t k) {
   return n;
 }
 
+// a subject at raw[k] followed (after auxiliaries) by a verb: "he walks", "he's leaning"
+bool VerbAfterSubject(const Tokens& raw, size_t k) {
+  k += SubjectAt(raw, k);
+  k += AuxiliaryAt(raw, k);
+  if (k >= raw.size()) return false;
+  std::string w = raw[k];
+  if (auto f = VerbForms().find(w); f != VerbForms().end()) w = f->second;
+  if (w.size() > 3 && w.back() == 's' && IsVerbWord(w.substr(0, w.size() - 1))) return true;
+  if (w.size() > 5 && w.compare(w.size() - 3, 3, "ing") == 0) {
+    const std::string stem = w.substr(0, w.size() - 3);
+    if (IsVerbWord(stem) || IsVerbWord(stem.substr(0, stem.size() - 1))) return true;
+  }
+  return IsVerbWord(w);
+}
+
 // "make him sit", "have the character walk", "I'd like the human to ...": the causer's verb
 // (kept when it is part of a wrapper: "I want", "I'd like") and the subject are dropped
 size_t CausativeAt(const Tokens& raw, size_t i, Tokens& out) {
-  static const std::set<std::string> kCause = {"make",  "have", "let",  "get",  "tell", "ask",
-                                               "allow", "help", "want", "need", "like"};
+  static const std::set<std::string> kCause = {"make", "have",  "let",  "get",  "tell",
+                                               "ask",  "allow", "help", "want", "need",
+                                               "like", "see",   "watch"};
   if (!kCause.count(raw[i])) return 0;
   size_t s = SubjectAt(raw, i + 1);
   if (s == 0 && i + 1 < raw.size() && (raw[i + 1] == "him" || raw[i + 1] == "her")) s = 1;
@@ -223,7 +246,8 @@ bool RewordBody(const Tokens& raw, size_t& i, Tokens& out) {
   const bool owner = w == "its" || w == "his" || w == "her" || w == "their";
   const bool yours = w == "your" || w == "ur" || w == "yr" || (owner && w != "its");
   // "its hands", "his left knee": the character's own body is "your"
-  if (owner && IsLimbAt(raw, i + 1)) {
+  if (owner && (IsLimbAt(raw, i + 1) || IsBodyWord(at(i + 1)) || at(i + 1) == "side" ||
+                ((at(i + 1) == "left" || at(i + 1) == "right") && at(i + 2) == "side"))) {
     out.push_back("your");
     return true;
   }
@@ -411,6 +435,30 @@ bool RewordClause(const Tokens& raw, size_t& i, Tokens& out) {
     out.insert(out.end(), {"go", "to"});
     return true;
   }
+  // "for him to sit": "for you to" (the wrappers know it)
+  if (w == "for" && at(i + 2) == "to" &&
+      (at(i + 1) == "him" || at(i + 1) == "her" || at(i + 1) == "them" || SubjectAt(raw, i + 1))) {
+    out.insert(out.end(), {"for", "you", "to"});
+    i += 2;
+    return true;
+  }
+  // "let your hands rest": the hands rest
+  if (w == "let" &&
+      (at(i + 1) == "your" || at(i + 1) == "its" || at(i + 1) == "his" || at(i + 1) == "her")) {
+    return true;
+  }
+  // "L hand", "R knee", "L armrest": the side spelled by its letter
+  if ((w == "l" || w == "r") && (IsLimbAt(raw, i + 1) || at(i + 1).rfind("arm", 0) == 0)) {
+    out.push_back(w == "l" ? "left" : "right");
+    return true;
+  }
+  // "come to sit", "go to lie": the purpose is the action
+  if ((w == "come" || w == "go" || w == "head") && at(i + 1) == "to" && IsVerbWord(at(i + 2)) &&
+      at(i + 2) != "have") {
+    out.push_back("go");
+    ++i;
+    return true;
+  }
   const bool start = out.empty() || IsSeparator(out.back());
   // "please to sit", "make sit on the chair": the verb that follows
   const bool polite = !out.empty() && (out.back() == "please" || out.back() == "pls" ||
@@ -451,16 +499,43 @@ Tokens Reword(const Tokens& raw) {
   auto at = [&](size_t k) { return k < raw.size() ? raw[k] : std::string(); };
   for (size_t i = 0; i < raw.size(); ++i) {
     const std::string& w = raw[i];
-    const bool start = out.empty() || IsSeparator(out.back());
+    bool start = true;  // only sequencing words and fillers so far in this clause
+    for (size_t k = ClauseStart(out); k < out.size(); ++k) start = start && Fillers().count(out[k]);
+    // "okay so in this one he walks ...": a subject before a verb starts the clause
+    if (!start && SubjectAt(raw, i) > 0 && VerbAfterSubject(raw, i)) {
+      out.resize(ClauseStart(out));
+      start = true;
+    }
     if (size_t n = FramingAt(raw, i, start)) {
       i += n - 1;
       continue;
     }
     // "NPC sits ...", "the character walks to ...", "then he gets up", "the robot will sit"
-    if (start && SubjectAt(raw, i) > 0) {
+    if ((start || (!out.empty() && out.back() == "that")) && SubjectAt(raw, i) > 0) {
+      if (!out.empty() && out.back() == "that") out.pop_back();  // "requests that the figure"
       i += SubjectAt(raw, i);
       i += AuxiliaryAt(raw, i);
+      // "he's been working all day": what went before, not what to do
+      if (at(i) == "been" || at(i) == "had") {
+        while (i + 1 < raw.size() && raw[i + 1] != "then") ++i;
+        continue;
+      }
+      // "he's leaning back": the progressive is the verb
+      const std::string& v = at(i);
+      if (v.size() > 5 && v.compare(v.size() - 3, 3, "ing") == 0) {
+        std::string stem = v.substr(0, v.size() - 3);
+        if (!IsVerbWord(stem)) stem.pop_back();  // "sitting"
+        if (IsVerbWord(stem)) {
+          out.push_back(stem);
+          continue;
+        }
+      }
       --i;
+      continue;
+    }
+    // "like he is listening": a simile says how, not what (to the clause's end)
+    if (w == "like" && SubjectAt(raw, i + 1) > 0) {
+      while (i + 1 < raw.size() && raw[i + 1] != "then") ++i;
       continue;
     }
     if (size_t n = CausativeAt(raw, i, out)) {

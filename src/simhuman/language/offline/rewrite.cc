@@ -102,8 +102,33 @@ std::string KnownForm(const std::string& w) {
 
 }  // namespace
 
+namespace {
+
+// after a colour or size word a noun is due: a word one edit from exactly one object type is
+// that type ("the yellow boy", "the high stoop")
+std::string ObjectSlip(const std::string& before, const std::string& w) {
+  static const std::set<std::string> kSizes = {"big", "small", "tall", "high", "short", "little"};
+  if (!Colors().count(before) && !kSizes.count(before)) return "";
+  if (Known(w) || Synonyms().count(w) || Fillers().count(w)) return "";
+  std::string best;
+  int count = 0;
+  for (const auto& [word, type] : TypeWords()) {
+    if (type.empty() || word.find('_') != std::string::npos) continue;
+    if (EditDistance(w, word) == 1 && word != best) {
+      best = word;
+      ++count;
+    }
+  }
+  return count == 1 ? best : "";
+}
+
+}  // namespace
+
 Tokens CorrectTypos(const Tokens& raw) {
   Tokens out = raw;
+  for (size_t k = 1; k < out.size(); ++k) {
+    if (std::string s = ObjectSlip(out[k - 1], out[k]); !s.empty()) out[k] = s;
+  }
   for (std::string& w : out) {
     if (w.size() < 3 || Readable(w)) continue;
     if (std::any_of(w.begin(), w.end(), [](char c) { return std::isdigit(c) != 0; })) continue;
@@ -126,6 +151,67 @@ Tokens CorrectTypos(const Tokens& raw) {
       }
     }
     if (count == 1) w = best;
+  }
+  return out;
+}
+
+namespace {
+
+// a self-correction at raw[i]: "no ," (a dash before it is a space), "actually (no)", "sorry
+// ,", "I mean", "or rather", "wait no"; returns its length (0: none)
+size_t CorrectionAt(const Tokens& raw, size_t i) {
+  auto at = [&](size_t k) { return k < raw.size() ? raw[k] : std::string(); };
+  size_t n = 0;
+  if (raw[i] == "wait" && at(i + 1) == "no") n = 2;
+  if (raw[i] == "actually" && at(i + 1) == "no") n = 2;
+  if (raw[i] == "actually" && at(i + 1) == "then" && at(i + 2) == "no") n = 3;
+  if (n == 0 && (raw[i] == "no" || raw[i] == "sorry" || raw[i] == "actually") &&
+      at(i + 1) == "then") {
+    n = 1;
+  }
+  if ((raw[i] == "i" && at(i + 1) == "mean") || (raw[i] == "or" && at(i + 1) == "rather")) n = 2;
+  if (n == 0) return 0;
+  while (at(i + n) == "then") ++n;
+  return n;
+}
+
+// a side or colour word stands for its kind when a correction is aligned with what it corrects
+std::string Shape(const std::string& w) {
+  if (w == "left" || w == "right" || w == "both") return "<side>";
+  if (Colors().count(w)) return "<colour>";
+  return w;
+}
+
+}  // namespace
+
+Tokens ApplyCorrections(const Tokens& raw) {
+  Tokens out;
+  for (size_t i = 0; i < raw.size(); ++i) {
+    const size_t n = CorrectionAt(raw, i);
+    if (n == 0) {
+      out.push_back(raw[i]);
+      continue;
+    }
+    // the correction Y runs to the next clause break; it replaces the part of the clause before
+    // it that starts like Y (two words alike, else one; side and colour words alike by kind)
+    while (!out.empty() && out.back() == "then") out.pop_back();  // the comma before the marker
+    size_t b = out.size();
+    while (b > 0 && out[b - 1] != "then" && out[b - 1] != "and") --b;
+    size_t e = i + n;
+    while (e < raw.size() && raw[e] != "then") ++e;
+    const Tokens y(raw.begin() + static_cast<long>(i + n), raw.begin() + static_cast<long>(e));
+    size_t from = out.size();
+    for (int words = 2; words >= 1 && from == out.size() && !y.empty(); --words) {
+      for (size_t p = b; p < out.size() && (words == 1 || from == out.size()); ++p) {
+        bool same = Shape(out[p]) == Shape(y[0]);
+        if (words == 2) {
+          same = same && y.size() > 1 && p + 1 < out.size() && Shape(out[p + 1]) == Shape(y[1]);
+        }
+        if (same && (words == 1 || from == out.size())) from = p;  // two: the first; one: the last
+      }
+    }
+    if (from < out.size()) out.resize(from);
+    i += n - 1;  // Y follows as it is
   }
   return out;
 }
@@ -367,7 +453,12 @@ void JoinClauses(std::vector<ClauseWords>& clauses) {
 
 void JoinParticipleBase(const Tokens& raw, std::vector<ClauseWords>& clauses) {
   if (raw.empty() || clauses.size() < 2) return;
-  if (raw[0] != "seated" && raw[0] != "sitting" && raw[0] != "lying") return;
+  size_t k = 0;  // after a label ("Shot 10: lying on the bed, ...")
+  if (raw.size() > 3 && raw[2] == "then" &&
+      raw[1].find_first_not_of("0123456789") == std::string::npos) {
+    k = 3;
+  }
+  if (raw[k] != "seated" && raw[k] != "sitting" && raw[k] != "lying") return;
   const Tokens& base = clauses[0].words;
   if (base.empty() || (base[0] != "sit" && base[0] != "lie")) return;
   clauses[1].sequenced = false;

@@ -23,6 +23,12 @@ Tokens Reword(const Tokens& raw);
 /// your right knee"): the pose in the next clause joins the sit/lie step.
 void JoinParticipleBase(const Tokens& raw, std::vector<ClauseWords>& clauses);
 
+/// Self-corrections on raw words: "X -- no, Y", "X, actually no, Y", "X, sorry, Y", "X, I mean
+/// Y" keep Y in X's place (Y replaces the part of its clause that starts like it: "go to the
+/// chair, actually no, the stool" goes to the stool; "your left -- no, right -- hand" is the
+/// right hand). A correction with nothing to align to only drops its marker.
+Tokens ApplyCorrections(const Tokens& raw);
+
 /// Optimal string alignment distance (insertions, deletions, substitutions and transpositions
 /// of neighbours each cost 1).
 int EditDistance(const std::string& a, const std::string& b);

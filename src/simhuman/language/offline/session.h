@@ -95,6 +95,9 @@ class Session {
   /// Plans one clause (normalised tokens without "then"/"and" separators) and appends its
   /// steps. Errors follow Planner's status codes and quote the clause.
   absl::Status Clause(const Tokens& t);
+  /// The unknown-word policy (clauses.cc): drops unknown words inside a clause; an error for an
+  /// unknown action (verb position), object (after a relation, colour or size, or last) or id.
+  absl::Status SkipUnknownWords(Tokens& t, const std::string& c) const;
 
   /// Says how the next clause was joined to the one before: `sequenced` after "then", a comma
   /// or a full stop (a pose said there starts a new step), false after a bare "and".
