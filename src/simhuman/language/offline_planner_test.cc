@@ -598,6 +598,67 @@ TEST(OfflinePlannerTest, StartingSeatedStandsUpFirst) {
   EXPECT_EQ(Compact(r->chain), "chair000|none|none|none|front");
 }
 
+// the unknown-word policy: chatter clauses and unknown words inside a clause are dropped
+TEST(OfflinePlannerTest, ChatterAndVocativesAreDropped) {
+  const std::string sit = PlanText("sit_demo", "sit on the chair");
+  EXPECT_EQ(PlanText("sit_demo", "Darling, sit on the chair."), sit);
+  EXPECT_EQ(PlanText("sit_demo", "sit on the chair, pal"), sit);
+  EXPECT_EQ(PlanText("sit_demo", "Cortana, sit on the chair. Well done."), sit);
+  EXPECT_EQ(PlanText("sit_demo", "Scene 12: sit on the chair"), sit);
+  EXPECT_EQ(PlanText("tabletop_demo", "There is a ball on the table. Touch the green ball"),
+            PlanText("tabletop_demo", "touch the green ball"));
+  EXPECT_EQ(PlanText("sit_demo", "She has been reading for hours. She sits on the chair."), sit);
+}
+
+TEST(OfflinePlannerTest, UnknownWordsInsideAClauseAreSkipped) {
+  EXPECT_EQ(PlanText("sit_demo", "sit on the chair with your hands resting snugly on your knees"),
+            PlanText("sit_demo", "sit on the chair with your hands on your knees"));
+  EXPECT_EQ(PlanText("office", "sit in chair002 with both hands on laptop001's keyboard"),
+            PlanText("office", "sit in chair002 with both hands on the keyboard of laptop001"));
+}
+
+TEST(OfflinePlannerTest, NonsenseActionsAndObjectsStayErrors) {
+  for (const char* c : {"eat the chair", "paint the chair", "look at the chair", "sing",
+                        "sit on the chair and whistle", "sit on the ottoman", "walk to the lamp",
+                        "sit on chair042", "put your hands on your ears"}) {
+    EXPECT_FALSE(PlanStatus("sit_demo", c).ok()) << c;
+  }
+  EXPECT_THAT(PlanStatus("sit_demo", "devour the chair").message(),
+              HasSubstr("did not understand the action 'devour'"));
+  EXPECT_FALSE(PlanStatus("tabletop_demo", "juggle the red box").ok());
+}
+
+TEST(OfflinePlannerTest, SelfCorrectionsKeepTheCorrectedVersion) {
+  EXPECT_EQ(PlanText("living_room", "walk to the bed -- no, to the sofa"),
+            PlanText("living_room", "walk to the sofa"));
+  EXPECT_EQ(PlanText("living_room", "sit on the stool, I mean the armchair"),
+            PlanText("living_room", "sit on the armchair"));
+  EXPECT_EQ(PlanText("sit_demo", "sit down with your right -- sorry, left -- hand on your stomach"),
+            PlanText("sit_demo", "sit down with your left hand on your stomach"));
+  EXPECT_EQ(
+      PlanText("tabletop_demo", "put the green box, actually no, the red box on the blue box"),
+      PlanText("tabletop_demo", "put the red box on the blue box"));
+}
+
+TEST(OfflinePlannerTest, LabelsPronounsAndFormalWrappersAreRead) {
+  EXPECT_EQ(PlanText("living_room", "Take 4 - char walks over to the stool"),
+            PlanText("living_room", "walk to the stool"));
+  EXPECT_EQ(PlanText("sit_demo", "so in this take she sits on the chair"),
+            PlanText("sit_demo", "sit on the chair"));
+  EXPECT_EQ(PlanText("sit_demo", "sit on the chair. Now she's leaning forward"),
+            PlanText("sit_demo", "sit on the chair, then lean forward"));
+  EXPECT_EQ(PlanText("sit_demo", "It is required that the subject be seated upon the chair"),
+            PlanText("sit_demo", "sit on the chair"));
+  EXPECT_EQ(PlanText("living_room", "sit on the sofa with R hand on R armrest"),
+            PlanText("living_room", "sit on the sofa with your right hand on the right armrest"));
+  EXPECT_EQ(PlanText("living_room", "sit on the sofa with her left hand on her stomach"),
+            PlanText("living_room", "sit on the sofa with your left hand on your stomach"));
+  EXPECT_EQ(PlanText("living_room", "come to lie on the bed"),
+            PlanText("living_room", "lie on the bed"));
+  EXPECT_EQ(PlanText("tabletop_demo", "put the blue cylinder on the green bix"),
+            PlanText("tabletop_demo", "put the blue cylinder on the green box"));
+}
+
 }  // namespace
 }  // namespace simhuman::language
 

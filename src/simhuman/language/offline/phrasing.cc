@@ -512,7 +512,6 @@ Tokens Reword(const Tokens& raw) {
     }
     // "NPC sits ...", "the character walks to ...", "then he gets up", "the robot will sit"
     if ((start || (!out.empty() && out.back() == "that")) && SubjectAt(raw, i) > 0) {
-      if (!out.empty() && out.back() == "that") out.pop_back();  // "requests that the figure"
       i += SubjectAt(raw, i);
       i += AuxiliaryAt(raw, i);
       // "he's been working all day": what went before, not what to do
