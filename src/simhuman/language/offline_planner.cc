@@ -25,7 +25,7 @@ std::string DescribeSceneObjects(const core::SceneCatalog& scene) {
 core::StatusOr<PlanResult> OfflinePlanner::Plan(std::string_view command,
                                                 const PlanContext& context) {
   if (context.scene == nullptr) return offline::Invalid("no scene given to the planner");
-  SH_ASSIGN_OR_RETURN(offline::Tokens raw, offline::Tokenize(command));
+  SH_ASSIGN_OR_RETURN(offline::Tokens raw, offline::Tokenize(offline::CodeToWords(command)));
   raw = offline::ApplyCorrections(raw);
   offline::Tokens tokens = offline::Normalize(offline::CorrectTypos(offline::Reword(raw)));
   SH_ASSIGN_OR_RETURN(std::vector<offline::ClauseWords> clauses,

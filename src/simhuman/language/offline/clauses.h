@@ -3,6 +3,7 @@
 /// are split into clauses, and Session::Clause() (clauses.cc) hands each clause to its verb
 /// handler.
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -17,6 +18,12 @@ namespace simhuman::language::offline {
 /// of , . ; ! ? : > (an arrow "->") becomes the clause separator "then". kInvalidArgument for a
 /// command longer than kMaxCommandBytes or any other byte (the message names it and its offset).
 core::StatusOr<Tokens> Tokenize(std::string_view command);
+
+/// Commands written as code, as words (code_text.cc): "sit(chair000)" -> "sit chair000",
+/// "armchair004.sit()" -> "sit armchair004", "touch(box004.top, hand='left')" -> "touch the top
+/// of box004 with left hand", {"action": "sit", "hands": "stomach"} -> "sit, hands on stomach",
+/// a loop over ['walk X', 'sit X'] -> "walk X, then sit X". Other text is returned unchanged.
+std::string CodeToWords(std::string_view command);
 
 /// One clause and how it was joined to the one before.
 struct ClauseWords {

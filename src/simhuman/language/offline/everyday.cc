@@ -503,12 +503,40 @@ const PhraseList& MoreIdioms() {
 
 }  // namespace
 
+// rhetorical questions and negated wishes as polite wrappers, discourse tags, drill and
+// clinical verbs ("double time to", "supine on", "roll to"), purposes that add nothing
+const PhraseList& Rhetoric() {
+  static const auto* phrases = new PhraseList{{{"wouldnt", "you", "rather"}, {}},
+                                              {{"wouldnt", "you", "like", "to"}, {}},
+                                              {{"isnt", "it", "about", "time", "you"}, {}},
+                                              {{"isnt", "it", "time", "you"}, {}},
+                                              {{"dont", "you", "want", "to"}, {}},
+                                              {{"why", "dont", "you"}, {}},
+                                              {{"why", "not"}, {}},
+                                              {{"might", "i", "suggest"}, {}},
+                                              {{"may", "i", "suggest"}, {}},
+                                              {{"do", "feel", "free", "to"}, {}},
+                                              {{"feel", "free", "to"}, {}},
+                                              {{"there", "you", "go"}, {}},
+                                              {{"from", "here"}, {}},
+                                              {{"for", "balance"}, {}},
+                                              {{"for", "support"}, {}},
+                                              {{"double", "time", "to"}, {"go", "to"}},
+                                              {{"head", "straight", "for"}, {"go", "to"}},
+                                              {{"head", "for"}, {"go", "to"}},
+                                              {{"supine", "on"}, {"lie", "on"}},
+                                              {{"roll", "to"}, {"turn", "on"}},
+                                              {{"up", "on", "your", "feet"}, {"stand", "up"}}};
+  return *phrases;
+}
+
 const std::vector<std::pair<Tokens, Tokens>>& EverydayPhrases() {
   static const auto* all = [] {
     auto* v = new PhraseList(Wrappers());
     v->insert(v->end(), Sequencing().begin(), Sequencing().end());
     v->insert(v->end(), Idioms().begin(), Idioms().end());
     v->insert(v->end(), MoreIdioms().begin(), MoreIdioms().end());
+    v->insert(v->end(), Rhetoric().begin(), Rhetoric().end());
     return v;
   }();
   return *all;
@@ -520,79 +548,44 @@ namespace {
 const std::map<std::string, std::string>& VerbSynonyms() {
   static const auto* words = new std::map<std::string, std::string>{
       // verbs
-      {"stroll", "go"},
-      {"amble", "go"},
-      {"mosey", "go"},
-      {"saunter", "go"},
-      {"wander", "go"},
-      {"hurry", "go"},
-      {"jog", "go"},
-      {"dash", "go"},
-      {"rush", "go"},
-      {"march", "go"},
-      {"trot", "go"},
-      {"tiptoe", "go"},
-      {"stride", "go"},
-      {"shuffle", "go"},
-      {"scoot", "go"},
-      {"navigate", "go"},
-      {"travel", "go"},
-      {"return", "go"},
-      {"lounge", "rest"},
-      {"flop", "rest"},
-      {"sprawl", "lie"},
-      {"unwind", "rest"},
-      {"snooze", "lie"},
-      {"doze", "lie"},
-      {"kip", "lie"},
-      {"slump", "sit"},
-      {"slouch", "sit"},
-      {"pat", "touch"},
-      {"poke", "touch"},
-      {"prod", "touch"},
-      {"feel", "touch"},
-      {"rub", "touch"},
-      {"stroke", "touch"},
-      {"brush", "touch"},
-      {"contact", "touch"},
-      {"grip", "grab"},
-      {"clutch", "grab"},
-      {"clasp", "grab"},
-      {"get", "grab"},
-      {"position", "put"},
-      {"stick", "put"},
-      {"balance", "put"},
-      {"slide", "move"},
-      {"push", "move"},
-      {"shift", "move"},
-      {"nudge", "move"},
-      {"transfer", "move"},
-      {"relocate", "move"},
-      {"prop", "raise"},
-      {"draw", "raise"},
-      {"tuck", "raise"},
-      {"occupy", "use"},
-      {"work", "type"},
-      {"b4", "before"},
-      {"later", "then"},
-      {"until", "to"},
-      {"visit", "go"},
-      {"low", "flat"},
-      {"lowest", "flat"},
-      {"eventually", "then"},
-      {"subsequently", "then"},
-      {"thereafter", "then"},
-      {"lastly", "then"},
-      {"last", "then"},
-      {"second", "then"},
-      {"secondly", "then"},
-      {"third", "then"},
-      {"thirdly", "then"},
-      {"fourth", "then"},
-      {"fifth", "then"},
-      {"n", "and"},
-      {"plus", "and"},
-      {"w", "with"},
+      {"stroll", "go"},       {"amble", "go"},
+      {"mosey", "go"},        {"saunter", "go"},
+      {"wander", "go"},       {"hurry", "go"},
+      {"jog", "go"},          {"dash", "go"},
+      {"sprint", "go"},       {"seize", "grab"},
+      {"ascend", "sit"},      {"rush", "go"},
+      {"march", "go"},        {"trot", "go"},
+      {"tiptoe", "go"},       {"stride", "go"},
+      {"shuffle", "go"},      {"scoot", "go"},
+      {"navigate", "go"},     {"travel", "go"},
+      {"return", "go"},       {"lounge", "rest"},
+      {"flop", "rest"},       {"sprawl", "lie"},
+      {"unwind", "rest"},     {"snooze", "lie"},
+      {"doze", "lie"},        {"kip", "lie"},
+      {"slump", "sit"},       {"slouch", "sit"},
+      {"pat", "touch"},       {"poke", "touch"},
+      {"prod", "touch"},      {"feel", "touch"},
+      {"rub", "touch"},       {"stroke", "touch"},
+      {"brush", "touch"},     {"contact", "touch"},
+      {"grip", "grab"},       {"clutch", "grab"},
+      {"clasp", "grab"},      {"get", "grab"},
+      {"position", "put"},    {"stick", "put"},
+      {"balance", "put"},     {"slide", "move"},
+      {"push", "move"},       {"shift", "move"},
+      {"nudge", "move"},      {"transfer", "move"},
+      {"relocate", "move"},   {"prop", "raise"},
+      {"draw", "raise"},      {"tuck", "raise"},
+      {"occupy", "use"},      {"work", "type"},
+      {"b4", "before"},       {"later", "then"},
+      {"until", "to"},        {"visit", "go"},
+      {"low", "flat"},        {"lowest", "flat"},
+      {"eventually", "then"}, {"subsequently", "then"},
+      {"thereafter", "then"}, {"lastly", "then"},
+      {"last", "then"},       {"second", "then"},
+      {"secondly", "then"},   {"third", "then"},
+      {"thirdly", "then"},    {"fourth", "then"},
+      {"fifth", "then"},      {"n", "and"},
+      {"plus", "and"},        {"w", "with"},
   };
   return *words;
 }
@@ -736,6 +729,8 @@ const std::set<std::string>& EverydayFillers() {
       "dude", "alexa", "siri", "google", "cortana", "righto", "we", "minute", "way",
       // hedges of opinion ("reckon you could ...", "I guess")
       "reckon", "guess", "suppose", "think",
+      // discourse tags and archaic address ("... lah", "lay thee down")
+      "lah", "leh", "lor", "thee",
       // the body's own ("sits himself down") and breathing, which a held pose goes on doing
       "himself", "herself", "themselves", "itself", "breathe", "inhale", "exhale"};
   return *words;

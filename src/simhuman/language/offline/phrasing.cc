@@ -22,12 +22,13 @@ namespace simhuman::language::offline {
 // a character named as the subject of a scripted line, dropped at the start of a clause
 const std::set<std::string>& Subjects() {
   static const auto* words = new std::set<std::string>{
-      "npc",   "character", "agent",    "avatar",  "human", "person",      "player",
-      "he",    "she",       "they",     "hes",     "shes",  "theyre",      "man",
-      "woman", "guy",       "girl",     "boy",     "lady",  "gentleman",   "figure",
-      "actor", "actress",   "model",    "robot",   "bot",   "dummy",       "mannequin",
-      "sim",   "puppet",    "patient",  "subject", "user",  "protagonist", "hero",
-      "kid",   "child",     "humanoid", "char",    "chara", "operator"};
+      "npc",     "character", "agent",    "avatar",  "human",    "person",      "player",
+      "he",      "she",       "they",     "hes",     "shes",     "theyre",      "man",
+      "woman",   "guy",       "girl",     "boy",     "lady",     "gentleman",   "figure",
+      "actor",   "actress",   "model",    "robot",   "bot",      "dummy",       "mannequin",
+      "sim",     "puppet",    "patient",  "subject", "user",     "protagonist", "hero",
+      "kid",     "child",     "humanoid", "char",    "chara",    "operator",    "client",
+      "recruit", "cadet",     "trainee",  "guest",   "resident", "visitor"};
   return *words;
 }
 
@@ -187,6 +188,27 @@ bool VerbAfterSubject(const Tokens& raw, size_t k) {
     if (IsVerbWord(stem) || IsVerbWord(stem.substr(0, stem.size() - 1))) return true;
   }
   return IsVerbWord(w);
+}
+
+// "sits", "crosses", "picks": a third-person form of a verb the lexicon reads
+bool IsThirdPerson(const std::string& w) {
+  if (w.size() < 4 || w.back() != 's') return false;
+  auto f = VerbForms().find(w);
+  if (f != VerbForms().end()) return IsVerbWord(f->second) || Known(f->second);
+  const std::string stem = w.substr(0, w.size() - 1);
+  return IsVerbWord(stem) || (w.size() > 4 && w.compare(w.size() - 2, 2, "es") == 0 &&
+                              IsVerbWord(w.substr(0, w.size() - 2)));
+}
+
+// a name at a clause start ("MARA turns", "Leo crosses to ..."): a word the lexicon does not
+// know, nor an object word, right before a third-person verb
+bool IsNamedSubject(const Tokens& raw, size_t i) {
+  const std::string& w = raw[i];
+  if (i + 1 >= raw.size() || !IsThirdPerson(raw[i + 1])) return false;
+  if (Known(w) || IsVerbWord(w) || IsThing(w) || Fillers().count(w) || VerbForms().count(w)) {
+    return false;
+  }
+  return std::none_of(w.begin(), w.end(), [](char c) { return std::isdigit(c); });
 }
 
 // "make him sit", "have the character walk", "I'd like the human to ...": the causer's verb
@@ -368,6 +390,22 @@ bool RewordObjects(const Tokens& raw, size_t& i, Tokens& out) {
     out.push_back("put");  // "lay your head on the pillow", "lay a hand on the table"
     return true;
   }
+  // "crown the box with it": put it on the box; "keep the ball on the box": put it there
+  if (w == "crown" && kDeterminers.count(at(i + 1))) {
+    size_t e = i + 1;
+    while (e < raw.size() && raw[e] != "with" && raw[e] != "then") ++e;
+    if (at(e) == "with" && (at(e + 1) == "it" || at(e + 1) == "them")) {
+      out.insert(out.end(), {"put", raw[e + 1], "on"});
+      out.insert(out.end(), raw.begin() + static_cast<long>(i) + 1,
+                 raw.begin() + static_cast<long>(e));
+      i = e + 1;
+      return true;
+    }
+  }
+  if (w == "keep" && (at(i + 1) == "the" || at(i + 1) == "a") && !IsLimbAt(raw, i + 2)) {
+    out.push_back("put");
+    return true;
+  }
   const size_t b = ClauseStart(out);
   static const std::set<std::string> kGrasp = {"pick", "lift", "grab", "take", "scoop"};
   if (w == "up" && out.size() > b + 1 && kGrasp.count(out[b]) &&
@@ -375,8 +413,10 @@ bool RewordObjects(const Tokens& raw, size_t& i, Tokens& out) {
        at(i + 1) == "using")) {
     return true;  // "pick the box up"
   }
-  if ((w == "lift" || w == "lifts") && !IsLimbAt(raw, i + 1) && at(i + 1) != "your" &&
-      at(i + 1) != "ur" && at(i + 1) != "them" && !IsSeparator(at(i + 1)) && !at(i + 1).empty()) {
+  if ((w == "lift" || w == "lifts") && !IsLimbAt(raw, i + 1) &&
+      !(at(i + 1) == "up" && (IsLimbAt(raw, i + 2) || at(i + 2) == "your")) &&
+      at(i + 1) != "your" && at(i + 1) != "ur" && at(i + 1) != "them" && !IsSeparator(at(i + 1)) &&
+      !at(i + 1).empty()) {
     out.push_back("grab");  // "lift the ball": a grasp (a carry when it is heavy)
     if (at(i + 1) == "up") ++i;
     return true;
@@ -424,6 +464,58 @@ bool RewordObjects(const Tokens& raw, size_t& i, Tokens& out) {
     }
   }
   return false;
+}
+
+bool IsGoing(const std::string& w) {
+  static const std::set<std::string> kGoing = {"go",   "walk", "come",  "head", "run",   "move",
+                                               "goes", "went", "back",  "want", "like",  "need",
+                                               "have", "has",  "ought", "used", "going", "wants"};
+  return kGoing.count(w) > 0;
+}
+
+// a verb of a purpose clause: one the lexicon reads, or an unknown word that is no object
+bool IsPurposeVerb(const std::string& w) {
+  if (w.empty() || IsSeparator(w) || IsThing(w) || IsNumber(w)) return false;
+  static const std::set<std::string> kNot = {"the",   "a",    "your", "its",  "his",   "her",
+                                             "my",    "it",   "them", "this", "that",  "left",
+                                             "right", "both", "one",  "face", "stand", "sitting"};
+  if (kNot.count(w) || Colors().count(w)) return false;
+  return IsVerbWord(w) || !Known(w);
+}
+
+// homophones of speech-to-text: "than" between clauses (then), "the bad" (bed), "read"/"blew"
+// before an object type (red/blue), "write hand" (right); returns the words used (0: none)
+size_t Homophone(const Tokens& raw, size_t i, Tokens& out) {
+  const std::string& w = raw[i];
+  auto at = [&](size_t k) { return k < raw.size() ? raw[k] : std::string(); };
+  const std::string prev = out.empty() ? std::string() : out.back();
+  if (w == "than" && !out.empty() && IsVerbWord(at(i + 1))) {
+    out.push_back("then");
+    return 1;
+  }
+  if (w == "bad" && (prev == "the" || prev == "on" || prev == "onto" || prev == "in" ||
+                     prev == "to" || prev == "off")) {
+    out.push_back("bed");
+    return 1;
+  }
+  if ((w == "read" || w == "blew") && IsThing(at(i + 1))) {
+    out.push_back(w == "read" ? "red" : "blue");
+    return 1;
+  }
+  if (w == "write" && IsLimbAt(raw, i + 1)) {
+    out.push_back("right");
+    return 1;
+  }
+  if (w == "thy" || w == "thine") {
+    out.push_back("your");
+    return 1;
+  }
+  // "stack it right on the box": an intensifier, not a side
+  if (w == "right" && (at(i + 1) == "on" || at(i + 1) == "onto" || at(i + 1) == "into") &&
+      (prev == "it" || prev == "them" || IsThing(prev))) {
+    return 1;
+  }
+  return 0;
 }
 
 // chat spellings and clause-level rules: "goto", "chill out", "standing back up", a trailing
@@ -479,6 +571,38 @@ bool RewordClause(const Tokens& raw, size_t& i, Tokens& out) {
       return true;
     }
   }
+  if (size_t n = Homophone(raw, i, out)) {
+    i += n - 1;
+    return true;
+  }
+  // "lean back to admire the view", "lie on the bed to rest": a purpose after a finished
+  // clause (not "go to sit", not "next to", not an object after "to") says nothing more
+  static const std::set<std::string> kFinished = {"back", "forward", "down", "there", "here"};
+  if (w == "to" && !start && i >= 2 && IsPurposeVerb(at(i + 1)) && !IsGoing(raw[i - 2]) &&
+      (IsThing(out.back()) || kFinished.count(out.back()))) {
+    while (i + 1 < raw.size() && raw[i + 1] != "then") ++i;
+    return true;
+  }
+  // "hold 10 s", "hold for 5 seconds": how long, not a grasp
+  if (w == "hold" && (IsNumberWord(at(i + 1)) || (at(i + 1) == "for" && IsNumberWord(at(i + 2))) ||
+                      at(i + 1) == "it" || at(i + 1).empty() || IsSeparator(at(i + 1)))) {
+    while (i + 1 < raw.size() && raw[i + 1] != "then") ++i;
+    return true;
+  }
+  // "the box in the corner", "the chair by the wall": a room feature says nothing
+  static const std::set<std::string> kFeatures = {"corner", "wall", "window", "door", "doorway"};
+  if ((w == "in" || w == "by" || w == "against" || w == "near") && at(i + 1) == "the" &&
+      kFeatures.count(at(i + 2)) && !out.empty() && IsThing(out.back())) {
+    i += 2;
+    return true;
+  }
+  // "Exhausted from the dungeon, ...": a scene-setting participle opening the command
+  if (out.empty() && !Known(w) && w.size() > 4 && w.compare(w.size() - 2, 2, "ed") == 0 &&
+      !VerbForms().count(w) &&
+      (at(i + 1) == "from" || at(i + 1) == "after" || at(i + 1) == "by" || at(i + 1) == "with")) {
+    while (i + 1 < raw.size() && raw[i + 1] != "then") ++i;
+    return true;
+  }
   if (w == "chill" && at(i + 1) == "out") {
     out.push_back("rest");
     ++i;
@@ -510,6 +634,7 @@ Tokens Reword(const Tokens& raw) {
       i += n - 1;
       continue;
     }
+    if (start && IsNamedSubject(raw, i)) continue;
     // "NPC sits ...", "the character walks to ...", "then he gets up", "the robot will sit"
     if ((start || (!out.empty() && out.back() == "that")) && SubjectAt(raw, i) > 0) {
       i += SubjectAt(raw, i);
