@@ -218,7 +218,7 @@ const PhraseList& Sequencing() {
   return *phrases;
 }
 
-// idioms for the actions and their objects
+// idioms for sitting
 const PhraseList& Idioms() {
   static const auto* phrases = new PhraseList{
       // sitting
@@ -313,6 +313,13 @@ const PhraseList& Idioms() {
       {{"lay", "back"}, {"recline"}},
       {{"slouch", "back"}, {"recline"}},
       {{"slump", "back"}, {"recline"}},
+  };
+  return *phrases;
+}
+
+// idioms for lying, standing up and walking
+const PhraseList& LyingIdioms() {
+  static const auto* phrases = new PhraseList{
       // lying
       {{"get", "in"}, {"rest", "in"}},
       {{"get", "into"}, {"rest", "in"}},
@@ -535,6 +542,7 @@ const std::vector<std::pair<Tokens, Tokens>>& EverydayPhrases() {
     auto* v = new PhraseList(Wrappers());
     v->insert(v->end(), Sequencing().begin(), Sequencing().end());
     v->insert(v->end(), Idioms().begin(), Idioms().end());
+    v->insert(v->end(), LyingIdioms().begin(), LyingIdioms().end());
     v->insert(v->end(), MoreIdioms().begin(), MoreIdioms().end());
     v->insert(v->end(), Rhetoric().begin(), Rhetoric().end());
     return v;
