@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "simhuman/language/offline/clauses.h"
+#include "simhuman/language/offline/fallback.h"
 #include "simhuman/language/offline/lexicon.h"
 #include "simhuman/language/offline/objects.h"
 #include "simhuman/language/offline/rewrite.h"
@@ -22,9 +23,10 @@ std::string DescribeSceneObjects(const core::SceneCatalog& scene) {
   return out;
 }
 
-core::StatusOr<PlanResult> OfflinePlanner::Plan(std::string_view command,
-                                                const PlanContext& context) {
-  if (context.scene == nullptr) return offline::Invalid("no scene given to the planner");
+namespace {
+
+// the rules: normalised words, clauses, one verb handler per clause
+core::StatusOr<PlanResult> PlanByRules(std::string_view command, const PlanContext& context) {
   SH_ASSIGN_OR_RETURN(offline::Tokens raw, offline::Tokenize(offline::CodeToWords(command)));
   raw = offline::ApplyCorrections(raw);
   offline::Tokens tokens = offline::Normalize(offline::CorrectTypos(offline::Reword(raw)));
@@ -47,6 +49,20 @@ core::StatusOr<PlanResult> OfflinePlanner::Plan(std::string_view command,
     SH_RETURN_IF_ERROR(session.Clause(clause.words));
   }
   return session.Finish();
+}
+
+}  // namespace
+
+core::StatusOr<PlanResult> OfflinePlanner::Plan(std::string_view command,
+                                                const PlanContext& context) {
+  if (context.scene == nullptr) return offline::Invalid("no scene given to the planner");
+  core::StatusOr<PlanResult> rules = PlanByRules(command, context);
+  if (rules.ok() || rules.status().code() != absl::StatusCode::kInvalidArgument) return rules;
+  // what the rules refuse is read again by slots (offline/fallback.h); when that finds no
+  // clear meaning either, the rules' answer (what is not understood, what is) stands
+  core::StatusOr<PlanResult> slots = offline::FallbackPlan(command, context);
+  if (slots.ok() || slots.status().code() == absl::StatusCode::kFailedPrecondition) return slots;
+  return rules;
 }
 
 }  // namespace simhuman::language
