@@ -6,6 +6,7 @@
 //                              [--policy FILE] [--seconds T] [--sheet DIR]
 //                              [--stand-gap M] [--grasp-frac F] [--reach-depth M] [--pose-at T]
 //                              [--torsion M] [--contacts 1]
+//                              [--mpc SAMPLES] [--mpc-sigma S] [--mpc-horizon T]
 #include <torch/torch.h>
 
 #include <cmath>
@@ -15,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "simhuman/control/policy/carry_mpc.h"
 #include "simhuman/control/policy/policy_net.h"
 #include "simhuman/learn/carry_env.h"
 #include "simhuman/render/image_io.h"
@@ -35,6 +37,8 @@ struct Args {
   double reach_depth = -1;
   double torsion = -1;    // >= 0: the box's torsional friction (condim 3 at 0)
   bool contacts = false;  // print every contact and its normal force
+  int mpc = 0;            // > 0: the lift MPC with this many samples drives the action
+  double mpc_sigma = -1, mpc_horizon = -1, mpc_whands = -1, mpc_wtrack = -1, mpc_wbal = -1;
   std::string policy, sheet;
 };
 
@@ -71,6 +75,18 @@ Args Parse(int argc, char** argv) {
       a.contacts = std::atoi(v) != 0;
     else if (k == "--torsion")
       a.torsion = std::atof(v);
+    else if (k == "--mpc")
+      a.mpc = std::atoi(v);
+    else if (k == "--mpc-sigma")
+      a.mpc_sigma = std::atof(v);
+    else if (k == "--mpc-whands")
+      a.mpc_whands = std::atof(v);
+    else if (k == "--mpc-wtrack")
+      a.mpc_wtrack = std::atof(v);
+    else if (k == "--mpc-wbal")
+      a.mpc_wbal = std::atof(v);
+    else if (k == "--mpc-horizon")
+      a.mpc_horizon = std::atof(v);
     else if (k == "--sheet")
       a.sheet = v;
     else {
@@ -162,6 +178,18 @@ int main(int argc, char** argv) {
       mm->geom_friction[3 * (*t)->box_geom() + 1] = a.torsion;
       mm->geom_condim[(*t)->box_geom()] = a.torsion > 0 ? 4 : 3;
     }
+    std::unique_ptr<sh::control::CarryMpc> mpc;
+    if (a.mpc > 0) {
+      sh::control::CarryMpcOptions mo;
+      mo.samples = a.mpc;
+      if (a.mpc_sigma > 0) mo.sigma = a.mpc_sigma;
+      if (a.mpc_horizon > 0) mo.horizon_s = a.mpc_horizon;
+      if (a.mpc_whands >= 0) mo.w_hands = a.mpc_whands;
+      if (a.mpc_wtrack >= 0) mo.w_track = a.mpc_wtrack;
+      if (a.mpc_wbal >= 0) mo.w_balance = a.mpc_wbal;
+      mo.seed = a.seed * 1000 + ep;
+      mpc = std::make_unique<sh::control::CarryMpc>(m, ix, (*t)->params(), (*t)->box_geom(), mo);
+    }
     std::unique_ptr<sh::render::OffscreenRenderer> r;
     std::vector<std::vector<uint8_t>> frames;
     constexpr int kW = 320, kH = 240;
@@ -187,6 +215,7 @@ int main(int argc, char** argv) {
           }
         }
       }
+      if (mpc) mpc->Act((*t)->data(0), (*t)->state(0), act.data());
       sh::learn::StepInfo info;
       const CarryPhase before = (*t)->state(0).phase;
       (*t)->Step(0, act.data(), obs.data(), &info);
@@ -219,6 +248,13 @@ int main(int argc, char** argv) {
       if (k % 8 == 0 || info.terminated) {
         double fl, fr;
         HandForces(m, d, ix, (*t)->box_geom(), &fl, &fr);
+        Eigen::Vector3d held_l, held_r;
+        sh::control::CarryHeldPoints((*t)->state(0), box, &held_l, &held_r);
+        const double miss_l =
+            (Eigen::Vector3d(d->site_xpos + 3 * ix.left_hand_site) - held_l).norm();
+        const double miss_r =
+            (Eigen::Vector3d(d->site_xpos + 3 * ix.right_hand_site) - held_r).norm();
+        std::printf("  miss %.2f %.2f", miss_l, miss_r);
         std::printf(
             "  t %.2f %-8s pelvis z %.2f  box low %.3f tilt %3.0f  hands %4.0f %4.0f N  com ahead "
             "%+.3f\n",
