@@ -106,9 +106,10 @@ Tokens Passive(const Tokens& words, const core::SceneCatalog& scene) {
     if (words[k] == "then" || words[k] == "and") c = k + 1;
     const std::string p = k + 1 < words.size() ? words[k + 1] : std::string();
     const WordReading r = ReadWord(p);
-    const bool participle =
-        p.size() > 3 && (p.compare(p.size() - 2, 2, "ed") == 0 || p == "sat" || p == "laid" ||
-                         p == "lain" || p == "put" || p == "set" || p == "held");
+    // a participle, or after "be"/"get" any verb form ("to be sat on": Reword says "sit")
+    const bool participle = (p.size() > 3 && p.compare(p.size() - 2, 2, "ed") == 0) || p == "sat" ||
+                            p == "laid" || p == "lain" || p == "put" || p == "set" || p == "held" ||
+                            p == "brought" || (words[k] != "is" && words[k] != "are");
     bool subject = false;
     for (size_t m = c; m < k; ++m) subject = subject || NamesObject(words[m], scene);
     if (!kAux.count(words[k]) || !participle || r.kind != WordReading::kAction || !subject) {
@@ -409,7 +410,16 @@ core::StatusOr<std::vector<ClauseWords>> FallbackClauses(std::string_view comman
     if (IsNegation(w)) return Invalid("the command says what not to do ('" + w + "')");
   }
   raw = ApplyCorrections(raw);
-  const Tokens read = Normalize(ReadWords(Passive(CorrectTypos(Reword(raw)), scene), scene));
+  // the human's own body named as a whole ("your butt") goes before spelling is corrected
+  Tokens words;
+  for (const std::string& w : Reword(raw)) {
+    if (LexiconWord(w) || ReadWord(w).kind != WordReading::kDrop) {
+      words.push_back(w);
+    } else if (!words.empty() && OpensObject(words.back()) && words.back() != "the") {
+      words.pop_back();
+    }
+  }
+  const Tokens read = Normalize(ReadWords(Passive(CorrectTypos(words), scene), scene));
   SH_ASSIGN_OR_RETURN(std::vector<ClauseWords> segments, SplitMarkedClauses(read));
   Composer composer(scene);
   for (const ClauseWords& s : JoinLabels(std::move(segments))) SH_RETURN_IF_ERROR(composer.Add(s));
