@@ -12,7 +12,8 @@
 namespace simhuman::language::offline {
 namespace {
 
-// verb stems -> the canonical verb the rules read (base forms and irregular forms)
+// verb stems -> the canonical verb the rules read (base forms and irregular forms): sitting,
+// lying, resting, standing up
 const std::map<std::string, std::string>& ActionStems() {
   static const auto* words = new std::map<std::string, std::string>{
       // sitting
@@ -69,6 +70,13 @@ const std::map<std::string, std::string>& ActionStems() {
       {"risen", "stand"},
       {"arise", "stand"},
       {"arose", "stand"},
+  };
+  return *words;
+}
+
+// verb stems of going, touching, holding, putting and carrying (see ActionStems())
+const std::map<std::string, std::string>& MovingStems() {
+  static const auto* words = new std::map<std::string, std::string>{
       // going
       {"go", "go"},
       {"went", "go"},
@@ -202,7 +210,9 @@ bool IsObjectWord(const std::string& w) {
 std::string ActionByStem(const std::string& w) {
   auto look = [](const std::string& s) -> std::string {
     auto a = ActionStems().find(s);
-    return a == ActionStems().end() ? std::string() : a->second;
+    if (a != ActionStems().end()) return a->second;
+    a = MovingStems().find(s);
+    return a == MovingStems().end() ? std::string() : a->second;
   };
   if (std::string a = look(w); !a.empty()) return a;
   auto ends = [&](const char* suffix) {
