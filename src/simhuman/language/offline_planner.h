@@ -17,6 +17,10 @@
 /// - implied steps: a get-close step before interacting with an object more than
 ///   kNearEnoughM from the human's planned position, a stand-up step before leaving a seat.
 ///
+/// A command the rules refuse as not understood is read again by the general fallback
+/// (offline/fallback.h: actions, objects and body parts in the order they occur, planned by the
+/// same rules); negations, unknown actions on objects and unknown objects stay refused.
+///
 /// It plans for the first human of the scene (agent 0; the others keep still), from
 /// PlanContext::agents[0] (or a standing human at the origin facing +x when the list is empty).
 /// "Left", "right", "in front of" and "behind" are seen from that human's start pose.
