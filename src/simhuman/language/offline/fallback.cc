@@ -101,9 +101,13 @@ Tokens Passive(const Tokens& words, const core::SceneCatalog& scene) {
                                                "would", "may",    "might", "needs", "need", "has",
                                                "have",  "is",     "are",   "to",    "be",   "also"};
   Tokens out;
-  size_t c = 0;  // start of the clause in `words`
+  size_t c = 0;      // start of the clause in `words` (or after the last passive read in it)
+  size_t out_c = 0;  // the same place in `out`
   for (size_t k = 0; k < words.size(); ++k) {
-    if (words[k] == "then" || words[k] == "and") c = k + 1;
+    if (words[k] == "then" || words[k] == "and") {
+      c = k + 1;
+      out_c = out.size() + 1;
+    }
     const std::string p = k + 1 < words.size() ? words[k + 1] : std::string();
     const WordReading r = ReadWord(p);
     // a participle, or after "be"/"get" any verb form ("to be sat on": Reword says "sit")
@@ -120,7 +124,7 @@ Tokens Passive(const Tokens& words, const core::SceneCatalog& scene) {
     for (size_t m = c; m < k; ++m) {
       if (!kModal.count(words[m])) np.push_back(words[m]);
     }
-    out.resize(out.size() - (k - c));
+    out.resize(out_c);
     out.push_back(r.word);
     size_t after = k + 2;
     const std::string q = after < words.size() ? words[after] : std::string();
@@ -131,6 +135,8 @@ Tokens Passive(const Tokens& words, const core::SceneCatalog& scene) {
     }
     out.insert(out.end(), np.begin(), np.end());
     k = after - 1;
+    c = after;
+    out_c = out.size();
   }
   return out;
 }

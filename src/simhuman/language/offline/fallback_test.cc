@@ -129,6 +129,13 @@ TEST(OfflineFallbackTest, UnknownActionsObjectsAndNegationsAreStillRefused) {
   EXPECT_THAT(Clauses("office", "Kick the box."), HasSubstr("error"));
 }
 
+TEST(OfflineFallbackTest, TwoPassivesInOneClauseAreReadOneAfterTheOther) {
+  // the second passive starts after the first (no words of the first are taken back)
+  EXPECT_THAT(Clauses("tabletop_demo",
+                      "the green cube must be placed upon the yellow cube that is to be set down"),
+              HasSubstr("put green box"));
+}
+
 TEST(OfflineFallbackTest, AmbiguityStillAsks) {
   Fixture f = Load("tabletop_demo");
   OfflinePlanner planner;
