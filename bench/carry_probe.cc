@@ -37,6 +37,7 @@ struct Args {
   double reach_depth = -1;
   double torsion = -1;    // >= 0: the box's torsional friction (condim 3 at 0)
   bool contacts = false;  // print every contact and its normal force
+  bool hold = false;  // start holding the box (the carry phase's reference-state start)
   int mpc = 0;            // > 0: the lift MPC with this many samples drives the action
   double mpc_sigma = -1, mpc_horizon = -1, mpc_whands = -1, mpc_wtrack = -1, mpc_wbal = -1;
   std::string policy, sheet;
@@ -75,6 +76,8 @@ Args Parse(int argc, char** argv) {
       a.contacts = std::atoi(v) != 0;
     else if (k == "--torsion")
       a.torsion = std::atof(v);
+    else if (k == "--hold")
+      a.hold = std::atoi(v) != 0;
     else if (k == "--mpc")
       a.mpc = std::atoi(v);
     else if (k == "--mpc-sigma")
@@ -171,7 +174,10 @@ int main(int argc, char** argv) {
     Eigen::Vector3d box_pos = pelvis + (params.stand_gap_m + 0.5 * side) * fwd;
     box_pos.z() = 0;
     (*t)->SetBox(0, side, mass, box_pos, yaw, (box_pos + 2.0 * fwd).head<2>(), obs.data());
-    (*t)->StartLiftNow(0, obs.data(), a.pose_at);
+    if (a.hold)
+      (*t)->StartHoldingNow(0, obs.data());
+    else
+      (*t)->StartLiftNow(0, obs.data(), a.pose_at);
     const mjModel* m = (*t)->model(0);
     if (a.torsion >= 0) {  // a probe of the grip: the model is this probe's own
       mjModel* mm = const_cast<mjModel*>(m);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "simhuman/control/arm_servo.h"
 #include "simhuman/core/geometry.h"
 #include "simhuman/learn/walk_env.h"
 #include "simhuman/world/model_builder.h"
@@ -144,6 +145,57 @@ void CarryTask::StartLiftNow(int i, float* obs, double pose_at_s) {
   if (pose_at_s >= 0) control::PoseInLift(e.m, e.d, ix_, pose_at_s, &e.s);
   control::UpdateWalkCommand(control::WalkParams(), e.d, ix_.walk, &e.s.walk);
   control::CarryObservation(e.d, ix_, e.s, box, obs);
+}
+
+void CarryTask::StartHoldingNow(int i, float* obs) {
+  Env& e = envs_[i];
+  mjData* d = e.d;
+  const world::AgentIndex& a = ix_.walk.agent;
+  control::CarryBox box = control::ReadCarryBox(e.m, d, box_geom_);
+  control::StartLift(params_, e.m, e.scratch, d, ix_, box, &e.s);
+  e.s.phase_time_s = control::kLiftSeconds - 1e-6;
+  double ref[kWalkActDim];
+  control::CarryReference(e.s, ref);
+  {
+    // posed with the hands touching the held faces (the keyframe's press would start the
+    // episode with the hands inside the box); the grip servo presses from there
+    control::CarryParams touch = params_;
+    touch.squeeze_m = 0;
+    const control::LiftGeometry g = control::MakeLiftGeometry(touch, d, ix_, e.s, box);
+    const control::CarryPoses k = control::SolveCarryPoses(touch, e.m, e.scratch, ix_, g);
+    static const std::array<std::array<int, 4>, 2> kArms = *control::ArmJointIndices();
+    for (const auto& arm : kArms) {
+      for (int j : arm) ref[j] = k.hold[j];
+    }
+  }
+  Eigen::Vector3d pelvis;
+  double yaw;
+  control::PelvisPose(d, ix_.walk, &pelvis, &yaw);
+  d->qpos[a.root_qpos + 3] = std::cos(yaw / 2);
+  d->qpos[a.root_qpos + 4] = d->qpos[a.root_qpos + 5] = 0;
+  d->qpos[a.root_qpos + 6] = std::sin(yaw / 2);
+  for (int j = 0; j < kWalkActDim; ++j) {
+    d->qpos[a.hinge_qpos[j]] = ref[j];
+    d->ctrl[a.actuator[j]] = ref[j];
+  }
+  mju_zero(d->qvel, e.m->nv);
+  mj_kinematics(e.m, d);
+  d->qpos[a.root_qpos + 2] -=
+      LowestBoxCornerZ(e.m, d, {ix_.walk.left_foot_geom, ix_.walk.right_foot_geom}) - 0.001;
+  mj_kinematics(e.m, d);
+  // the box: its held points' middle between the hands, its held faces squeezed by squeeze_m
+  const Eigen::Vector3d hl(d->site_xpos + 3 * ix_.left_hand_site);
+  const Eigen::Vector3d hr(d->site_xpos + 3 * ix_.right_hand_site);
+  Eigen::Vector3d local_mid = e.s.held_left_local;
+  local_mid[e.s.held_axis] = 0;
+  const Eigen::Vector3d centre = 0.5 * (hl + hr) - box.rot * local_mid;
+  // the free joint moves the body, whose origin need not be the box geom's centre
+  const Eigen::Vector3d body_off = Eigen::Vector3d(d->xpos + 3 * box_body_) - box.pos;
+  for (int k = 0; k < 3; ++k) d->qpos[box_qpos_ + k] = centre[k] + body_off[k];
+  mj_forward(e.m, d);
+  box = control::ReadCarryBox(e.m, d, box_geom_);
+  control::UpdateWalkCommand(control::WalkParams(), d, ix_.walk, &e.s.walk);
+  control::CarryObservation(d, ix_, e.s, box, obs);
 }
 
 void CarryTask::Reset(int i, uint64_t seed, float* obs) {

@@ -73,6 +73,12 @@ class CarryTask : public VecTask {
   /// `pose_at_s` >= 0 poses the human inside the lift at that time (PoseInLift).
   void StartLiftNow(int i, float* obs, double pose_at_s = -1);
 
+  /// Starts env i holding its box (reference-state initialisation of the carry phase; tests,
+  /// probes): after StartLiftNow's keyframes are solved, the human stands upright in the holding
+  /// keyframe where it is, the box is moved so that its held points lie between the hands with
+  /// `squeeze_m` of press, and the lift's clock is at its end, so the next step enters the carry.
+  void StartHoldingNow(int i, float* obs);
+
   /// Evaluation starts: no episode starts at the box or inside the lift (Reset always walks up
   /// from 1-2 m, up to 5 m at curriculum 1), and episodes are cut after `max_steps` policy steps.
   void SetEvaluation(int max_steps) {

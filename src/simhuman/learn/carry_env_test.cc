@@ -299,3 +299,38 @@ TEST(CarryMpc, KeepsTheSquatBalancedWhereTheReferenceAloneFallsIntegration) {
 
 }  // namespace
 }  // namespace simhuman::learn
+
+namespace simhuman::learn {
+namespace {
+
+// The carry phase's reference-state start: upright, the hands on the held points, the box off
+// the floor, and the next step enters the carry.
+TEST(CarryTask, StartHoldingPutsTheBoxBetweenTheHands) {
+  auto t = CarryTask::Create(1);
+  ASSERT_TRUE(t.ok()) << t.status();
+  std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
+  (*t)->Reset(0, 2000, obs.data());
+  Eigen::Vector3d pelvis;
+  double yaw;
+  control::PelvisPose((*t)->data(0), (*t)->index().walk, &pelvis, &yaw);
+  const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
+  Eigen::Vector3d box = pelvis + ((*t)->params().stand_gap_m + 0.3) * fwd;
+  box.z() = 0;
+  (*t)->SetBox(0, 0.6, 4.0, box, yaw, (box + 2.0 * fwd).head<2>(), obs.data());
+  (*t)->StartHoldingNow(0, obs.data());
+  const mjData* d = (*t)->data(0);
+  const control::CarryBox b = control::ReadCarryBox((*t)->model(0), d, (*t)->box_geom());
+  Eigen::Vector3d held_l, held_r;
+  control::CarryHeldPoints((*t)->state(0), b, &held_l, &held_r);
+  const auto& ix = (*t)->index();
+  EXPECT_LT((Eigen::Vector3d(d->site_xpos + 3 * ix.left_hand_site) - held_l).norm(), 0.08);
+  EXPECT_LT((Eigen::Vector3d(d->site_xpos + 3 * ix.right_hand_site) - held_r).norm(), 0.08);
+  EXPECT_GT(control::BoxLowestZ(b), 0.3);
+  EXPECT_GT(d->xpos[3 * ix.walk.agent.pelvis_body + 2], 0.85);
+  StepInfo info;
+  (*t)->Step(0, act.data(), obs.data(), &info);
+  EXPECT_EQ((*t)->state(0).phase, CarryPhase::kCarry);
+}
+
+}  // namespace
+}  // namespace simhuman::learn
