@@ -286,7 +286,15 @@ int main(int argc, char** argv) {
       }
     }
     lifted += max_low > 0.05 && end == "time";
-    std::printf("  end: %s, box highest in carry %.3f m\n", end.c_str(), max_low);
+    {
+      const mjData* d = (*t)->data(0);
+      const auto box = sh::control::ReadCarryBox(m, d, (*t)->box_geom());
+      std::printf("  end: %s, box highest in carry %.3f m, at the end %.3f m; box %.2f m from "
+                  "its destination (%.2f at the start)\n",
+                  end.c_str(), max_low, sh::control::BoxLowestZ(box),
+                  ((*t)->state(0).dest_xy - box.pos.head<2>()).norm(),
+                  ((*t)->state(0).dest_xy - box_pos.head<2>()).norm());
+    }
     if (!frames.empty()) {
       (void)sh::render::WriteContactSheet(a.sheet + "/lift" + std::to_string(ep) + ".png", frames,
                                           kW, kH, 6);
