@@ -71,16 +71,22 @@ core::StatusOr<control::manip::TabletopGoal> TabletopSceneGoal(const world::Tabl
 
 namespace {
 
-double RawStepsPerSecond(const mjModel* m, const mjData* from) {
+// mj_step alone, `steps` times from the state in `from` (an episode's start): wall and CPU time
+struct RawTime {
+  double wall_s = 0, cpu_s = 0;
+};
+RawTime RawStepTime(const mjModel* m, const mjData* from, int steps) {
   mjData* d = mj_makeData(m);
   mju_copy(d->qpos, from->qpos, m->nq);
   mju_copy(d->ctrl, from->ctrl, m->nu);
   const auto t0 = std::chrono::steady_clock::now();
-  constexpr int kSteps = 1000;
-  for (int k = 0; k < kSteps; ++k) mj_step(m, d);
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double cpu0 = control::manip::ThreadCpuSeconds();
+  for (int k = 0; k < steps; ++k) mj_step(m, d);
+  RawTime t;
+  t.cpu_s = control::manip::ThreadCpuSeconds() - cpu0;
+  t.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   mj_deleteData(d);
-  return kSteps / s;
+  return t;
 }
 
 }  // namespace
@@ -125,6 +131,8 @@ nlohmann::json TabletopEvalSummary::ToJson() const {
           {"failures_by_stage", failures_by_stage},
           {"pipeline_steps_per_s", steps_per_s},
           {"raw_mj_step_steps_per_s", raw_steps_per_s},
+          {"pipeline_steps_per_cpu_s", cpu_steps_per_s},
+          {"raw_mj_step_steps_per_cpu_s", raw_cpu_steps_per_s},
           {"real_time_factor", wall_s > 0 ? sim_s / wall_s : 0.0},
           {"perception", perception},
           {"perception_failures", perception_failures},
@@ -144,7 +152,8 @@ nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
           {"failed_stage", e.failed_stage},
           {"end_reason", e.end_reason},
           {"sim_steps", e.sim_steps},
-          {"wall_s", e.wall_s}};
+          {"wall_s", e.wall_s},
+          {"cpu_s", e.cpu_s}};
 }
 
 core::StatusOr<TabletopEvalSummary> RunTabletopEval(
@@ -161,7 +170,10 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   const control::manip::TabletopOptions pipeline;  // named: GCC 12 misreads a default temporary
   TabletopEvalSummary sum;
   int64_t steps = 0;
-  double wall = 0, raw = 0;
+  double wall = 0, cpu = 0;
+  // raw mj_step: 1000 steps from every episode's start, so that it shares the run's load
+  constexpr int kRawSteps = 1000;
+  RawTime raw;
   for (int i = 0; i < o.episodes; ++i) {
     const uint64_t seed = core::DeriveSeed(o.seed, 0x7ab1e, static_cast<uint64_t>(i));
     std::string kind = o.kind;
@@ -175,7 +187,9 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
                         world::SimWorld::Create(catalog, {human}, opt));
     SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(*w, 0, true));
     SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopSceneGoal(ts, *w));
-    if (i == 0) raw = RawStepsPerSecond(w->model(), w->data());
+    const RawTime rt = RawStepTime(w->model(), w->data(), kRawSteps);
+    raw.wall_s += rt.wall_s;
+    raw.cpu_s += rt.cpu_s;
     control::manip::TabletopResult r;
     control::manip::StepHook hook;
     core::Status seen = absl::OkStatus();
@@ -216,6 +230,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     e.end_reason = r.end_reason;
     e.sim_steps = r.sim_steps;
     e.wall_s = r.wall_s;
+    e.cpu_s = r.cpu_s;
     ++sum.episodes;
     sum.successes += r.success;
     sum.plan_failures += r.plan_failure;
@@ -226,6 +241,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     t.plan_failures += r.plan_failure;
     steps += r.sim_steps;
     wall += r.wall_s;
+    cpu += r.cpu_s;
     sum.sim_s += r.sim_steps * w->model()->opt.timestep;
     if (on_episode) on_episode(e);
   }
@@ -233,7 +249,9 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   const int no_plan = sum.episodes - sum.plan_failures;
   sum.success_rate_no_plan_fail = no_plan > 0 ? static_cast<double>(sum.successes) / no_plan : 0;
   sum.steps_per_s = wall > 0 ? steps / wall : 0;
-  sum.raw_steps_per_s = raw;
+  sum.cpu_steps_per_s = cpu > 0 ? steps / cpu : 0;
+  sum.raw_steps_per_s = raw.wall_s > 0 ? sum.episodes * kRawSteps / raw.wall_s : 0;
+  sum.raw_cpu_steps_per_s = raw.cpu_s > 0 ? sum.episodes * kRawSteps / raw.cpu_s : 0;
   sum.wall_s = wall;
   sum.perception = o.perception;
   if (vision) {

@@ -47,7 +47,7 @@ struct TabletopEpisode {
   std::string failed_stage;  ///< "" on success
   std::string end_reason;
   int sim_steps = 0;
-  double wall_s = 0;
+  double wall_s = 0, cpu_s = 0;
 };
 
 struct TabletopEvalSummary {
@@ -70,7 +70,11 @@ struct TabletopEvalSummary {
   int perception_failures = 0;  ///< vision: the task's objects not seen at task planning
   int vision_frames = 0;
   double vision_ms_per_frame = 0, render_ms_per_frame = 0;
-  double raw_steps_per_s = 0;  ///< mj_step alone on the same model, same run
+  /// mj_step alone on the same model, same run: 1000 steps from every episode's start
+  double raw_steps_per_s = 0;
+  /// The same two speeds per second of CPU time (the pipeline's thread): what a core of its own
+  /// gives, which other processes sharing the machine change far less than the wall-clock ones.
+  double cpu_steps_per_s = 0, raw_cpu_steps_per_s = 0;
   nlohmann::json ToJson() const;
 };
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "simhuman/control/manip/arm_collision.h"
 #include "simhuman/core/check.h"
 #include "simhuman/world/hand.h"
 
@@ -21,10 +22,6 @@ Eigen::Matrix3d BodyRot(const mjData* d, int body) {
 Eigen::Vector3d RotVec(const Eigen::Matrix3d& r) {
   const Eigen::AngleAxisd aa(r);
   return aa.axis() * aa.angle();
-}
-
-bool InArm(const ArmChain& arm, int body) {
-  return std::find(arm.bodies.begin(), arm.bodies.end(), body) != arm.bodies.end();
 }
 
 }  // namespace
@@ -155,18 +152,7 @@ int ArmContacts(const mjModel* m, mjData* d, const ArmChain& arm, const Eigen::V
                 int ignore_body, double tolerance_m) {
   arm.Set(d, q);
   mj_kinematics(m, d);
-  mj_collision(m, d);
-  int count = 0;
-  for (int c = 0; c < d->ncon; ++c) {
-    const mjContact& con = d->contact[c];
-    if (con.dist > -tolerance_m) continue;
-    const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
-    const bool a1 = InArm(arm, b1), a2 = InArm(arm, b2);
-    if (!a1 && !a2) continue;
-    if (b1 == ignore_body || b2 == ignore_body) continue;
-    ++count;
-  }
-  return count;
+  return ArmCollider(m, arm).Count(d, {ignore_body}, tolerance_m);
 }
 
 PalmPose SideGraspPose(const Eigen::Vector3d& centre, double standoff_m, double yaw_rad, bool right,

@@ -71,9 +71,10 @@ IkResult SolvePalmIk(const mjModel* m, mjData* scratch, const ArmChain& arm, con
                      const IkOptions& options = {});
 
 /// Contacts of the arm and hand with anything (the world, objects, the rest of the body) deeper
-/// than `tolerance_m`, at the arm angles `q` (set into `scratch`, kinematics and collision
-/// run), ignoring contacts with the geoms of body `ignore_body` (the object in hand; -1: none).
-/// Returns the number of such contacts.
+/// than `tolerance_m`, at the arm angles `q` (set into `scratch` and its kinematics run; the
+/// arm's geom pairs checked by ArmCollider, arm_collision.h, which leaves scratch->contact
+/// alone), ignoring contacts with the geoms of body `ignore_body` (the object in hand; -1:
+/// none). Returns the number of such contacts.
 int ArmContacts(const mjModel* m, mjData* scratch, const ArmChain& arm, const Eigen::VectorXd& q,
                 int ignore_body = -1, double tolerance_m = 0.002);
 

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "simhuman/control/manip/arm_collision.h"
+
 namespace simhuman::control::manip {
 namespace {
 
@@ -50,33 +52,16 @@ struct Carried {
 };
 
 // contacts of the arm with anything but the ignored bodies (the object in hand), and of the
-// carried object with anything but the arm
+// carried object with anything but the arm (ArmCollider::Count)
 int Contacts(const mjModel* m, mjData* s, const ArmChain& arm, const Eigen::VectorXd& q,
-             const ArmMotionOptions& o, const Carried& carried) {
+             const ArmMotionOptions& o, const Carried& carried, const ArmCollider& collider) {
+  arm.Set(s, q);
+  mj_kinematics(m, s);
   if (carried.body >= 0) {
-    arm.Set(s, q);
-    mj_kinematics(m, s);
     carried.Place(s, arm);
+    mj_kinematics(m, s);
   }
-  int best = 1 << 30;
-  if (o.ignore_bodies.empty()) {
-    best = ArmContacts(m, s, arm, q, -1, o.contact_tolerance_m);
-  } else {
-    // ArmContacts ignores one body: count with each ignored and keep what no ignore explains
-    for (int b : o.ignore_bodies)
-      best = std::min(best, ArmContacts(m, s, arm, q, b, o.contact_tolerance_m));
-  }
-  if (carried.body < 0) return best;
-  // the contacts of the last ArmContacts call (the object placed with the hand)
-  for (int c = 0; c < s->ncon; ++c) {
-    const mjContact& con = s->contact[c];
-    if (con.dist > -o.contact_tolerance_m) continue;
-    const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
-    if (b1 != carried.body && b2 != carried.body) continue;
-    const int other = b1 == carried.body ? b2 : b1;
-    if (std::find(arm.bodies.begin(), arm.bodies.end(), other) == arm.bodies.end()) ++best;
-  }
-  return best;
+  return collider.Count(s, o.ignore_bodies, o.contact_tolerance_m);
 }
 
 struct Candidate {
@@ -95,8 +80,8 @@ struct FreePoseCount {
 void CollectFreePoses(const mjModel* m, mjData* s, const ArmChain& arm,
                       const std::vector<PalmPose>& goals, const Eigen::VectorXd& start,
                       const Eigen::VectorXd& rest, const ArmMotionOptions& o,
-                      const Carried& carried, int pass, std::vector<Candidate>* free,
-                      FreePoseCount* count) {
+                      const Carried& carried, const ArmCollider& collider, int pass,
+                      std::vector<Candidate>* free, FreePoseCount* count) {
   *count = {};
   for (size_t g = 0; g < goals.size(); ++g) {
     bool reached = false, found = false;
@@ -110,7 +95,7 @@ void CollectFreePoses(const mjModel* m, mjData* s, const ArmChain& arm,
       const IkResult r = SolvePalmIk(m, s, arm, goals[g], seed, rest, o.ik);
       if (!r.converged) continue;
       reached = true;
-      if (Contacts(m, s, arm, r.q, o, carried) > 0) continue;
+      if (Contacts(m, s, arm, r.q, o, carried, collider) > 0) continue;
       free->push_back({r.q, static_cast<int>(g), r.q.tail<3>().norm()});
       found = true;
     }
@@ -134,6 +119,7 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
   const auto t0 = std::chrono::steady_clock::now();
   mju_copy(s->qpos, d->qpos, m->nq);
   const Carried carried = Carried::From(m, d, arm, o.carried_body);
+  const ArmCollider collider(m, arm, carried.body);
   // a joint pressed against its (soft) limit may sit a hair beyond it: plan from the limit
   Eigen::VectorXd start = arm.Get(d);
   for (int i = 0; i < ArmChain::kDofs; ++i) start[i] = std::clamp(start[i], arm.lo[i], arm.hi[i]);
@@ -147,10 +133,10 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
   // found), again from spread-out seeds (an arm reaching far forward is often beyond a local
   // solve from a hanging arm, or its first solution collides), so the common case costs one
   // solve per pose
-  CollectFreePoses(m, s, arm, goals, start, rest, o, carried, 0, &free, &count);
+  CollectFreePoses(m, s, arm, goals, start, rest, o, carried, collider, 0, &free, &count);
   bool restarted = false;
   if (free.empty() && o.ik_restarts > 0) {
-    CollectFreePoses(m, s, arm, goals, start, rest, o, carried, 1, &free, &count);
+    CollectFreePoses(m, s, arm, goals, start, rest, o, carried, collider, 1, &free, &count);
     restarted = true;
   }
   if (free.empty()) {
@@ -165,7 +151,7 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
     hi[i] = arm.hi[i];
   }
   const ValidityFn valid = [&](const Eigen::VectorXd& q) {
-    return Contacts(m, s, arm, q, o, carried) == 0;
+    return Contacts(m, s, arm, q, o, carried, collider) == 0;
   };
   PlannerOptions po = o.planner;
   if (po.start_escape_rad <= 0) po.start_escape_rad = 0.05;  // a start resting on the table
@@ -187,7 +173,7 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
     // the poses found from the current arm lie where no path reaches them: others, once
     std::vector<Candidate> more;
     FreePoseCount ignored;
-    CollectFreePoses(m, s, arm, goals, start, rest, o, carried, 1, &more, &ignored);
+    CollectFreePoses(m, s, arm, goals, start, rest, o, carried, collider, 1, &more, &ignored);
     if (!more.empty()) {
       free = best(more);
       plan = search();

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <optional>
 
+#include <time.h>
+
 namespace simhuman::control::manip {
 
 const char* TabletopStageName(TabletopStage s) {
@@ -348,6 +350,7 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
 
 TabletopResult Run::Go(const GraspPolicyFn& policy) {
   const auto wall0 = std::chrono::steady_clock::now();
+  const double cpu0 = ThreadCpuSeconds();
   core::StatusOr<ArmTracker> tracker = ArmTracker::Create(m_, ix_.arm, o_.tracker);
   if (!tracker.ok()) return Fail(TabletopStage::kReach, std::string(tracker.status().message()));
   ArmTracker& tr = *tracker;
@@ -355,6 +358,7 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
     r.final_pos = ObjectCom();
     r.sim_steps = steps_;
     r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    r.cpu_s = ThreadCpuSeconds() - cpu0;
     return r;
   };
   if (auto f = Reach(tr)) return finish(*f);
@@ -470,6 +474,12 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
 }
 
 }  // namespace
+
+double ThreadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
 
 TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const TabletopGoal& goal,
                            const GraspPolicyFn& policy, const TabletopOptions& options,

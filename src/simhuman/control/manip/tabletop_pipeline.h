@@ -144,7 +144,13 @@ struct TabletopResult {
   Eigen::Vector3d final_pos = Eigen::Vector3d::Zero();  ///< the object's centre of mass
   int sim_steps = 0;
   double wall_s = 0;
+  /// The run's CPU time (its thread's): what it costs on a core of its own, however loaded the
+  /// machine (wall_s grows when other processes share the cores, cpu_s barely).
+  double cpu_s = 0;
 };
+
+/// The calling thread's CPU time so far (s).
+double ThreadCpuSeconds();
 
 /// Called after every physics step (recording, video); may be empty.
 using StepHook = std::function<void(const mjData* d)>;

@@ -1,0 +1,93 @@
+#include "simhuman/control/manip/arm_collision.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "simhuman/control/manip/grasp_task.h"
+#include "simhuman/core/rng.h"
+#include "simhuman/world/scene.h"
+#include "simhuman/world/seating.h"
+#include "simhuman/world/sim_world.h"
+#include "simhuman/world/tabletop.h"
+
+namespace simhuman::control::manip {
+namespace {
+
+// what ArmCollider::Count stands for, from mj_collision over the whole model
+int CountFromAllContacts(const mjModel* m, mjData* d, const ArmChain& arm,
+                         const std::vector<int>& ignores, int carried, double tol) {
+  mj_collision(m, d);
+  auto in_arm = [&](int b) {
+    return std::find(arm.bodies.begin(), arm.bodies.end(), b) != arm.bodies.end();
+  };
+  const std::vector<int> slots = ignores.empty() ? std::vector<int>{-1} : ignores;
+  int best = 1 << 30, carried_count = 0;
+  for (int ignore : slots) {
+    int n = 0;
+    for (int c = 0; c < d->ncon; ++c) {
+      const mjContact& con = d->contact[c];
+      if (con.dist > -tol) continue;
+      const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
+      if ((in_arm(b1) || in_arm(b2)) && b1 != ignore && b2 != ignore) ++n;
+    }
+    best = std::min(best, n);
+  }
+  for (int c = 0; c < d->ncon && carried >= 0; ++c) {
+    const mjContact& con = d->contact[c];
+    if (con.dist > -tol) continue;
+    const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
+    if ((b1 == carried || b2 == carried) && !in_arm(b1) && !in_arm(b2)) ++carried_count;
+  }
+  return best + carried_count;
+}
+
+TEST(ArmCollisionTest, CountsWhatMjCollisionFindsForTheArmAndACarriedObjectIntegration) {
+  for (uint64_t seed : {3u, 8u}) {
+    auto ts = world::GenerateTabletop(seed, seed % 2 ? "stack" : "place");
+    ASSERT_TRUE(ts.ok()) << ts.status();
+    auto catalog = world::BuildCatalog(ts->scene);
+    ASSERT_TRUE(catalog.ok()) << catalog.status();
+    auto human = world::AgentFromHuman(ts->scene.humans[0], 0, *catalog);
+    ASSERT_TRUE(human.ok()) << human.status();
+    auto w = world::SimWorld::Create(*catalog, {*human}, world::DexterousModelOptions());
+    ASSERT_TRUE(w.ok()) << w.status();
+    const mjModel* m = (*w)->model();
+    mjData* d = (*w)->data();
+    const GraspIndex gi = *MakeGraspIndex(**w, 0, true);
+    const ArmChain& arm = gi.arm;
+    const int obj =
+        mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName(ts->task.object_id).c_str());
+    const int obj_qpos = m->jnt_qposadr[m->body_jntadr[obj]];
+    const ArmCollider alone(m, arm), carrying(m, arm, obj);
+    EXPECT_GT(carrying.num_pairs(), alone.num_pairs());
+    core::Rng rng(seed);
+    int touching = 0, carried_touching = 0;
+    for (int k = 0; k < 400; ++k) {
+      Eigen::VectorXd q(ArmChain::kDofs);
+      for (int i = 0; i < ArmChain::kDofs; ++i) q[i] = rng.Uniform(arm.lo[i], arm.hi[i]);
+      arm.Set(d, q);
+      mj_kinematics(m, d);
+      // the object somewhere around the palm (into the hand, the table or another object)
+      for (int i = 0; i < 3; ++i) {
+        d->qpos[obj_qpos + i] = d->site_xpos[3 * arm.palm_site + i] + rng.Uniform(-0.12, 0.12);
+      }
+      mj_kinematics(m, d);
+      for (double tol : {0.0, 0.002}) {
+        const int a = alone.Count(d, {}, tol);
+        EXPECT_EQ(a, CountFromAllContacts(m, d, arm, {}, -1, tol)) << "pose " << k;
+        const int c = carrying.Count(d, {obj}, tol);
+        EXPECT_EQ(c, CountFromAllContacts(m, d, arm, {obj}, obj, tol)) << "pose " << k;
+        touching += a > 0;
+        carried_touching += c > a;
+      }
+    }
+    // the poses cover both cases
+    EXPECT_GT(touching, 100);
+    EXPECT_GT(carried_touching, 50);
+  }
+}
+
+}  // namespace
+}  // namespace simhuman::control::manip
