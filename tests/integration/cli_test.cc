@@ -169,6 +169,22 @@ TEST(CliIntegrationTest, SitDemoEndToEnd) {
   EXPECT_EQ(r2["contact_error_m"], r["contact_error_m"]);
 }
 
+// the demo's getting up (issue 21): it completes, without sinking back onto the seat on the
+// way up (a staggered rise) and without extra steps
+TEST(CliIntegrationTest, DemoGetsUpFromTheChairWithoutStaggeringSlow) {
+  std::string out = TempDir("sit_stand");
+  Proc p = RunBin({"run", "--scene", "sit_demo", "--plan",
+                   kSource + "/assets/plans/sit_then_stand.json", "--out", out});
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  std::ifstream in(out + "/result.json");
+  nlohmann::json r = nlohmann::json::parse(in);
+  EXPECT_TRUE(r["success"].get<bool>()) << p.out;
+  nlohmann::json m = r["motion"].is_array() ? r["motion"][0] : r["motion"];
+  EXPECT_EQ(m["rises"], 1) << m.dump();
+  EXPECT_EQ(m["rises_staggered"], 0) << m.dump();
+  EXPECT_EQ(m["rise_extra_steps"], 0.0) << m.dump();
+}
+
 // --video: results first; without EGL or ffmpeg the render error exits 1 with result.json kept
 TEST(CliIntegrationTest, SitDemoVideoSlow) {
   std::string out = TempDir("sit_video");

@@ -8,6 +8,7 @@
 #include "simhuman/control/runner.h"
 #include "simhuman/plan/validate.h"
 #include "simhuman/world/health.h"
+#include "simhuman/world/humanoid.h"
 #include "simhuman/world/scene.h"
 
 namespace simhuman::control {
@@ -97,6 +98,54 @@ TEST(ReferencePoseTest, SitPoseTouchesTheSeatWithFeetOnTheFloor) {
   EXPECT_GT(pelvis.z(), np.z());  // above the seat, not in it
   EXPECT_NEAR(pts[static_cast<int>(core::BodyJoint::kLeftFoot)].z(), 0.0375, 0.03);
   EXPECT_NEAR(pts[static_cast<int>(core::BodyJoint::kRightFoot)].z(), 0.0375, 0.03);
+  mj_deleteData(scratch);
+}
+
+// getting up begins by drawing the feet back under the knees: from a seat with the feet ahead
+// of the knees (as a sit often ends), both rise poses put each foot behind its knee; with the
+// feet left ahead, the weight stays behind them at seat-off and the human staggers back
+TEST(ReferencePoseTest, GettingUpDrawsTheFeetBackUnderTheKneesIntegration) {
+  Fixture s = SitDemo();
+  const std::string id = s.catalog.objects[0].id;
+  auto chain = plan::ParseAndGround("[[[\"" + id + "\", \"seat surface\", \"pelvis\", \"contact\", " +
+                                        "\"up\"]], [[\"" + id + "\", \"none\", \"none\", \"none\", " +
+                                        "\"front\"]]]",
+                                    "<test>", s.catalog);
+  ASSERT_TRUE(chain.ok()) << chain.status();
+  const mjModel* m = s.world->model();
+  mjData* seated = mj_makeData(m);
+  mjData* scratch = mj_makeData(m);
+  StepTask sit = BuildStepTask(chain->steps[0], s.catalog, 0, 1.0, plan::PairParams());
+  ReferencePose pose = SolveReferencePose(*s.world, 0, sit, s.world->data(), scratch);
+  // knees opened to 50 degrees: the feet well ahead of the knees
+  const auto& names = world::HumanoidJointNames();
+  for (int j = 0; j < world::kHumanoidDofs; ++j) {
+    if (names[j] == "right_knee" || names[j] == "left_knee") pose.hinges[j] = 50 * M_PI / 180;
+  }
+  SetAgentPose(s.world->agent(0), pose, seated);
+  mj_kinematics(m, seated);
+  const auto start = s.world->BodyPoints(seated, 0);
+  StepTask stand = BuildStepTask(chain->steps[1], s.catalog, 0, 1.0, plan::PairParams());
+  const double yaw = 2 * std::atan2(pose.root[6], pose.root[3]);
+  const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
+  const int feet[2] = {static_cast<int>(core::BodyJoint::kLeftFoot),
+                       static_cast<int>(core::BodyJoint::kRightFoot)};
+  const int knees[2] = {static_cast<int>(core::BodyJoint::kLeftKnee),
+                        static_cast<int>(core::BodyJoint::kRightKnee)};
+  for (int i = 0; i < 2; ++i) EXPECT_GT((start[feet[i]] - start[knees[i]]).dot(fwd), 0.1);
+  for (int rise : {1, 2}) {
+    ReferencePoseOptions o;
+    o.rise = rise;
+    ReferencePose r = SolveReferencePose(*s.world, 0, stand, seated, scratch, o);
+    SetAgentPose(s.world->agent(0), r, scratch);
+    mj_kinematics(m, scratch);
+    const auto pts = s.world->BodyPoints(scratch, 0);
+    for (int i = 0; i < 2; ++i) {
+      // at most a few centimetres ahead of where the knee was (the anchor is 3 cm behind it)
+      EXPECT_LT((pts[feet[i]] - start[knees[i]]).dot(fwd), 0.04) << "rise " << rise << " foot " << i;
+    }
+  }
+  mj_deleteData(seated);
   mj_deleteData(scratch);
 }
 

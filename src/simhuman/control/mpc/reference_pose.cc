@@ -225,6 +225,24 @@ struct Start {
   double obj_yaw = 0;  // yaw of the focus object, the pelvis yaw without one (rad)
 };
 
+// Where the feet go to get up from a seat: each foot no farther forward (along the pelvis
+// heading) than kFeetBehindKneeM behind its knee, as a person draws the feet back under the
+// knees before rising; a foot already there stays.
+std::array<Eigen::Vector3d, 2> FeetForRising(const Start& st, double s) {
+  constexpr double kFeetBehindKneeM = 0.03;
+  const Eigen::Vector3d fwd(std::cos(st.yaw), std::sin(st.yaw), 0);
+  std::array<Eigen::Vector3d, 2> out;
+  const core::BodyJoint feet[2] = {core::BodyJoint::kLeftFoot, core::BodyJoint::kRightFoot};
+  const core::BodyJoint knees[2] = {core::BodyJoint::kLeftKnee, core::BodyJoint::kRightKnee};
+  for (int i = 0; i < 2; ++i) {
+    const Eigen::Vector3d& f = st.pts[static_cast<int>(feet[i])];
+    const Eigen::Vector3d& k = st.pts[static_cast<int>(knees[i])];
+    const double ahead = (f - k).dot(fwd) + kFeetBehindKneeM * s;
+    out[i] = ahead > 0 ? Eigen::Vector3d(f - ahead * fwd) : f;
+  }
+  return out;
+}
+
 // top centre (world) of the first contact part of body joint `j` (the pelvis / head)
 std::optional<Eigen::Vector3d> PartTop(const StepTask& task, core::BodyJoint j) {
   for (const ContactTerm& t : task.terms) {
@@ -250,8 +268,7 @@ void SetUpSeatOff(const Start& st, double s, Problem* pr, Vars* v) {
   pr->anchor_feet = true;
   pr->balance = true;
   pr->feet_on_floor = true;
-  pr->feet_anchor = {st.pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
-                     st.pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+  pr->feet_anchor = FeetForRising(st, s);
   pr->base_quat =
       YawQuat(st.yaw) * Eigen::Quaterniond(Eigen::AngleAxisd(25 * kDeg, Eigen::Vector3d::UnitY()));
   v->quat = pr->base_quat;
@@ -260,7 +277,7 @@ void SetUpSeatOff(const Start& st, double s, Problem* pr, Vars* v) {
 
 // rise phase 1, the first phase of getting up: still seated, pelvis tipped and trunk leaning
 // forward, feet drawn back under the knees, so the weight can then move onto the feet
-void SetUpLeanForward(const Start& st, Problem* pr, Vars* v) {
+void SetUpLeanForward(const Start& st, double s, Problem* pr, Vars* v) {
   pr->base = BasePostureHinges(Posture::kSit);
   pr->base[JointIndex("abdomen_y")] = 30 * kDeg;
   for (const char* n : {"right_hip_y", "left_hip_y"}) pr->base[JointIndex(n)] = 110 * kDeg;
@@ -270,9 +287,8 @@ void SetUpLeanForward(const Start& st, Problem* pr, Vars* v) {
   }
   v->h = pr->base;
   pr->feet_on_floor = true;
-  pr->anchor_feet = true;  // feet stay where they are (they cannot slide back under load)
-  pr->feet_anchor = {st.pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
-                     st.pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+  pr->anchor_feet = true;  // feet drawn back under the knees while the seat takes the weight
+  pr->feet_anchor = FeetForRising(st, s);
   pr->root_anchor = st.pos;
   pr->anchor_root_xy = true;
   pr->base_quat =
@@ -293,10 +309,8 @@ void SetUpStand(const StepTask& task, const Start& st, double s, Problem* pr, Va
                                                  : Eigen::Vector3d::Zero());
     if (st.pos.z() < 0.75 * world::kPelvisStandHeight * s) {
       // getting up from a seat: stand over the feet
-      pr->root_anchor = 0.5 * (st.pts[static_cast<int>(core::BodyJoint::kLeftFoot)] +
-                               st.pts[static_cast<int>(core::BodyJoint::kRightFoot)]);
-      pr->feet_anchor = {st.pts[static_cast<int>(core::BodyJoint::kLeftFoot)],
-                         st.pts[static_cast<int>(core::BodyJoint::kRightFoot)]};
+      pr->feet_anchor = FeetForRising(st, s);
+      pr->root_anchor = 0.5 * (pr->feet_anchor[0] + pr->feet_anchor[1]);
       pr->anchor_feet = true;
     }
     pr->anchor_root_xy = true;
@@ -397,7 +411,7 @@ void SetUpProblem(const StepTask& task, const ReferencePoseOptions& options, con
   if (options.rise == 2) {
     SetUpSeatOff(st, s, pr, v);
   } else if (options.rise == 1) {
-    SetUpLeanForward(st, pr, v);
+    SetUpLeanForward(st, s, pr, v);
   }
   switch (options.rise ? Posture::kLean : task.posture) {
     case Posture::kLean:

@@ -39,8 +39,8 @@ struct ReferencePoseOptions {
   double w_balance = 6.0;
   double w_penetration = 10.0;
   /// Solve a pose of getting up from a seat instead of the step's goal: 1 = still seated,
-  /// trunk leaning forward and feet drawn back; 2 = seat-off, pelvis just off the seat with the
-  /// centre of mass over the feet (feet where they are). 0 = the step's goal.
+  /// trunk leaning forward and feet drawn back under the knees; 2 = seat-off, pelvis just off
+  /// the seat with the centre of mass over the feet (drawn back as in 1). 0 = the step's goal.
   int rise = 0;
   /// Start the optimization from this pose instead of the base posture (which still anchors
   /// the posture term); for small corrections of an already solved pose. Not owned.
