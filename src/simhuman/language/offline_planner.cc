@@ -28,7 +28,7 @@ namespace {
 // the rules: normalised words, clauses, one verb handler per clause
 core::StatusOr<PlanResult> PlanByRules(std::string_view command, const PlanContext& context) {
   SH_ASSIGN_OR_RETURN(offline::Tokens raw, offline::Tokenize(offline::CodeToWords(command)));
-  raw = offline::ApplyCorrections(raw);
+  raw = offline::ReadSpokenForms(offline::ApplyCorrections(raw));
   offline::Tokens tokens = offline::Normalize(offline::CorrectTypos(offline::Reword(raw)));
   SH_ASSIGN_OR_RETURN(std::vector<offline::ClauseWords> clauses,
                       offline::SplitMarkedClauses(tokens));

@@ -227,6 +227,19 @@ absl::Status Session::NoticeOrUse(const Tokens& t, size_t i, const std::string& 
   return SitOrLie(t, i + 1, SitMode::kRest, c);
 }
 
+std::optional<absl::Status> Session::Mention(const Tokens& t, size_t i, const std::string& c) {
+  if (!sequenced_ && clause_ > 1) return std::nullopt;
+  core::StatusOr<NounPhrase> np = ParseNounPhrase(t, i, t.size(), 0, c);
+  if (!np.ok() || (!np->has_type && np->id.empty() && np->color.empty() && !np->pronoun) ||
+      !np->part.empty()) {
+    return std::nullopt;
+  }
+  core::StatusOr<const CatalogObject*> o = Resolve(*np, c);
+  if (!o.ok()) return o.status();
+  focus_ = *o;
+  return absl::OkStatus();
+}
+
 absl::Status Session::StandUp(const std::string& c) {
   if (posture_ == Posture::kStand || on_ == nullptr) {
     return Invalid("\"" + c + "\": the human is already standing; say first what to sit or lie on");
@@ -262,6 +275,12 @@ absl::Status Session::Reach(const Tokens& t, const std::string& c, bool in_pose)
   size_t e = t.size();
   size_t with = Find(t, b, t.size(), {"with", "using"});
   if (with < e) e = with;
+  if (b >= e && focus_ != nullptr && !in_pose) {
+    // "the box, touch with left hand": the object just named
+    Tokens with_it = t;
+    with_it.insert(with_it.begin() + static_cast<long>(e), "it");
+    return Reach(with_it, c, in_pose);
+  }
   if (b >= e) {
     return Invalid("\"" + c + "\": touch what? name an object; the scene has: " +
                    DescribeSceneObjects(scene_));

@@ -352,6 +352,7 @@ absl::Status Session::Clause(const Tokens& words) {
       Find(t, i, t.size(), {"hand", "hands"}) < t.size()) {
     return Reach(t, c, true);
   }
+  if (std::optional<absl::Status> mention = Mention(t, i, c)) return *mention;
   return Invalid("did not understand \"" + c +
                  "\"; commands start with sit, lie, rest, stand up, go to, walk to, approach, "
                  "touch, reach, put, place, stack, carry, bring, pick up, lean, cross, raise");

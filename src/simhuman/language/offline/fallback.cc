@@ -206,7 +206,10 @@ Tokens ReadWords(const Tokens& words, const core::SceneCatalog& scene) {
         continue;
       }
       const bool coordinated = c > 0 && out[c - 1] == "and";
-      if (coordinated || ObjectFollows(words, k, scene)) out.push_back("!" + w);
+      // "plug the lamp in": an unknown action on an object the scene lacks
+      const bool unknown_object = (next == "the" || next == "a" || kPossessive.count(next)) &&
+                                  k + 2 < words.size() && Unreadable(words[k + 2], scene);
+      if (coordinated || unknown_object || ObjectFollows(words, k, scene)) out.push_back("!" + w);
       continue;
     }
     if (slot && !noun_next) out.push_back("?" + w);
@@ -346,6 +349,13 @@ class Composer {
         return Invalid("did not understand the action '" + w.substr(1) + "' in \"" + c + "\"");
       }
     }
+    // "switch the television on, then ...": a clause without an action that opens with a word
+    // the fallback cannot read and names an object the scene lacks is an unknown action
+    if (parts.empty() && !pre.empty() && pre[0][0] != '?' && pre[0][0] != '!' &&
+        !OpensObject(pre[0]) && !Fillers().count(pre[0]) && !RefersToObject(pre[0], scene_) &&
+        std::any_of(pre.begin(), pre.end(), [](const std::string& w) { return w[0] == '?'; })) {
+      return Invalid("did not understand the action '" + pre[0] + "' in \"" + c + "\"");
+    }
     pre.erase(std::remove_if(pre.begin(), pre.end(),
                              [](const std::string& w) { return w[0] == '!' || w[0] == '?'; }),
               pre.end());
@@ -415,7 +425,7 @@ core::StatusOr<std::vector<ClauseWords>> FallbackClauses(std::string_view comman
   for (const std::string& w : raw) {
     if (IsNegation(w)) return Invalid("the command says what not to do ('" + w + "')");
   }
-  raw = ApplyCorrections(raw);
+  raw = ReadSpokenForms(ApplyCorrections(raw));
   // the human's own body named as a whole ("your butt") goes before spelling is corrected
   Tokens words;
   for (const std::string& w : Reword(raw)) {

@@ -117,6 +117,14 @@ core::StatusOr<std::vector<const CatalogObject*>> Session::Candidates(const Noun
     }
     c = top;
   }
+  // "go to the box, touch the top": a part named alone is the part of the object in focus (the
+  // one sat or lain on first) when that object has it
+  if (c.size() > 1 && !np.has_type && np.color.empty() && np.id.empty() && !np.part.empty() &&
+      np.relations.empty() && np.select == Select::kNone) {
+    for (const CatalogObject* f : {on_, focus_}) {
+      if (f != nullptr && std::find(c.begin(), c.end(), f) != c.end()) return std::vector{f};
+    }
+  }
   return c;
 }
 

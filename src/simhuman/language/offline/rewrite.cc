@@ -282,6 +282,22 @@ bool IsBareVerb(const Tokens& a) {
   return a.size() == 1 || a[1] == "to" || a[1] == "on" || a[1] == "in" || a[1] == "at";
 }
 
+// a clause that starts with a verb and names no object ("touch with left hand", "pick up")
+bool WantsObject(const Tokens& c) {
+  static const std::set<std::string> kVerbs = {"sit", "lie",  "rest", "touch", "grab",
+                                               "put", "type", "reach", "stack", "go"};
+  if (c.empty() || !kVerbs.count(c[0])) return false;
+  for (const std::string& w : c) {
+    auto t = TypeWords().find(w);
+    if ((t != TypeWords().end() && !t->second.empty()) || Colors().count(w) || w == "it" ||
+        w == "them" || w == "there" ||
+        std::any_of(w.begin(), w.end(), [](char ch) { return std::isdigit(ch) != 0; })) {
+      return false;
+    }
+  }
+  return true;
+}
+
 // an object alone, after an optional preposition ("the armchair", "on the stool", "it")
 bool IsObjectOnly(const Tokens& b) {
   size_t i = 0;
@@ -369,7 +385,9 @@ void JoinFragments(std::vector<ClauseWords>& clauses) {
     }
     if (k == 0) continue;
     Tokens& a = clauses[k - 1].words;
-    const bool join_verb = IsBareVerb(a) && IsObjectOnly(b);
+    // "go and sit. Then the box, touch with left hand": the box is the next clause's topic
+    const bool topic = k + 1 < clauses.size() && WantsObject(clauses[k + 1].words);
+    const bool join_verb = IsBareVerb(a) && IsObjectOnly(b) && !topic;
     const bool verb_after = IsObjectOnly(a) && IsBareVerb(b) && !IsBareVerb(a);
     const bool instrument = IsInstrument(b) && k + 1 == clauses.size();
     const bool regrasp = !a.empty() && a[0] == "grab" && b.size() == 2 && b[0] == "grab" &&
@@ -381,7 +399,8 @@ void JoinFragments(std::vector<ClauseWords>& clauses) {
     } else if (!regrasp) {
       // "sit on the sofa, then (on) the armchair": the verb before
       static const std::set<std::string> kRepeat = {"sit", "lie", "rest", "recline", "touch", "go"};
-      if (!a.empty() && kRepeat.count(a[0]) && IsObjectOnly(b) && b[0] != "it" && b[0] != "them") {
+      if (!topic && !a.empty() && kRepeat.count(a[0]) && IsObjectOnly(b) && b[0] != "it" &&
+          b[0] != "them") {
         b.insert(b.begin(), a[0]);
       }
       continue;

@@ -19,6 +19,17 @@ namespace simhuman::language::offline {
 /// forward", and drops a trailing purpose clause ("so the foot stays flat").
 Tokens Reword(const Tokens& raw);
 
+/// Spoken verb forms on raw words, before Reword (spoken.cc): reflexive placement ("set/put/lay
+/// yourself on X", "put yourself seated", "put you on the left side"), causatives ("let your
+/// hands rest on", "allow yourself to sink onto", "make both knees high"), "lay the hands on",
+/// the intensifier "right" ("lean right back"), encouragement ("go on,", "would you ever"),
+/// first-person asides that name no object ("I do hope ...", "I'm afraid ...", "My late husband
+/// ..."), "there" after a named object, a verbless "over to X", "hold it/that" (keep the pose),
+/// "until done", a recipe's "leave to rest ...", passives ("is then seated on", "the chair is
+/// walked to", "after which"), ", where it types", and an object as the subject of its own
+/// placing ("the ball goes on the box", "the block wants to sit on the cylinder": put).
+Tokens ReadSpokenForms(const Tokens& raw);
+
 /// A command that opens with a participle base ("Seated in the chair, place your right hand on
 /// your right knee"): the pose in the next clause joins the sit/lie step.
 void JoinParticipleBase(const Tokens& raw, std::vector<ClauseWords>& clauses);

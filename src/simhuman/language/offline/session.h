@@ -162,6 +162,10 @@ class Session {
   /// "see the armchair? sit in it": the object becomes "it"; "use the chair / the laptop": rest
   /// on it or type on it. t[i] is the verb.
   absl::Status NoticeOrUse(const Tokens& t, size_t i, const std::string& c);
+  /// A sentence that is only a noun phrase ("The chair. Sit on it.", "Red box, pick up.", "the
+  /// BOX." after a touch): the object becomes "it", no step. nullopt when t[i, ...) is no such
+  /// phrase (or the clause followed a bare "and": "sit on the chair and the sofa").
+  std::optional<absl::Status> Mention(const Tokens& t, size_t i, const std::string& c);
   absl::Status Go(const Tokens& t, size_t b, const std::string& c);
   absl::Status StandUp(const std::string& c);
   /// `in_pose`: the reach is a pose of the sit said in the same clause ("sit at the desk with

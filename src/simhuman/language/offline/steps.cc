@@ -141,6 +141,22 @@ absl::Status Session::AddLie(const CatalogObject& o) {
   return absl::OkStatus();
 }
 
+namespace {
+
+bool SamePairs(const ContactStep& a, const ContactStep& b) {
+  if (a.pairs.size() != b.pairs.size()) return false;
+  for (size_t k = 0; k < a.pairs.size(); ++k) {
+    const ContactPair &p = a.pairs[k], &q = b.pairs[k];
+    if (p.object != q.object || p.part != q.part || p.joint != q.joint || p.type != q.type ||
+        p.direction != q.direction || p.agent != q.agent) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 core::StatusOr<PlanResult> Session::Finish() {
   if (steps_.empty()) {
     return Invalid(
@@ -156,6 +172,12 @@ core::StatusOr<PlanResult> Session::Finish() {
       for (size_t k = 0; k < d.variant_texts.size(); ++k) {
         text += (k ? " and " : "") + d.variant_texts[k];
       }
+    }
+    // a step said twice in a row ("touch it. the BOX.", "put your hands on the keyboard; type")
+    // is held, not repeated
+    if (!out.chain.steps.empty() && !d.step.carry && !out.chain.steps.back().carry &&
+        out.explanation.back() == text && SamePairs(out.chain.steps.back(), d.step)) {
+      continue;
     }
     d.step.label = text;
     out.chain.steps.push_back(std::move(d.step));
