@@ -26,10 +26,12 @@ std::string DescribeSceneObjects(const core::SceneCatalog& scene) {
 namespace {
 
 // the rules: normalised words, clauses, one verb handler per clause
-core::StatusOr<PlanResult> PlanByRules(std::string_view command, const PlanContext& context) {
+core::StatusOr<PlanResult> PlanByRules(std::string_view command, const PlanContext& context,
+                                       offline::Tokens& read) {
   SH_ASSIGN_OR_RETURN(offline::Tokens raw, offline::Tokenize(offline::CodeToWords(command)));
   raw = offline::ReadSpokenForms(offline::ApplyCorrections(raw));
   offline::Tokens tokens = offline::Normalize(offline::CorrectTypos(offline::Reword(raw)));
+  read = tokens;
   SH_ASSIGN_OR_RETURN(std::vector<offline::ClauseWords> clauses,
                       offline::SplitMarkedClauses(tokens));
   // chatter (vocatives, labels, "good job", scene descriptions) is dropped unless it is all
@@ -56,8 +58,18 @@ core::StatusOr<PlanResult> PlanByRules(std::string_view command, const PlanConte
 core::StatusOr<PlanResult> OfflinePlanner::Plan(std::string_view command,
                                                 const PlanContext& context) {
   if (context.scene == nullptr) return offline::Invalid("no scene given to the planner");
-  core::StatusOr<PlanResult> rules = PlanByRules(command, context);
-  if (rules.ok() || rules.status().code() != absl::StatusCode::kInvalidArgument) return rules;
+  offline::Tokens read;
+  core::StatusOr<PlanResult> rules = PlanByRules(command, context, read);
+  if (rules.ok()) {
+    // a plan that leaves out an object or limb the command names may have misread a clause:
+    // the fallback's plan is taken when it leaves out fewer (ambiguity or refusal keeps the rules')
+    const int missing = offline::Uncovered(read, *rules, *context.scene);
+    if (missing == 0) return rules;
+    core::StatusOr<PlanResult> slots = offline::FallbackPlan(command, context);
+    if (slots.ok() && offline::Uncovered(read, *slots, *context.scene) < missing) return slots;
+    return rules;
+  }
+  if (rules.status().code() != absl::StatusCode::kInvalidArgument) return rules;
   // what the rules refuse is read again by slots (offline/fallback.h); when that finds no
   // clear meaning either, the rules' answer (what is not understood, what is) stands
   core::StatusOr<PlanResult> slots = offline::FallbackPlan(command, context);

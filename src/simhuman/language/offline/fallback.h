@@ -54,6 +54,11 @@ bool OpensObject(const std::string& w);
 core::StatusOr<std::vector<ClauseWords>> FallbackClauses(std::string_view command,
                                                          const core::SceneCatalog& scene);
 
+/// How many of the object types, object ids and limbs (hand, elbow, foot, knee) that `words`
+/// (normalised) name `plan` uses none of (coverage.cc); 0 for a plan with a carry step. The
+/// planner asks the fallback again when the rules' plan leaves something out.
+int Uncovered(const Tokens& words, const PlanResult& plan, const core::SceneCatalog& scene);
+
 /// Plans FallbackClauses() with the rules' Session; errors as FallbackClauses() and Session.
 core::StatusOr<PlanResult> FallbackPlan(std::string_view command, const PlanContext& context);
 

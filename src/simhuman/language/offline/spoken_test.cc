@@ -1,5 +1,5 @@
 // Unit tests of the spoken verb forms (spoken.cc), mentions, parts of the object in focus,
-// repeated steps: each unusual phrasing must plan as a
+// repeated steps and the coverage check (coverage.cc): each unusual phrasing must plan as a
 // plain phrasing the rules already read. The sentences are the test's own.
 
 #include <gtest/gtest.h>
@@ -7,6 +7,7 @@
 #include <string>
 
 #include "simhuman/language/offline/clauses.h"
+#include "simhuman/language/offline/fallback.h"
 #include "simhuman/language/offline/lexicon.h"
 #include "simhuman/language/offline/rewrite.h"
 #include "simhuman/language/offline_planner.h"
@@ -141,6 +142,19 @@ TEST(SpokenFormsTest, AFocusedObjectsPartAndARepeatedStep) {
   // an unknown action on an object the scene lacks stays refused
   EXPECT_EQ(PlanText("living_room", "plug the lamp in and sit on the sofa").rfind("error", 0),
             0u);
+}
+
+TEST(SpokenFormsTest, CoverageCountsWhatThePlanLeavesOut) {
+  Fixture f = Load("tabletop_demo");
+  OfflinePlanner planner;
+  core::StatusOr<PlanResult> r = planner.Plan("put the red box on the yellow box", f.context);
+  ASSERT_TRUE(r.ok()) << r.status();
+  EXPECT_EQ(Uncovered({"put", "box", "onto", "box"}, *r, f.catalog), 0);
+  EXPECT_EQ(Uncovered({"put", "box", "onto", "box", "then", "sphere", "onto", "cylinder"}, *r,
+                      f.catalog),
+            2);
+  EXPECT_EQ(Uncovered({"put", "box", "with", "your", "left", "hand"}, *r, f.catalog), 0);
+  EXPECT_EQ(Uncovered({"put", "box", "with", "your", "left", "foot"}, *r, f.catalog), 1);
 }
 
 }  // namespace
