@@ -93,6 +93,9 @@ absl::Status Session::SitOrLie(const Tokens& t, size_t b, SitMode mode, const st
     o = on_;  // "sit on the edge of the bed, then lie back"
   } else if (mode == SitMode::kRecline) {
     SH_ASSIGN_OR_RETURN(o, OnlyObjectWith({"seat surface", "back surface"}, "recline", c));
+  } else if (focus_ != nullptr && focus_ != on_ && on_ != nullptr &&
+             (HasPart(*focus_, part) || (!lie && HasPart(*focus_, "mattress")))) {
+    o = focus_;  // "sit on the bed's edge. Then the stool, go sit": the seat named since
   } else if (on_ != nullptr && (HasPart(*on_, part) || (!lie && HasPart(*on_, "mattress")))) {
     o = on_;
   } else if (const CatalogObject* seat = lie ? nullptr : SeatBy(focus_)) {

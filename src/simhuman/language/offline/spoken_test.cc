@@ -103,6 +103,8 @@ TEST(SpokenFormsTest, WordOrderAndIdioms) {
   ExpectSame("bedroom", "The chair. Sit on it, then left hand put on left knee.",
              "sit on the chair, then put your left hand on your left knee");
   ExpectSame("bedroom", "The bed, go and lie down.", "lie on the bed");
+  ExpectSame("living_room", "The sofa, sit down. The armchair, go sit.",
+             "sit on the sofa, then go to the armchair and sit on it");
   ExpectSame("office", "Chair, go and sit. Then the box, touch with right hand.",
              "go to the chair and sit, then touch the box with your right hand");
   ExpectSame("sit_demo", "lean right back in the chair", "sit on the chair and lean back");
