@@ -4,9 +4,10 @@
 /// model, most of them objects resting on the table or the seated body on its chair. ArmCollider
 /// lists once the geom pairs that can give a counted contact (MuJoCo's own filters: contype and
 /// conaffinity, excluded body pairs, a body and its parent, bodies welded together) and runs
-/// MuJoCo's narrow-phase functions (mjCOLLISIONFUNC, after its bounding-sphere test) on those
-/// alone, so it finds the same contacts of those pairs as mj_collision, for a fraction of the
-/// time (ArmCollisionTest compares both on many arm poses).
+/// MuJoCo's narrow-phase functions (mjCOLLISIONFUNC, after its bounding-sphere test, and for a
+/// box after testing the other geom's bounding sphere against the box) on those alone, so it
+/// finds the same contacts of those pairs as mj_collision, for a fraction of the time
+/// (ArmCollisionTest compares both on many arm poses).
 
 #include <mujoco/mujoco.h>
 
