@@ -229,7 +229,13 @@ absl::Status Session::Type(const Tokens& t, size_t b, const std::string& c) {
       SH_RETURN_IF_ERROR(AddSit(*seat));
     }
   }
-  AddSeatedReach(*o, "keyboard", {"left", "right"}, false);
+  // "type ... with your right hand": that hand only
+  std::vector<std::string> sides = {"left", "right"};
+  if (const size_t hand = Find(t, e, t.size(), {"hand"}); hand < t.size()) {
+    const std::string side = SideBefore(t, e, hand);
+    if (side == "left" || side == "right") sides = {side};
+  }
+  AddSeatedReach(*o, "keyboard", sides, false);
   return absl::OkStatus();
 }
 

@@ -319,6 +319,11 @@ size_t Short(const Tokens& raw, size_t i, Tokens& out) {
     out = {"your"};
     return 1;
   }
+  // "As a tester(,) I want ...": a user story's role, not a subject
+  if (w == "as" && (At(raw, i + 1) == "a" || At(raw, i + 1) == "an") &&
+      (At(raw, i + 3) == "i" || (At(raw, i + 3) == "then" && At(raw, i + 4) == "i"))) {
+    return 3;
+  }
   // "your two hands": both
   if (w == "two" && Body(At(raw, i + 1))) {
     out = {"both"};

@@ -97,6 +97,10 @@ TEST(SpokenFormsTest, WordsThatCarryNoAction) {
   ExpectSame("sit_demo", "Walk to the chair. Sit down. Leave to settle for ten minutes.",
              "walk to the chair, then sit down");
   ExpectSame("bedroom", "Would you ever lie on the bed there", "lie on the bed");
+  ExpectSame("tabletop_demo",
+             "As a tester I want you to stack the blue box on the red box and then the green "
+             "sphere on the yellow box",
+             "put the blue box on the red box, then put the green sphere on the yellow box");
 }
 
 TEST(SpokenFormsTest, WordOrderAndIdioms) {
@@ -144,6 +148,12 @@ TEST(SpokenFormsTest, AFocusedObjectsPartAndARepeatedStep) {
   // an unknown action on an object the scene lacks stays refused
   EXPECT_EQ(PlanText("living_room", "plug the lamp in and sit on the sofa").rfind("error", 0),
             0u);
+}
+
+TEST(SpokenFormsTest, TypingWithOneNamedHand) {
+  EXPECT_EQ(PlanText("office", "sit at the desk and type with your left hand"),
+            "chair002:seat surface:pelvis / chair002:seat surface:pelvis, "
+            "laptop001:keyboard:left hand");
 }
 
 TEST(SpokenFormsTest, CoverageCountsWhatThePlanLeavesOut) {
