@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "simhuman/control/arm_servo.h"
+#include "simhuman/control/rollout.h"
 #include "simhuman/core/rng.h"
 
 namespace simhuman::control {
@@ -14,10 +15,6 @@ namespace {
 
 constexpr int kDofs = world::kHumanoidDofs;
 constexpr double kRefTableDt = 0.02;
-
-double SmoothL1(double x, double delta) {
-  return x < delta ? 0.5 * x * x / delta : x - 0.5 * delta;
-}
 
 double Smoothstep(double x) {
   x = std::clamp(x, 0.0, 1.0);
@@ -233,12 +230,7 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
   const mjModel* m = plan_model_;
   mjData* d = thread_data_[thread];
   const world::AgentIndex& a = world_->agent(agent_);
-  d->time = start->time;
-  std::memcpy(d->qpos, start->qpos, sizeof(mjtNum) * m->nq);
-  std::memcpy(d->qvel, start->qvel, sizeof(mjtNum) * m->nv);
-  std::memcpy(d->qacc_warmstart, start->qacc_warmstart, sizeof(mjtNum) * m->nv);
-  std::memcpy(d->ctrl, start->ctrl, sizeof(mjtNum) * m->nu);
-  if (m->na) std::memcpy(d->act, start->act, sizeof(mjtNum) * m->na);
+  CopyRolloutStart(m, start, d);
 
   const int steps =
       std::max(1, static_cast<int>(std::lround(config_.horizon_s / config_.plan_dt_s)));

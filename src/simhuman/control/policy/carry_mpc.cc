@@ -2,18 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
+#include "simhuman/control/rollout.h"
 #include "simhuman/world/sim_world.h"
 
 namespace simhuman::control {
 namespace {
-
-double SmoothL1(double x, double delta) {
-  const double a = std::abs(x);
-  return a < delta ? 0.5 * a * a / delta : a - 0.5 * delta;
-}
 
 // Box lowest corner height wanted at phase `s` (m): on the floor until the rise, then rising to
 // 0.3 m by the end of the lift, and held at least that high while carrying.
@@ -53,12 +48,7 @@ void CarryMpc::ActionAt(const Knots& k, int step, int steps, float* a) const {
 double CarryMpc::Rollout(const mjData* start, const CarryState& s0, const Knots& k,
                          double* box_low) {
   mjData* d = d_;
-  d->time = start->time;
-  std::memcpy(d->qpos, start->qpos, sizeof(mjtNum) * m_->nq);
-  std::memcpy(d->qvel, start->qvel, sizeof(mjtNum) * m_->nv);
-  std::memcpy(d->qacc_warmstart, start->qacc_warmstart, sizeof(mjtNum) * m_->nv);
-  std::memcpy(d->ctrl, start->ctrl, sizeof(mjtNum) * m_->nu);
-  if (m_->na) std::memcpy(d->act, start->act, sizeof(mjtNum) * m_->na);
+  CopyRolloutStart(m_, start, d);
   CarryState s = s0;
   const world::AgentIndex& a = ix_.walk.agent;
   const double dt = kWalkSubsteps * m_->opt.timestep;
