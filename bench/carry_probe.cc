@@ -37,7 +37,7 @@ struct Args {
   double reach_depth = -1;
   double torsion = -1;    // >= 0: the box's torsional friction (condim 3 at 0)
   bool contacts = false;  // print every contact and its normal force
-  bool hold = false;  // start holding the box (the carry phase's reference-state start)
+  bool hold = false;      // start holding the box (the carry phase's reference-state start)
   int mpc = 0;            // > 0: the lift MPC with this many samples drives the action
   double mpc_sigma = -1, mpc_horizon = -1, mpc_whands = -1, mpc_wtrack = -1, mpc_wbal = -1;
   std::string policy, sheet;
@@ -289,11 +289,12 @@ int main(int argc, char** argv) {
     {
       const mjData* d = (*t)->data(0);
       const auto box = sh::control::ReadCarryBox(m, d, (*t)->box_geom());
-      std::printf("  end: %s, box highest in carry %.3f m, at the end %.3f m; box %.2f m from "
-                  "its destination (%.2f at the start)\n",
-                  end.c_str(), max_low, sh::control::BoxLowestZ(box),
-                  ((*t)->state(0).dest_xy - box.pos.head<2>()).norm(),
-                  ((*t)->state(0).dest_xy - box_pos.head<2>()).norm());
+      std::printf(
+          "  end: %s, box highest in carry %.3f m, at the end %.3f m; box %.2f m from "
+          "its destination (%.2f at the start)\n",
+          end.c_str(), max_low, sh::control::BoxLowestZ(box),
+          ((*t)->state(0).dest_xy - box.pos.head<2>()).norm(),
+          ((*t)->state(0).dest_xy - box_pos.head<2>()).norm());
     }
     if (!frames.empty()) {
       (void)sh::render::WriteContactSheet(a.sheet + "/lift" + std::to_string(ep) + ".png", frames,

@@ -70,7 +70,8 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
                 s->episodes, s->steps_per_s, s->raw_steps_per_s,
                 s->raw_steps_per_s > 0 ? s->steps_per_s / s->raw_steps_per_s : 0.0);
   out << buf << std::endl;
-  std::snprintf(buf, sizeof(buf), "per CPU second: pipeline %.0f steps, raw mj_step %.0f (ratio %.2f)",
+  std::snprintf(buf, sizeof(buf),
+                "per CPU second: pipeline %.0f steps, raw mj_step %.0f (ratio %.2f)",
                 s->cpu_steps_per_s, s->raw_cpu_steps_per_s,
                 s->raw_cpu_steps_per_s > 0 ? s->cpu_steps_per_s / s->raw_cpu_steps_per_s : 0.0);
   out << buf << std::endl;

@@ -100,8 +100,8 @@ int ArmCollider::Count(const mjData* d, const std::vector<int>& ignore_bodies,
         continue;
       }
     }
-    const int n = mjCOLLISIONFUNC[m_->geom_type[p.g1]][m_->geom_type[p.g2]](m_, d, con, p.g1,
-                                                                           p.g2, p.margin);
+    const int n =
+        mjCOLLISIONFUNC[m_->geom_type[p.g1]][m_->geom_type[p.g2]](m_, d, con, p.g1, p.g2, p.margin);
     int deep = 0;
     for (int c = 0; c < n; ++c) deep += !(con[c].dist > -tolerance_m);
     if (deep == 0) continue;

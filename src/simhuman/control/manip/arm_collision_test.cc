@@ -57,8 +57,7 @@ TEST(ArmCollisionTest, CountsWhatMjCollisionFindsForTheArmAndACarriedObjectInteg
     mjData* d = (*w)->data();
     const GraspIndex gi = *MakeGraspIndex(**w, 0, true);
     const ArmChain& arm = gi.arm;
-    const int obj =
-        mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName(ts->task.object_id).c_str());
+    const int obj = mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName(ts->task.object_id).c_str());
     const int obj_qpos = m->jnt_qposadr[m->body_jntadr[obj]];
     const ArmCollider alone(m, arm), carrying(m, arm, obj);
     EXPECT_GT(carrying.num_pairs(), alone.num_pairs());

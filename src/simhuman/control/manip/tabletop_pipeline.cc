@@ -1,12 +1,12 @@
 #include "simhuman/control/manip/tabletop_pipeline.h"
 
+#include <time.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
-
-#include <time.h>
 
 namespace simhuman::control::manip {
 

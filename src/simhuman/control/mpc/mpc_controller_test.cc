@@ -107,10 +107,10 @@ TEST(ReferencePoseTest, SitPoseTouchesTheSeatWithFeetOnTheFloor) {
 TEST(ReferencePoseTest, GettingUpDrawsTheFeetBackUnderTheKneesIntegration) {
   Fixture s = SitDemo();
   const std::string id = s.catalog.objects[0].id;
-  auto chain = plan::ParseAndGround("[[[\"" + id + "\", \"seat surface\", \"pelvis\", \"contact\", " +
-                                        "\"up\"]], [[\"" + id + "\", \"none\", \"none\", \"none\", " +
-                                        "\"front\"]]]",
-                                    "<test>", s.catalog);
+  auto chain = plan::ParseAndGround(
+      "[[[\"" + id + "\", \"seat surface\", \"pelvis\", \"contact\", " + "\"up\"]], [[\"" + id +
+          "\", \"none\", \"none\", \"none\", " + "\"front\"]]]",
+      "<test>", s.catalog);
   ASSERT_TRUE(chain.ok()) << chain.status();
   const mjModel* m = s.world->model();
   mjData* seated = mj_makeData(m);
@@ -142,7 +142,8 @@ TEST(ReferencePoseTest, GettingUpDrawsTheFeetBackUnderTheKneesIntegration) {
     const auto pts = s.world->BodyPoints(scratch, 0);
     for (int i = 0; i < 2; ++i) {
       // at most a few centimetres ahead of where the knee was (the anchor is 3 cm behind it)
-      EXPECT_LT((pts[feet[i]] - start[knees[i]]).dot(fwd), 0.04) << "rise " << rise << " foot " << i;
+      EXPECT_LT((pts[feet[i]] - start[knees[i]]).dot(fwd), 0.04)
+          << "rise " << rise << " foot " << i;
     }
   }
   mj_deleteData(seated);

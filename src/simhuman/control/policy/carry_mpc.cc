@@ -104,7 +104,8 @@ double CarryMpc::Rollout(const mjData* start, const CarryState& s0, const Knots&
       CarryHeldPoints(s, box, &held_l, &held_r);
       const Eigen::Vector3d hl(d->site_xpos + 3 * ix_.left_hand_site);
       const Eigen::Vector3d hr(d->site_xpos + 3 * ix_.right_hand_site);
-      c += o_.w_hands * (SmoothL1((hl - held_l).norm(), 0.03) + SmoothL1((hr - held_r).norm(), 0.03));
+      c += o_.w_hands *
+           (SmoothL1((hl - held_l).norm(), 0.03) + SmoothL1((hr - held_r).norm(), 0.03));
     }
     const double wanted = WantedBoxLow(s);
     if (wanted > 0) c += o_.w_box * std::max(0.0, wanted - low);
@@ -120,8 +121,8 @@ double CarryMpc::Rollout(const mjData* start, const CarryState& s0, const Knots&
     if (have_feet0_ && s.phase == CarryPhase::kLift) {
       const Eigen::Vector2d fl(d->geom_xpos[3 * lf], d->geom_xpos[3 * lf + 1]);
       const Eigen::Vector2d fr(d->geom_xpos[3 * rf], d->geom_xpos[3 * rf + 1]);
-      c += o_.w_feet * (SmoothL1((fl - feet0_[0]).norm(), 0.02) +
-                        SmoothL1((fr - feet0_[1]).norm(), 0.02));
+      c += o_.w_feet *
+           (SmoothL1((fl - feet0_[0]).norm(), 0.02) + SmoothL1((fr - feet0_[1]).norm(), 0.02));
     }
     double asq = 0;
     for (float x : act) asq += x * x;

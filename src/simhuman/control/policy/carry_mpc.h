@@ -19,19 +19,19 @@
 namespace simhuman::control {
 
 struct CarryMpcOptions {
-  int samples = 24;          ///< candidates per control step (the shifted best and zero included)
-  double horizon_s = 0.5;    ///< rollout length
-  int knots = 3;             ///< spline knots over the horizon (piecewise linear)
-  double sigma = 0.35;       ///< exploration noise, action units
-  double w_track = 2.0;      ///< hinge angles to the reference (rad^2)
-  double w_balance = 40.0;   ///< capture point to the feet's middle (m, smooth L1)
-  double w_hands = 30.0;     ///< hands to their held points while the phase holds (m)
-  double w_box = 60.0;       ///< box below its wanted height once the rise has begun (m)
-  double w_tilt = 10.0;      ///< box tilt (1 - cos)
-  double w_upright = 10.0;   ///< trunk tilt (1 - cos of pelvis-to-head with vertical)
-  double w_fall = 200.0;     ///< head below 0.9 m or pelvis below the squat
-  double w_action = 0.02;    ///< action size
-  double w_feet = 100.0;     ///< feet sliding or stepping from where the lift began (m)
+  int samples = 24;         ///< candidates per control step (the shifted best and zero included)
+  double horizon_s = 0.5;   ///< rollout length
+  int knots = 3;            ///< spline knots over the horizon (piecewise linear)
+  double sigma = 0.35;      ///< exploration noise, action units
+  double w_track = 2.0;     ///< hinge angles to the reference (rad^2)
+  double w_balance = 40.0;  ///< capture point to the feet's middle (m, smooth L1)
+  double w_hands = 30.0;    ///< hands to their held points while the phase holds (m)
+  double w_box = 60.0;      ///< box below its wanted height once the rise has begun (m)
+  double w_tilt = 10.0;     ///< box tilt (1 - cos)
+  double w_upright = 10.0;  ///< trunk tilt (1 - cos of pelvis-to-head with vertical)
+  double w_fall = 200.0;    ///< head below 0.9 m or pelvis below the squat
+  double w_action = 0.02;   ///< action size
+  double w_feet = 100.0;    ///< feet sliding or stepping from where the lift began (m)
   uint64_t seed = 1;
 };
 

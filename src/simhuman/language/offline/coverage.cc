@@ -49,7 +49,8 @@ int Uncovered(const Tokens& words, const PlanResult& plan, const core::SceneCata
     auto t = TypeWords().find(w);
     if (t != TypeWords().end() && !t->second.empty()) {
       bool in_scene = false, used = false;
-      for (const CatalogObject& o : scene.objects) in_scene = in_scene || TypeFits(t->second, o.type);
+      for (const CatalogObject& o : scene.objects)
+        in_scene = in_scene || TypeFits(t->second, o.type);
       for (const std::string& u : types) used = used || TypeFits(t->second, u);
       if (in_scene && !used) missing.insert(t->second);
     } else if (scene.Find(w) != nullptr && !ids.count(w)) {

@@ -284,7 +284,7 @@ bool IsBareVerb(const Tokens& a) {
 
 // a clause that starts with a verb and names no object ("touch with left hand", "pick up")
 bool WantsObject(const Tokens& c) {
-  static const std::set<std::string> kVerbs = {"sit", "lie",  "rest", "touch", "grab",
+  static const std::set<std::string> kVerbs = {"sit", "lie",  "rest",  "touch", "grab",
                                                "put", "type", "reach", "stack", "go"};
   if (c.empty() || !kVerbs.count(c[0])) return false;
   for (const std::string& w : c) {

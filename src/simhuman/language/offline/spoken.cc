@@ -46,9 +46,9 @@ const std::set<std::string>& Places() {
 // "set yourself on", "put yourself seated", "lay yourself down", "put you on the left side" at
 // raw[i]: the words it stands for and its length (0: none)
 size_t Reflexive(const Tokens& raw, size_t i, Tokens& out) {
-  static const std::set<std::string> kPlace = {"set",  "put",    "place", "plant", "park",
-                                               "lay",  "sit",    "lie",   "plonk", "plop",
-                                               "pop",  "settle", "position"};
+  static const std::set<std::string> kPlace = {"set", "put",    "place",   "plant", "park",
+                                               "lay", "sit",    "lie",     "plonk", "plop",
+                                               "pop", "settle", "position"};
   const std::string& v = raw[i];
   const std::string self = At(raw, i + 1);
   if (!kPlace.count(v) || !(self == "yourself" || (self == "you" && v == "put"))) return 0;
@@ -88,8 +88,8 @@ size_t Causative(const Tokens& raw, size_t i, Tokens& out) {
   Tokens body;
   while (k < raw.size() && k < i + 5 &&
          (Body(raw[k]) || raw[k] == "both" || raw[k] == "the" || raw[k] == "left" ||
-          raw[k] == "right" || (raw[k] == "back" && (At(raw, k - 1) == "your" ||
-                                                     At(raw, k - 1) == "the")))) {
+          raw[k] == "right" ||
+          (raw[k] == "back" && (At(raw, k - 1) == "your" || At(raw, k - 1) == "the")))) {
     body.push_back(raw[k] == "the" ? "your" : raw[k]);
     ++k;
   }
@@ -97,8 +97,8 @@ size_t Causative(const Tokens& raw, size_t i, Tokens& out) {
   for (const std::string& w : body) named = named || (Body(w) && w != "your") || w == "back";
   if (!named) return 0;
   if (At(raw, k) == "to") ++k;
-  static const std::set<std::string> kRest = {"rest",  "lie",  "sit",   "hang",  "sink", "fall",
-                                              "relax", "stay", "drop",  "settle", "go",  "be"};
+  static const std::set<std::string> kRest = {"rest",  "lie",  "sit",  "hang",   "sink", "fall",
+                                              "relax", "stay", "drop", "settle", "go",   "be"};
   static const std::set<std::string> kHigh = {"high", "higher", "up", "rise"};
   if (v == "make" ? !kHigh.count(At(raw, k)) : !kRest.count(At(raw, k))) return 0;
   if (v == "make") {
@@ -171,8 +171,8 @@ size_t ObjectSubject(const Tokens& raw, size_t i, Tokens& out) {
     static const std::set<std::string> kGo = {"goes", "go", "belongs", "belong"};
     static const std::set<std::string> kSit = {"sit", "sits", "rest", "rests"};
     sit_like = kSit.count(At(raw, e)) > 0;
-    if ((kGo.count(At(raw, e)) || (sit_like && Movable(w))) && !Subjects().count(w) &&
-        !Body(w) && (Places().count(At(raw, e + 1)) || At(raw, e + 1) == "next")) {
+    if ((kGo.count(At(raw, e)) || (sit_like && Movable(w))) && !Subjects().count(w) && !Body(w) &&
+        (Places().count(At(raw, e + 1)) || At(raw, e + 1) == "next")) {
       out = {"put"};
       out.insert(out.end(), raw.begin() + static_cast<long>(i),
                  raw.begin() + static_cast<long>(k + 1));
@@ -210,7 +210,8 @@ size_t EmptyClause(const Tokens& raw, size_t i) {
   bool polite = false;
   for (size_t k = i; k < e; ++k) polite = polite || kPolite.count(raw[k]) > 0;
   if (w == "if" && polite && !NamesSomething(raw, i, e)) return e - i;
-  if ((w == "forgive" || w == "excuse" || w == "pardon") && !NamesSomething(raw, i, e)) return e - i;
+  if ((w == "forgive" || w == "excuse" || w == "pardon") && !NamesSomething(raw, i, e))
+    return e - i;
   if (w == "feel" && (At(raw, i + 1) == "how" || !NamesSomething(raw, i + 1, e))) return e - i;
   if (w == "leave" && At(raw, i + 1) == "to") return ClauseEnd(raw, i) == i ? 0 : e - i;
   return 0;
@@ -267,9 +268,9 @@ size_t Short(const Tokens& raw, size_t i, Tokens& out) {
   const std::string p = i > 0 ? raw[i - 1] : std::string("then");
   out = {};
   // "lean right back", "sink right down into it": "right" is an intensifier there
-  static const std::set<std::string> kDirection = {"back", "down", "on",   "onto", "in",
+  static const std::set<std::string> kDirection = {"back", "down", "on",   "onto",   "in",
                                                    "into", "up",   "over", "across", "forward"};
-  static const std::set<std::string> kNotAfter = {"your", "the", "my",  "his",  "her",
+  static const std::set<std::string> kNotAfter = {"your", "the",  "my",   "his",  "her",
                                                   "and",  "then", "both", "left", "their"};
   if (w == "right" && kDirection.count(At(raw, i + 1)) && !kNotAfter.count(p)) return 1;
   // "go on, sit down", "ah go on and sit": encouragement, not a walk
@@ -279,7 +280,8 @@ size_t Short(const Tokens& raw, size_t i, Tokens& out) {
   // "lie on the bed there", "the desk there": "there" points at the object just named
   const bool named = TypeWords().count(Canonical(p)) > 0 || p == "yoke";
   if (w == "there" && i > 0 &&
-      ((named && Break(raw, i + 1)) || (Places().count(At(raw, i + 1)) && At(raw, i + 1) != "down")))
+      ((named && Break(raw, i + 1)) ||
+       (Places().count(At(raw, i + 1)) && At(raw, i + 1) != "down")))
     return 1;
   // "would you ever ...": a polite request; "have a go on the armchair": try it out
   if (w == "ever" && p == "you") return 1;
@@ -345,7 +347,8 @@ size_t Short(const Tokens& raw, size_t i, Tokens& out) {
     return At(raw, i + 1) == "then" ? 3 : 2;
   }
   // ", where it types": and types
-  if (w == "where" && (At(raw, i + 1) == "it" || At(raw, i + 1) == "he" || At(raw, i + 1) == "she")) {
+  if (w == "where" &&
+      (At(raw, i + 1) == "it" || At(raw, i + 1) == "he" || At(raw, i + 1) == "she")) {
     out = {"and"};
     return 2;
   }
@@ -400,7 +403,7 @@ size_t Short(const Tokens& raw, size_t i, Tokens& out) {
     return 3;
   }
   if (w == "writing" && TypeWord(At(raw, i + 1))) return 1;  // "the writing desk"
-  if (w == "border" || w == "rim") {  // "the border of the bed"
+  if (w == "border" || w == "rim") {                         // "the border of the bed"
     out = {"edge"};
     return 1;
   }

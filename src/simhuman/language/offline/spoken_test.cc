@@ -53,9 +53,7 @@ std::string PlanText(const std::string& scene, const std::string& command) {
   return out;
 }
 
-std::string Spoken(const std::string& command) {
-  return Join(ReadSpokenForms(*Tokenize(command)));
-}
+std::string Spoken(const std::string& command) { return Join(ReadSpokenForms(*Tokenize(command))); }
 
 // `said` plans exactly as `plain` does, and `plain` plans
 void ExpectSame(const std::string& scene, const std::string& said, const std::string& plain) {
@@ -72,8 +70,7 @@ TEST(SpokenFormsTest, ReflexiveAndCausativeVerbs) {
   EXPECT_EQ(Spoken("make your knees higher"), "raise your knees");
   ExpectSame("bedroom", "Park yourself on the chair, then let both hands rest on your knees.",
              "sit on the chair, then put both hands on your knees");
-  ExpectSame("sit_demo", "Allow yourself to sink down into the chair",
-             "sit on the chair");
+  ExpectSame("sit_demo", "Allow yourself to sink down into the chair", "sit on the chair");
   ExpectSame("living_room", "lay yourself on the bed and put yourself on your right side",
              "lie on the bed and turn onto your right side");
   ExpectSame("living_room", "lay yourself on the bed, make your knees high",
@@ -146,8 +143,7 @@ TEST(SpokenFormsTest, AFocusedObjectsPartAndARepeatedStep) {
   ExpectSame("bedroom", "lie on the bed. do not sit on the chair.", "lie on the bed");
   EXPECT_EQ(PlanText("bedroom", "Please do not lie on the bed.").rfind("error", 0), 0u);
   // an unknown action on an object the scene lacks stays refused
-  EXPECT_EQ(PlanText("living_room", "plug the lamp in and sit on the sofa").rfind("error", 0),
-            0u);
+  EXPECT_EQ(PlanText("living_room", "plug the lamp in and sit on the sofa").rfind("error", 0), 0u);
 }
 
 TEST(SpokenFormsTest, TypingWithOneNamedHand) {
@@ -162,9 +158,9 @@ TEST(SpokenFormsTest, CoverageCountsWhatThePlanLeavesOut) {
   core::StatusOr<PlanResult> r = planner.Plan("put the red box on the yellow box", f.context);
   ASSERT_TRUE(r.ok()) << r.status();
   EXPECT_EQ(Uncovered({"put", "box", "onto", "box"}, *r, f.catalog), 0);
-  EXPECT_EQ(Uncovered({"put", "box", "onto", "box", "then", "sphere", "onto", "cylinder"}, *r,
-                      f.catalog),
-            2);
+  EXPECT_EQ(
+      Uncovered({"put", "box", "onto", "box", "then", "sphere", "onto", "cylinder"}, *r, f.catalog),
+      2);
   EXPECT_EQ(Uncovered({"put", "box", "with", "your", "left", "hand"}, *r, f.catalog), 0);
   EXPECT_EQ(Uncovered({"put", "box", "with", "your", "left", "foot"}, *r, f.catalog), 1);
 }
