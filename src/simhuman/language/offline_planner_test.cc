@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "simhuman/language/offline/planner_testing.h"
 #include "simhuman/language/offline/rewrite.h"
 #include "simhuman/world/scene.h"
 #include "simhuman/world/tabletop.h"
@@ -20,22 +21,8 @@ int EditDistanceForTest(const std::string& a, const std::string& b) {
   return offline::EditDistance(a, b);
 }
 
-struct Fixture {
-  world::SceneSpec spec;
-  core::SceneCatalog catalog;
-  PlanContext context;
-};
-
-Fixture Load(const std::string& scene) {
-  Fixture f;
-  f.spec = *world::LoadScene(scene);
-  f.catalog = *world::BuildCatalog(f.spec);
-  f.context.scene = &f.catalog;
-  for (const world::HumanSpec& h : f.spec.humans) {
-    f.context.agents.push_back({h.pos_xy.x(), h.pos_xy.y(), h.yaw_rad, h.posture});
-  }
-  return f;
-}
+using Fixture = testing::SceneFixture;
+Fixture Load(const std::string& scene) { return testing::LoadScene(scene); }
 
 // "object|part|joint|contact|direction" per pair, steps separated by " / "
 std::string Compact(const plan::ContactChain& chain) {

@@ -10,30 +10,16 @@
 #include <vector>
 
 #include "simhuman/language/offline/lexicon.h"
+#include "simhuman/language/offline/planner_testing.h"
 #include "simhuman/language/offline_planner.h"
-#include "simhuman/world/scene.h"
 
 namespace simhuman::language::offline {
 namespace {
 
 using ::testing::HasSubstr;
 
-struct Fixture {
-  world::SceneSpec spec;
-  core::SceneCatalog catalog;
-  PlanContext context;
-};
-
-Fixture Load(const std::string& scene) {
-  Fixture f;
-  f.spec = *world::LoadScene(scene);
-  f.catalog = *world::BuildCatalog(f.spec);
-  f.context.scene = &f.catalog;
-  for (const world::HumanSpec& h : f.spec.humans) {
-    f.context.agents.push_back({h.pos_xy.x(), h.pos_xy.y(), h.yaw_rad, h.posture});
-  }
-  return f;
-}
+using Fixture = testing::SceneFixture;
+Fixture Load(const std::string& scene) { return testing::LoadScene(scene); }
 
 // the fallback's clauses: " | " before a sequenced clause, " & " before a coordinated one
 std::string Clauses(const std::string& scene, const std::string& command) {
@@ -48,24 +34,8 @@ std::string Clauses(const std::string& scene, const std::string& command) {
   return out;
 }
 
-// the planner's answer: one "object:part:joint" per pair, steps separated by " / "
 std::string PlanText(const std::string& scene, const std::string& command) {
-  Fixture f = Load(scene);
-  OfflinePlanner planner;
-  core::StatusOr<PlanResult> r = planner.Plan(command, f.context);
-  if (!r.ok()) return "error: " + std::string(r.status().message());
-  std::string out;
-  for (const plan::ContactStep& s : r->chain.steps) {
-    if (!out.empty()) out += " / ";
-    std::string step;
-    for (const plan::ContactPair& p : s.pairs) {
-      if (!step.empty()) step += ", ";
-      step += p.object + ":" + p.part + ":" +
-              (p.joint ? std::string(core::BodyJointName(*p.joint)) : "none");
-    }
-    out += step;
-  }
-  return out;
+  return testing::PlanPairs(scene, command);
 }
 
 absl::StatusCode Code(const std::string& scene, const std::string& command) {

@@ -9,48 +9,18 @@
 #include "simhuman/language/offline/clauses.h"
 #include "simhuman/language/offline/fallback.h"
 #include "simhuman/language/offline/lexicon.h"
+#include "simhuman/language/offline/planner_testing.h"
 #include "simhuman/language/offline/rewrite.h"
 #include "simhuman/language/offline_planner.h"
-#include "simhuman/world/scene.h"
 
 namespace simhuman::language::offline {
 namespace {
 
-struct Fixture {
-  world::SceneSpec spec;
-  core::SceneCatalog catalog;
-  PlanContext context;
-};
+using Fixture = testing::SceneFixture;
+Fixture Load(const std::string& scene) { return testing::LoadScene(scene); }
 
-Fixture Load(const std::string& scene) {
-  Fixture f;
-  f.spec = *world::LoadScene(scene);
-  f.catalog = *world::BuildCatalog(f.spec);
-  f.context.scene = &f.catalog;
-  for (const world::HumanSpec& h : f.spec.humans) {
-    f.context.agents.push_back({h.pos_xy.x(), h.pos_xy.y(), h.yaw_rad, h.posture});
-  }
-  return f;
-}
-
-// the plan as "object:part:joint" pairs, steps separated by " / "; "error: ..." when refused
 std::string PlanText(const std::string& scene, const std::string& command) {
-  Fixture f = Load(scene);
-  OfflinePlanner planner;
-  core::StatusOr<PlanResult> r = planner.Plan(command, f.context);
-  if (!r.ok()) return "error: " + std::string(r.status().message());
-  std::string out;
-  for (const plan::ContactStep& s : r->chain.steps) {
-    if (!out.empty()) out += " / ";
-    std::string step;
-    for (const plan::ContactPair& p : s.pairs) {
-      if (!step.empty()) step += ", ";
-      step += p.object + ":" + p.part + ":" +
-              (p.joint ? std::string(core::BodyJointName(*p.joint)) : "none");
-    }
-    out += step;
-  }
-  return out;
+  return testing::PlanPairs(scene, command);
 }
 
 std::string Spoken(const std::string& command) { return Join(ReadSpokenForms(*Tokenize(command))); }
