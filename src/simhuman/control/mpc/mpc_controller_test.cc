@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "simhuman/control/runner.h"
 #include "simhuman/plan/validate.h"
@@ -183,6 +184,85 @@ TEST(ReferencePoseTest, SitsNoDeeperThanAQuarterMetreOnADeepSofa) {
   EXPECT_GT(behind_edge, 0.15);
   EXPECT_GT(pelvis.z(), o.pose.pos.z() + hi.z());  // on the seat, not in it
   mj_deleteData(scratch);
+}
+
+// bedroom's bed (pillow at world y -0.95..-0.55, x 2.2..2.8, top at 0.62 m) and one human at
+// the walk point of a get-close step before lying on it (1.4 m in front, back to the bed); the
+// step lies down with `hand` on the pillow
+struct LieScene {
+  Fixture s;
+  plan::ContactChain lie;  // the lying step alone
+  StepTask task;
+};
+
+LieScene BedroomLieWithHand(const std::string& hand) {
+  LieScene out;
+  auto spec = world::LoadScene("bedroom");
+  EXPECT_TRUE(spec.ok()) << spec.status();
+  auto cat = world::BuildCatalog(*spec);
+  EXPECT_TRUE(cat.ok()) << cat.status();
+  out.s.catalog = *cat;
+  const std::string lie =
+      "[[\"bed000\", \"mattress\", \"pelvis\", \"contact\", \"up\"], "
+      "[\"bed000\", \"pillow\", \"head\", \"contact\", \"up\"], "
+      "[\"bed000\", \"pillow\", \"" +
+      hand + "\", \"contact\", \"none\"]]";
+  auto both =
+      plan::ParseAndGround("[[[\"bed000\", \"none\", \"none\", \"none\", \"front\"]], " + lie + "]",
+                           "<test>", out.s.catalog);
+  EXPECT_TRUE(both.ok()) << both.status();
+  StepTask gc = BuildStepTask(both->steps[0], out.s.catalog, 0, 1.0, plan::PairParams());
+  out.task = BuildStepTask(both->steps[1], out.s.catalog, 0, 1.0, plan::PairParams());
+  RefineApproach(out.task, 1.0, &gc);
+  auto w = world::SimWorld::Create(out.s.catalog,
+                                   {{gc.walk_point.x(), gc.walk_point.y(), gc.walk_yaw_rad, 1.0}});
+  EXPECT_TRUE(w.ok()) << w.status();
+  out.s.world = std::move(w).value();
+  auto chain = plan::ParseAndGround("[" + lie + "]", "<test>", out.s.catalog);
+  EXPECT_TRUE(chain.ok()) << chain.status();
+  out.lie = *chain;
+  return out;
+}
+
+// lying with a hand on the pillow, the reference rests the hand on the pillow's top (the arm
+// over the head), at touching distance; from the arms at the sides the solve stopped beside the
+// pillow's corner at mattress level, 2.3 cm short of touching, and the lying body lost it
+TEST(ReferencePoseTest, LyingHandOnThePillowRestsOnItsTopIntegration) {
+  for (const char* hand : {"left hand", "right hand"}) {
+    LieScene l = BedroomLieWithHand(hand);
+    ASSERT_EQ(l.task.posture, Posture::kLieBack);
+    const world::SimWorld& w = *l.s.world;
+    mjData* scratch = mj_makeData(w.model());
+    ReferencePose ref = SolveReferencePose(w, 0, l.task, w.data(), scratch);
+    SetAgentPose(w.agent(0), ref, scratch);
+    mj_kinematics(w.model(), scratch);
+    const auto pts = w.BodyPoints(scratch, 0);
+    const ContactTerm& t = l.task.terms.back();
+    const Eigen::Vector3d p = pts[static_cast<int>(t.joint)];
+    const double dist = (p - t.Nearest(p, pts)).norm();
+    EXPECT_NEAR(dist, BodyPointClearance(t.joint), 0.01) << hand;
+    auto [lo, hi] = core::ShapesBounds(t.part->shapes);
+    EXPECT_GT(p.z(), t.object->pose.pos.z() + hi.z()) << hand << ": beside the pillow, not on it";
+    mj_deleteData(scratch);
+  }
+}
+
+// the MPC lies down from the walk point and keeps the left hand on the pillow: the plan
+// completes and 3 s later the hand is still within the contact threshold
+TEST(MpcControllerTest, LiesWithTheLeftHandOnThePillowSlow) {
+  LieScene l = BedroomLieWithHand("left hand");
+  auto ctl = MpcController::Create(l.s.world.get(), 0, *MpcConfig::Preset("fast"), 1);
+  ASSERT_TRUE(ctl.ok()) << ctl.status();
+  RunOptions ro;
+  ro.record = false;
+  ro.settle_s = 3.0;
+  EpisodeResult r = RunEpisode(*l.s.world, l.lie, {ctl->get()}, ro, nullptr);
+  EXPECT_TRUE(r.success) << r.end_reason;
+  EXPECT_FALSE(r.fell);
+  const auto pts = l.s.world->BodyPoints(l.s.world->data(), 0);
+  const ContactTerm& t = l.task.terms.back();
+  const Eigen::Vector3d p = pts[static_cast<int>(t.joint)];
+  EXPECT_LT((p - t.Nearest(p, pts)).norm(), 0.1);
 }
 
 TEST(MpcControllerTest, SameSeedSameTrajectoryWithOneOrTwoThreadsIntegration) {

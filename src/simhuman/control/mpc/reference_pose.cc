@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace simhuman::control {
 namespace {
@@ -404,6 +406,40 @@ void SetUpLie(const StepTask& task, const Start& st, double s, Problem* pr, Vars
   pr->feet_on_floor = false;
 }
 
+// Lying, a hand whose target is nearer the head than the pelvis (a hand on the pillow, on the
+// headboard, behind the head) starts, and is anchored, with the arm raised over the head, as
+// a person puts it there. From the arms at the sides the solve otherwise stops where the hand
+// first grazes the target's side at mattress level (a pillow's corner, 2-3 cm short of touching),
+// which any shift of the lying body loses.
+void RaiseArmsTowardHead(const StepTask& task, Problem* pr, Vars* v) {
+  if (task.posture != Posture::kLieBack && task.posture != Posture::kLieSide) return;
+  Apply(*pr, *v, pr->d);
+  std::array<Eigen::Vector3d, core::kNumBodyJoints> pts;
+  for (int i = 0; i < core::kNumBodyJoints; ++i) {
+    const mjtNum* x = pr->d->site_xpos + 3 * pr->a->site[i];
+    pts[i] = Eigen::Vector3d(x[0], x[1], x[2]);
+  }
+  const Eigen::Vector3d& head = pts[static_cast<int>(core::BodyJoint::kHead)];
+  const Eigen::Vector3d& pelvis = pts[static_cast<int>(core::BodyJoint::kPelvis)];
+  for (const ContactTerm& t : task.terms) {
+    if (t.type != plan::ContactType::kContact) continue;
+    const bool left = t.joint == core::BodyJoint::kLeftHand;
+    if (!left && t.joint != core::BodyJoint::kRightHand) continue;
+    const Eigen::Vector3d target = t.Nearest(pts[static_cast<int>(t.joint)], pts);
+    if ((target - head).norm() >= (target - pelvis).norm()) continue;
+    const std::string s = left ? "left_" : "right_";
+    // overhead, elbow half bent: the hand comes to rest on top of the pillow above the head
+    for (auto [n, deg] : {std::pair<const char*, double>{"shoulder_y", 160},
+                          {"shoulder_x", 20},
+                          {"shoulder_z", 0},
+                          {"elbow", 45}}) {
+      const int j = JointIndex((s + n).c_str());
+      pr->base[j] = deg * kDeg;
+      v->h[j] = deg * kDeg;
+    }
+  }
+}
+
 // the problem's posture, anchors and first guess for the task (or the rise phase), then the
 // warm start when there is one
 void SetUpProblem(const StepTask& task, const ReferencePoseOptions& options, const Start& st,
@@ -426,6 +462,7 @@ void SetUpProblem(const StepTask& task, const ReferencePoseOptions& options, con
     case Posture::kLieBack:
     case Posture::kLieSide:
       SetUpLie(task, st, s, pr, v);
+      RaiseArmsTowardHead(task, pr, v);
       break;
   }
 
