@@ -5,7 +5,7 @@
 //   build/simhuman_carry_probe [--episodes N] [--seed S] [--side M] [--mass KG]
 //                              [--policy FILE] [--seconds T] [--sheet DIR]
 //                              [--stand-gap M] [--grasp-frac F] [--reach-depth M] [--pose-at T]
-//                              [--torsion M] [--contacts 1]
+//                              [--torsion M] [--contacts 1] [--grip 1] [--gait human]
 //                              [--mpc SAMPLES] [--mpc-sigma S] [--mpc-horizon T]
 #include <torch/torch.h>
 
@@ -38,6 +38,8 @@ struct Args {
   double torsion = -1;    // >= 0: the box's torsional friction (condim 3 at 0)
   bool contacts = false;  // print every contact and its normal force
   bool hold = false;      // start holding the box (the carry phase's reference-state start)
+  bool grip = false;      // the hands grip the box while they hold it ("humanoid_grip")
+  std::string gait;       // the walking reference gait (control::WalkGait)
   int mpc = 0;            // > 0: the lift MPC with this many samples drives the action
   double mpc_sigma = -1, mpc_horizon = -1, mpc_whands = -1, mpc_wtrack = -1, mpc_wbal = -1;
   std::string policy, sheet;
@@ -78,6 +80,10 @@ Args Parse(int argc, char** argv) {
       a.torsion = std::atof(v);
     else if (k == "--hold")
       a.hold = std::atoi(v) != 0;
+    else if (k == "--grip")
+      a.grip = std::atoi(v) != 0;
+    else if (k == "--gait")
+      a.gait = v;
     else if (k == "--mpc")
       a.mpc = std::atoi(v);
     else if (k == "--mpc-sigma")
@@ -149,8 +155,11 @@ int main(int argc, char** argv) {
     }
     pol = std::move(*p);
   }
-  auto t = sh::learn::CarryTask::Create(1);
-  if (!t.ok()) return 1;
+  auto t = sh::learn::CarryTask::Create(1, a.gait, a.grip);
+  if (!t.ok()) {
+    std::fprintf(stderr, "%s\n", std::string(t.status().message()).c_str());
+    return 1;
+  }
   (*t)->SetEvaluation(100000);
   if (a.stand_gap >= 0) (*t)->params().stand_gap_m = a.stand_gap;
   if (a.grasp_frac >= 0) (*t)->params().grasp_frac = a.grasp_frac;

@@ -48,9 +48,11 @@ const char* CarryFailureName(CarryFailure f) {
   return "?";
 }
 
-core::StatusOr<std::unique_ptr<CarryTask>> CarryTask::Create(int num_envs) {
+core::StatusOr<std::unique_ptr<CarryTask>> CarryTask::Create(int num_envs, std::string_view gait,
+                                                             bool grip) {
   if (num_envs <= 0) return absl::InvalidArgumentError("carry task: --envs must be positive");
   std::unique_ptr<CarryTask> t(new CarryTask());
+  SH_ASSIGN_OR_RETURN(t->params_.walk, control::WalkGait(gait));
   world::ObjectSpec box;
   box.id = "box000";
   box.type = "box";
@@ -62,7 +64,9 @@ core::StatusOr<std::unique_ptr<CarryTask>> CarryTask::Create(int num_envs) {
   scene.objects.push_back(obj);
   world::ModelOptions opt;
   opt.timestep_s = control::kWalkPhysicsDt;
-  SH_ASSIGN_OR_RETURN(t->world_, world::SimWorld::Create(scene, {world::AgentSpec()}, opt));
+  world::AgentSpec agent;
+  if (grip) agent.kind = "humanoid_grip";
+  SH_ASSIGN_OR_RETURN(t->world_, world::SimWorld::Create(scene, {agent}, opt));
   SH_ASSIGN_OR_RETURN(t->ix_, control::MakeCarryIndex(*t->world_, 0));
   mjModel* m = t->world_->mutable_model();
   m->nconmax = 96;
@@ -131,7 +135,7 @@ void CarryTask::SetBox(int i, double side_m, double mass_kg, const Eigen::Vector
   e.s = control::CarryState();
   e.s.walk.phase = e.rng.Uniform();
   control::BeginCarry(params_, ix_, d, box, dest_xy, &e.s);
-  control::UpdateWalkCommand(control::WalkParams(), d, ix_.walk, &e.s.walk);
+  control::UpdateWalkCommand(params_.walk, d, ix_.walk, &e.s.walk);
   e.steps = e.done_hold = 0;
   e.success = false;
   e.failure = CarryFailure::kNone;
@@ -143,7 +147,7 @@ void CarryTask::StartLiftNow(int i, float* obs, double pose_at_s) {
   control::CarryBox box = control::ReadCarryBox(e.m, e.d, box_geom_);
   control::StartLift(params_, e.m, e.scratch, e.d, ix_, box, &e.s);
   if (pose_at_s >= 0) control::PoseInLift(e.m, e.d, ix_, pose_at_s, &e.s);
-  control::UpdateWalkCommand(control::WalkParams(), e.d, ix_.walk, &e.s.walk);
+  control::UpdateWalkCommand(params_.walk, e.d, ix_.walk, &e.s.walk);
   control::CarryObservation(e.d, ix_, e.s, box, obs);
 }
 
@@ -194,7 +198,7 @@ void CarryTask::StartHoldingNow(int i, float* obs) {
   for (int k = 0; k < 3; ++k) d->qpos[box_qpos_ + k] = centre[k] + body_off[k];
   mj_forward(e.m, d);
   box = control::ReadCarryBox(e.m, d, box_geom_);
-  control::UpdateWalkCommand(control::WalkParams(), d, ix_.walk, &e.s.walk);
+  control::UpdateWalkCommand(params_.walk, d, ix_.walk, &e.s.walk);
   control::CarryObservation(d, ix_, e.s, box, obs);
 }
 
@@ -361,6 +365,7 @@ void CarryTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   const world::AgentIndex& a = ix_.walk.agent;
   double ctrl[kWalkActDim];
   control::CarryTargets(ix_, e.s, action, ctrl);
+  control::SetCarryGrip(ix_, e.s, d);
   double power = 0;
   for (int k = 0; k < control::kWalkSubsteps; ++k) {
     for (int j = 0; j < kWalkActDim; ++j) d->ctrl[a.actuator[j]] = ctrl[j];

@@ -39,7 +39,11 @@ const char* CarryFailureName(CarryFailure f);
 
 class CarryTask : public VecTask {
  public:
-  static core::StatusOr<std::unique_ptr<CarryTask>> Create(int num_envs);
+  /// `gait`: the walking reference gait (control::WalkGait name) of the walking policy the
+  /// carry policy starts from. `grip`: the human's hands grip what they touch (the
+  /// "humanoid_grip" kind, world::HumanoidSpec::grip_n) while they hold the box.
+  static core::StatusOr<std::unique_ptr<CarryTask>> Create(int num_envs, std::string_view gait = "",
+                                                           bool grip = false);
   ~CarryTask() override;
 
   std::string name() const override { return "carry"; }

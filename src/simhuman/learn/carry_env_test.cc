@@ -183,6 +183,14 @@ TEST(CarryTask, InitFromTheWalkingPolicyWidensItsInputAndZeroesItsArms) {
   cfg.threads = 1;
   cfg.hidden = w->meta.hidden;
   cfg.init_from = walk;
+  // the carry task must walk the gait the walking policy learned, and says so when it does not
+  cfg.walk_gait = w->meta.variant == "human" ? "" : "human";
+  auto other_gait = PpoTrainer::Create(cfg, core::testing::UniqueTempPath("carry_init_gait"));
+  ASSERT_FALSE(other_gait.ok());
+  EXPECT_NE(other_gait.status().message().find("walks the gait '" + w->meta.variant + "'"),
+            std::string::npos)
+      << other_gait.status();
+  cfg.walk_gait = w->meta.variant;
   const std::string dir = core::testing::UniqueTempPath("carry_init");
   auto tr = PpoTrainer::Create(cfg, dir);
   ASSERT_TRUE(tr.ok()) << tr.status();
@@ -190,6 +198,7 @@ TEST(CarryTask, InitFromTheWalkingPolicyWidensItsInputAndZeroesItsArms) {
   auto c = control::LoadPolicyFile(dir + "/policy.pt");
   ASSERT_TRUE(c.ok()) << c.status();
   ASSERT_EQ(c->meta.obs_dim, control::kCarryObsDim);
+  EXPECT_EQ(c->meta.variant, w->meta.variant);
   torch::manual_seed(3);
   torch::Tensor obs = torch::randn({5, control::kCarryObsDim});
   torch::NoGradGuard ng;
@@ -207,6 +216,7 @@ TEST(CarryTask, InitFromTheWalkingPolicyWidensItsInputAndZeroesItsArms) {
 
   PpoConfig wrong = cfg;
   wrong.task = "reach";
+  wrong.walk_gait = "";
   auto bad = PpoTrainer::Create(wrong, core::testing::UniqueTempPath("carry_init_bad"));
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.status().message().find("'walk' policy"), std::string::npos) << bad.status();
@@ -253,6 +263,58 @@ TEST(CarryTask, DiagnosticWalkPolicyRollout) {
     }
   }
   for (auto& [k, v] : ends) std::printf("%s: %d\n", k.c_str(), v);
+}
+
+// the "humanoid_grip" hands pull on the box they hold: the same hold presses harder with the
+// grip on, and the grip is off while the hands should not hold (the approach)
+TEST(CarryTask, GripPullsTheHandsOntoTheHeldBoxOnlyWhileHoldingIntegration) {
+  double pressed[2] = {0, 0};
+  for (bool grip : {false, true}) {
+    auto t = CarryTask::Create(1, "", grip);
+    ASSERT_TRUE(t.ok()) << t.status();
+    const auto& ix = (*t)->index();
+    EXPECT_EQ(ix.left_grip >= 0, grip);
+    EXPECT_EQ(ix.right_grip >= 0, grip);
+    std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
+    StepInfo info;
+    // half the training episodes start inside the lift: take the first that walks up to the box
+    for (uint64_t seed = 2000; seed < 2010; ++seed) {
+      (*t)->Reset(0, seed, obs.data());
+      (*t)->Step(0, act.data(), obs.data(), &info);
+      if ((*t)->state(0).phase == CarryPhase::kApproach) break;
+    }
+    ASSERT_EQ((*t)->state(0).phase, CarryPhase::kApproach);
+    if (grip) {
+      EXPECT_EQ((*t)->data(0)->ctrl[ix.left_grip], 0.0);
+    }
+    Eigen::Vector3d pelvis;
+    double yaw;
+    control::PelvisPose((*t)->data(0), ix.walk, &pelvis, &yaw);
+    const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
+    Eigen::Vector3d box = pelvis + ((*t)->params().stand_gap_m + 0.3) * fwd;
+    box.z() = 0;
+    (*t)->SetBox(0, 0.6, 8.0, box, yaw, (box + 2.0 * fwd).head<2>(), obs.data());
+    (*t)->StartHoldingNow(0, obs.data());
+    (*t)->Step(0, act.data(), obs.data(), &info);
+    const mjModel* m = (*t)->model(0);
+    const mjData* d = (*t)->data(0);
+    if (grip) {
+      EXPECT_EQ(d->ctrl[ix.left_grip], 1.0);
+      EXPECT_EQ(d->ctrl[ix.right_grip], 1.0);
+    }
+    const int box_body = m->geom_bodyid[(*t)->box_geom()];
+    for (int c = 0; c < d->ncon; ++c) {
+      const mjContact& con = d->contact[c];
+      const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
+      const int other = b1 == box_body ? con.geom2 : b2 == box_body ? con.geom1 : -1;
+      if (other != ix.left_hand_geom && other != ix.right_hand_geom) continue;
+      mjtNum f[6];
+      mj_contactForce(m, d, c, f);
+      pressed[grip] += f[0];
+    }
+  }
+  // two hands of up to world::kCarryGripN each
+  EXPECT_GT(pressed[1], pressed[0] + 50) << pressed[0] << " N without grip, " << pressed[1];
 }
 
 }  // namespace

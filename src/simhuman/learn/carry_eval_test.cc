@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "simhuman/control/policy/policy_net.h"
 #include "simhuman/core/testing_temp.h"
 #include "simhuman/learn/ppo.h"
 
@@ -38,6 +39,9 @@ TEST(CarryEval, EpisodesFollowTheProtocolAndRepeatBySeed) {
   cfg.threads = 1;
   cfg.hidden = {256, 128};
   cfg.init_from = kWalk;
+  auto walker = control::LoadPolicyFile(kWalk);
+  ASSERT_TRUE(walker.ok()) << walker.status();
+  cfg.walk_gait = walker->meta.variant;
   const std::string dir = core::testing::UniqueTempPath("carry_eval");
   auto tr = PpoTrainer::Create(cfg, dir);
   ASSERT_TRUE(tr.ok()) << tr.status();

@@ -153,6 +153,13 @@ struct PpoTrainer::Impl {
                                     : " (it may start from a '" + def->init_parent + "' policy)") +
           "; set \"hidden\" to match");
     }
+    if (TaskHasWalkGait(cfg.task) && TaskHasWalkGait(p->meta.task) &&
+        p->meta.variant != cfg.walk_gait) {
+      return absl::InvalidArgumentError(
+          where + " walks the gait '" + p->meta.variant + "' but this run's walk_gait is '" +
+          cfg.walk_gait + "'; set \"walk_gait\": \"" + p->meta.variant +
+          "\" in the config so the run walks the reference the policy learned");
+    }
     torch::NoGradGuard no_grad;
     auto src = p->actor->named_parameters();
     for (auto& dst : net.actor->named_parameters()) {
@@ -561,9 +568,16 @@ core::StatusOr<std::pair<int64_t, double>> ReadCheckpointProgress(const std::str
 }
 
 core::StatusOr<std::unique_ptr<VecTask>> MakeVecTask(const std::string& name, int num_envs,
-                                                     const std::string& physics_solver) {
+                                                     const std::string& physics_solver,
+                                                     const std::string& walk_gait) {
+  if (!walk_gait.empty() && !TaskHasWalkGait(name)) {
+    return absl::InvalidArgumentError("walk_gait '" + walk_gait +
+                                      "' applies to the walk and carry tasks only; task is '" +
+                                      name + "'");
+  }
   TaskOptions o;
   o.solver = physics_solver;
+  o.walk_gait = walk_gait;
   return MakeTask(name, num_envs, o);
 }
 

@@ -121,9 +121,12 @@ absl::Status ExportPolicy(const std::string& checkpoint, const std::string& out)
 core::StatusOr<std::pair<int64_t, double>> ReadCheckpointProgress(const std::string& path);
 
 /// A new training task by name (the names PpoConfig::task accepts, e.g. "walk", "reach") with
-/// `num_envs` copies; `physics_solver` "newton" or "pgs" (MuJoCo tasks; others ignore it).
-/// InvalidArgument listing the valid names for an unknown task; model-building errors.
+/// `num_envs` copies; `physics_solver` "newton" or "pgs" (MuJoCo tasks; others ignore it);
+/// `walk_gait` the walk and carry tasks' reference gait (control::WalkGait; a policy file
+/// records the one it was trained with). InvalidArgument listing the valid names for an
+/// unknown task or gait; model-building errors.
 core::StatusOr<std::unique_ptr<VecTask>> MakeVecTask(const std::string& name, int num_envs,
-                                                     const std::string& physics_solver);
+                                                     const std::string& physics_solver,
+                                                     const std::string& walk_gait = "");
 
 }  // namespace simhuman::learn

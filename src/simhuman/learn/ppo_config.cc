@@ -38,7 +38,7 @@ const core::FieldTable<PpoConfig>& Table() {
            .MinItems(1)
            .In(NumberRange::Closed(0.5, 1.5)),
        F("walk_gait", &PpoConfig::walk_gait,
-         "walk task's reference gait (\"\" the original, or human)"),
+         "walk and carry tasks' reference gait (\"\" the original, or human)"),
        F("walk_gait_weight", &PpoConfig::walk_gait_weight,
          "walk task: weight of the reward for the legs following the reference gait")
            .In(kAtLeast0),
@@ -123,9 +123,10 @@ absl::Status PpoConfig::Validate() const {
         "training config: body_scales other than [1] cannot be combined with amp_clips (AMP's "
         "clips are one adult's motion, not scaled to the bodies); drop one of the two");
   }
-  if (!walk_gait.empty() && !TaskHasBodyScales(task)) {
+  if (!walk_gait.empty() && !TaskHasWalkGait(task)) {
     return absl::InvalidArgumentError("training config: walk_gait '" + walk_gait +
-                                      "' applies to the walk task only; task is '" + task + "'");
+                                      "' applies to the walk and carry tasks only; task is '" +
+                                      task + "'");
   }
   const PpoConfig defaults;
   if (!TaskHasBodyScales(task) && (walk_gait_weight != defaults.walk_gait_weight ||

@@ -32,8 +32,9 @@ struct PpoConfig {
   /// e.g. [0.6, 0.8, 1.0, 1.2] trains one policy for children to tall adults (the walk task
   /// works in the adult's units, control::WalkScale). Each in [0.5, 1.5].
   std::vector<double> body_scales = {1.0};
-  /// The walk task's reference gait (control::WalkGait: "" the original, "human"); recorded in
-  /// the policy file, which then runs with it.
+  /// The walk and carry tasks' reference gait (control::WalkGait: "" the original, "human");
+  /// recorded in the policy file, which then runs with it. A carry run started from a walking
+  /// policy (init_from) must name that policy's gait.
   std::string walk_gait;
   /// walk task's reward: the leg gait term's weight and width (rad^2), the foot-slip weight
   double walk_gait_weight = 1.0;

@@ -10,4 +10,6 @@ bool TaskHasSolverChoice(std::string_view name) { return name == "walk"; }
 
 bool TaskHasBodyScales(std::string_view name) { return name == "walk"; }
 
+bool TaskHasWalkGait(std::string_view name) { return name == "walk" || name == "carry"; }
+
 }  // namespace simhuman::learn

@@ -50,6 +50,8 @@ core::StatusOr<const TaskDef*> FindTask(std::string_view name);
 std::vector<std::string> TaskNames();
 /// Whether `name` accepts body scales other than 1 (the walk task).
 bool TaskHasBodyScales(std::string_view name);
+/// Whether `name` walks to a reference gait that `walk_gait` chooses (walk, carry).
+bool TaskHasWalkGait(std::string_view name);
 /// Whether `name` accepts the "pgs" solver (TaskDef::solver_choice).
 bool TaskHasSolverChoice(std::string_view name);
 

@@ -21,7 +21,7 @@ namespace {
 class VecEnvHandle {
  public:
   VecEnvHandle(const std::string& task, int num_envs, int threads, uint64_t seed,
-               const std::string& physics_solver) {
+               const std::string& physics_solver, const std::string& walk_gait) {
     if (num_envs < 1 || num_envs > 65536) {
       ThrowValueError("num_envs " + std::to_string(num_envs) + " is invalid; valid: 1..65536");
     }
@@ -34,7 +34,7 @@ class VecEnvHandle {
     core::StatusOr<std::unique_ptr<learn::VecTask>> t = absl::UnknownError("not made");
     {
       py::gil_scoped_release release;
-      t = learn::MakeVecTask(task, num_envs, physics_solver);
+      t = learn::MakeVecTask(task, num_envs, physics_solver, walk_gait);
     }
     env_ = std::make_unique<learn::VecEnv>(Unwrap(std::move(t)), threads, seed);
     actions_.resize(static_cast<size_t>(num_envs) * env_->act_dim());
@@ -147,9 +147,10 @@ void RegisterVecEnv(py::module_& m) {
                            "learn::VecEnv: E copies of a training task stepped by C++ threads "
                            "with automatic resets. Use simhuman.vector.make() for the Gymnasium "
                            "vector API.")
-      .def(py::init<const std::string&, int, int, uint64_t, const std::string&>(),
+      .def(py::init<const std::string&, int, int, uint64_t, const std::string&,
+                    const std::string&>(),
            py::arg("task") = "walk", py::arg("num_envs") = 128, py::arg("threads") = 2,
-           py::arg("seed") = 1, py::arg("physics_solver") = "newton")
+           py::arg("seed") = 1, py::arg("physics_solver") = "newton", py::arg("walk_gait") = "")
       .def("reset", &VecEnvHandle::Reset, py::arg("seed") = py::none(),
            "Starts new episodes in every env (from `seed` when given).")
       .def("step", &VecEnvHandle::Step, py::arg("actions"),

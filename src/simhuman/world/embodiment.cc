@@ -14,6 +14,9 @@ const std::vector<Embodiment>& Embodiments() {
        true, false},
       {"humanoid_hands", "the humanoid with two dexterous hands (7-DoF arms, 22-DoF hands)", true,
        true},
+      {"humanoid_grip",
+       "the humanoid whose capsule hands grip what they touch (for carrying; up to 100 N per hand)",
+       false, false, kCarryGripN},
   };
   return kinds;
 }
@@ -41,6 +44,7 @@ HumanoidSpec MakeHumanoidSpec(const Embodiment& kind, double scale, int index) {
   if (index == 2) spec.rgba = "0.75 0.8 0.55 1";
   spec.right_hand = kind.right_hand;
   spec.left_hand = kind.left_hand;
+  spec.grip_n = kind.grip_n;
   return spec;
 }
 

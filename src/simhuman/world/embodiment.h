@@ -21,7 +21,13 @@ struct Embodiment {
   std::string description;  ///< one line, for `simhuman scenes` and error messages
   bool right_hand = false;  ///< a dexterous right hand instead of the capsule hand
   bool left_hand = false;
+  /// Capsule hands grip (HumanoidSpec::grip_n): the largest adhesion force per hand, N; 0: none
+  double grip_n = 0;
 };
+
+/// The grip of the "humanoid_grip" kind, N per hand (an adult's two-handed hold of a box by its
+/// sides presses well over this; our sphere hands have no fingers to curl over the edges).
+inline constexpr double kCarryGripN = 100;
 
 /// The name of the default kind: the humanoid with capsule hands.
 inline constexpr char kDefaultAgentKind[] = "humanoid";

@@ -65,9 +65,10 @@ class Writer {
       << rgba_ << "\"/>\n";
   }
   void Sphere(std::ostringstream& o, const std::string& name, double x, double y, double z,
-              double r, double mass) const {
+              double r, double mass, const std::string& extra = "") const {
     o << "<geom name=\"" << p_ << name << "\" type=\"sphere\" pos=\"" << Pos(x, y, z)
-      << "\" size=\"" << F(L(r)) << "\" mass=\"" << F(M(mass)) << "\" rgba=\"" << rgba_ << "\"/>\n";
+      << "\" size=\"" << F(L(r)) << "\" mass=\"" << F(M(mass)) << "\" rgba=\"" << rgba_ << "\""
+      << extra << "/>\n";
   }
   void Site(std::ostringstream& o, core::BodyJoint j, double x, double y, double z) const {
     NamedSite(o, BodyPointSiteName(j), x, y, z);
@@ -241,7 +242,10 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
     if (side < 0 ? spec.right_hand : spec.left_hand) {
       HandBodyXml(p, side < 0, spec.scale, spec.rgba, o);
     } else {
-      w.Sphere(o, s + "hand_geom", 0, 0, -0.055, 0.045, kHandMass);
+      // a gripping hand's contacts are found 1 cm early (margin) but act only on touch (gap):
+      // adhesion pulls only along contacts the collision pass has found
+      w.Sphere(o, s + "hand_geom", 0, 0, -0.055, 0.045, kHandMass,
+               spec.grip_n > 0 ? " margin=\"0.01\" gap=\"0.01\"" : "");
     }
     w.Site(o, ha, 0, 0, -0.055);
     o << "</body>\n</body>\n</body>\n";
@@ -274,6 +278,11 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
   return o.str();
 }
 
+const std::vector<std::string>& HumanoidGripActuatorNames() {
+  static const std::vector<std::string> names = {"right_grip", "left_grip"};
+  return names;
+}
+
 std::string HumanoidContactXml(const HumanoidSpec& spec) {
   std::string out;
   if (spec.right_hand) out += HandContactExcludesXml(spec.prefix, true);
@@ -297,6 +306,15 @@ std::string HumanoidActuatorXml(const HumanoidSpec& spec) {
     for (const HandJoint& h : HandJoints()) {
       JointDef d{h.name, "", h.lo_deg, h.hi_deg, {h.kp, h.damping, h.force}};
       servo(std::string(side) + h.name, d);
+    }
+  }
+  if (spec.grip_n > 0) {
+    for (const std::string& name : HumanoidGripActuatorNames()) {
+      const std::string side = name.substr(0, name.find('_') + 1);
+      if (side == "right_" ? spec.right_hand : spec.left_hand) continue;  // fingers grip there
+      o << "<adhesion name=\"" << spec.prefix << name << "\" body=\"" << spec.prefix << side
+        << "hand\" ctrlrange=\"0 1\" gain=\"" << F(spec.grip_n * std::pow(spec.scale, 3))
+        << "\"/>\n";
     }
   }
   return o.str();

@@ -22,7 +22,16 @@ struct HumanoidSpec {
   /// and the body points "<side> palm", "<side> fingertips", "<side> thumb tip".
   bool right_hand = false;
   bool left_hand = false;
+  /// > 0: each capsule hand grips what it touches, as fingers curled over a box's edges would:
+  /// an adhesion actuator (MuJoCo's bounded pull along the contact normals, acting only while
+  /// the hand touches something; nothing is welded) of up to `grip_n` N x scale^3, named
+  /// "<side>_grip", control 0-1, after every hinge actuator (HumanoidGripActuatorNames()).
+  double grip_n = 0;
 };
+
+/// The grip actuators' names (without prefix) of a humanoid with HumanoidSpec::grip_n > 0, in
+/// actuator order: right, then left.
+const std::vector<std::string>& HumanoidGripActuatorNames();
 
 /// One body point of a humanoid: what plans call it and the MJCF site (without prefix) that
 /// marks it.

@@ -177,6 +177,26 @@ TEST(EmbodimentTest, KindsAreDataAndAnUnknownKindIsNamed) {
   EXPECT_TRUE(two.body_points.Find("left thumb tip").has_value());
 }
 
+// the gripping kind adds one adhesion actuator per capsule hand, after the agent's hinge span,
+// scaled with the body's mass; the plain kind has none
+TEST(EmbodimentTest, GripKindAddsAnAdhesionActuatorPerHand) {
+  auto w = SimWorld::Create(core::SceneCatalog(),
+                            {{0, 0, 0, 1.0, "humanoid_grip"}, {2, 0, 0, 0.8, "humanoid"}});
+  ASSERT_TRUE(w.ok()) << w.status();
+  const mjModel* m = (*w)->model();
+  EXPECT_EQ((*w)->agent(0).num_actuators(), kHumanoidDofs);
+  EXPECT_EQ(m->nu, 2 * kHumanoidDofs + 2);
+  for (const std::string& name : HumanoidGripActuatorNames()) {
+    const int id = mj_name2id(m, mjOBJ_ACTUATOR, name.c_str());
+    ASSERT_GE(id, 0) << name;
+    EXPECT_EQ(m->actuator_trntype[id], mjTRN_BODY) << name;
+    const std::string hand = name.substr(0, name.find('_')) + "_hand";
+    EXPECT_EQ(m->actuator_trnid[2 * id], mj_name2id(m, mjOBJ_BODY, hand.c_str())) << name;
+    EXPECT_DOUBLE_EQ(m->actuator_gainprm[id * mjNGAIN], kCarryGripN) << name;
+    EXPECT_EQ(mj_name2id(m, mjOBJ_ACTUATOR, ("h1/" + name).c_str()), -1) << name;
+  }
+}
+
 // agents of different kinds in one model: tables sized from the model, spans side by side
 TEST(EmbodimentTest, AgentTablesComeFromTheCompiledModel) {
   std::vector<AgentSpec> agents = {{0, 0, 0, 1.0, "humanoid"},

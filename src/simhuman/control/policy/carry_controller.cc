@@ -56,6 +56,9 @@ core::StatusOr<std::unique_ptr<CarryPolicyController>> CarryPolicyController::Lo
                                       "), not a carry policy (obs " + std::to_string(kCarryObsDim) +
                                       ")");
   }
+  core::StatusOr<WalkParams> gait = WalkGait(p->meta.variant);
+  if (!gait.ok()) return core::Annotate(gait.status(), "carry policy '" + path + "'");
+  impl->params.walk = *gait;
   impl->policy = std::move(*p);
   impl->policy.actor->eval();
   impl->scratch = mj_makeData(world->model());
@@ -88,7 +91,7 @@ absl::Status CarryPolicyController::Act(const Observation& obs) {
     CarryBox box = ReadCarryBox(model, obs.data, m.box_geom);
     m.state = CarryState();
     BeginCarry(m.params, m.ix, obs.data, box, obs.task->carry_goal->pos.head<2>(), &m.state);
-    UpdateWalkCommand(WalkParams(), obs.data, m.ix.walk, &m.state.walk);
+    UpdateWalkCommand(m.params.walk, obs.data, m.ix.walk, &m.state.walk);
     m.carrying = true;
     m.step = obs.step_index;
   } else {

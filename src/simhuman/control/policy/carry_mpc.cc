@@ -65,6 +65,7 @@ double CarryMpc::Rollout(const mjData* start, const CarryState& s0, const Knots&
   for (int h = 0; h < steps; ++h) {
     ActionAt(k, h, steps, act.data());
     CarryTargets(ix_, s, act.data(), ctrl);
+    SetCarryGrip(ix_, s, d);
     for (int sub = 0; sub < kWalkSubsteps; ++sub) {
       for (int j = 0; j < kWalkActDim; ++j) d->ctrl[a.actuator[j]] = ctrl[j];
       mj_step(m_, d);

@@ -266,6 +266,8 @@ core::StatusOr<CarryIndex> MakeCarryIndex(const world::SimWorld& world, int a) {
   std::string p = world::AgentPrefix(a);
   ix.left_hand_geom = mj_name2id(m, mjOBJ_GEOM, (p + "left_hand_geom").c_str());
   ix.right_hand_geom = mj_name2id(m, mjOBJ_GEOM, (p + "right_hand_geom").c_str());
+  ix.left_grip = mj_name2id(m, mjOBJ_ACTUATOR, (p + "left_grip").c_str());
+  ix.right_grip = mj_name2id(m, mjOBJ_ACTUATOR, (p + "right_grip").c_str());
   if (ix.left_hand_site < 0 || ix.right_hand_site < 0 || ix.left_hand_geom < 0 ||
       ix.right_hand_geom < 0) {
     return absl::NotFoundError("carry task: humanoid '" + p + "' has no hand sites or geoms");
@@ -376,6 +378,7 @@ void BeginCarry(const CarryParams& p, const CarryIndex& ix, const mjData* d, con
   Eigen::Vector2d stand, dir;
   Eigen::Vector3d half;
   ChooseStandFace(p, box, pos.head<2>(), &stand, &dir, &half);
+  s->gait = p.walk;
   s->face_dir = dir;
   s->half_stand = half;
   // the held faces are the box faces to the carrier's left and right
@@ -522,7 +525,7 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
     case CarryPhase::kRetreat:
       break;
   }
-  UpdateWalkCommand(WalkParams(), d, ix.walk, &s->walk);
+  UpdateWalkCommand(p.walk, d, ix.walk, &s->walk);
   UpdateGrip(p, m, d, ix, box, s);
 }
 
@@ -537,6 +540,12 @@ bool CarryHandsOnBox(const CarryState& s) {
     default:
       return false;
   }
+}
+
+void SetCarryGrip(const CarryIndex& ix, const CarryState& s, mjData* d) {
+  const double on = CarryHandsOnBox(s) ? 1.0 : 0.0;
+  if (ix.left_grip >= 0) d->ctrl[ix.left_grip] = on;
+  if (ix.right_grip >= 0) d->ctrl[ix.right_grip] = on;
 }
 
 void CarryHeldPoints(const CarryState& s, const CarryBox& box, Eigen::Vector3d* left,
@@ -570,7 +579,7 @@ double BoxLowestZ(const CarryBox& box) {
 }
 
 void CarryReference(const CarryState& s, double* q) {
-  WalkReference(WalkParams(), s.walk.phase, s.walk.amplitude, s.walk.cmd, q);
+  WalkReference(s.gait, s.walk.phase, s.walk.amplitude, s.walk.cmd, q);
   if (s.phase == CarryPhase::kApproach || s.phase == CarryPhase::kRetreat) return;
   const CarryPoses& k = s.poses;
   Pose stand;
@@ -616,7 +625,7 @@ void CarryTargets(const CarryIndex& ix, const CarryState& s, const float* action
 
 void CarryObservation(const mjData* d, const CarryIndex& ix, const CarryState& s,
                       const CarryBox& box, float* obs) {
-  WalkObservation(WalkParams(), d, ix.walk, s.walk, obs);
+  WalkObservation(s.gait, d, ix.walk, s.walk, obs);
   float* o = obs + kWalkObsDim;
   int k = 0;
   Eigen::Vector3d pos;

@@ -62,6 +62,9 @@ struct CarryParams {
   double grip_gain = 0.3;
   double grip_max_rad = 0.5;   ///< largest offset on one arm joint
   double grip_reach_m = 0.25;  ///< the servo acts on a hand within this of its target
+  /// The walking reference gait (WalkGait) of the walking policy the carry policy starts from:
+  /// the approach, the carry and the retreat walk to it
+  WalkParams walk;
 };
 
 /// The box being carried, in the world (from the simulation or a perception estimate).
@@ -88,7 +91,8 @@ struct CarryPoses {
 struct CarryState {
   CarryPhase phase = CarryPhase::kApproach;
   double phase_time_s = 0;
-  WalkState walk;  ///< the walking part (its target is the current stand point)
+  WalkState walk;   ///< the walking part (its target is the current stand point)
+  WalkParams gait;  ///< the walking reference gait (CarryParams::walk, copied by BeginCarry)
   Eigen::Vector2d dest_xy = Eigen::Vector2d::Zero();    ///< where the box goes (centre), m
   Eigen::Vector2d face_dir = Eigen::Vector2d::UnitX();  ///< stand frame +x at pick-up (world)
   Eigen::Vector2d stand_xy = Eigen::Vector2d::Zero();   ///< stand point of the current phase
@@ -105,6 +109,8 @@ struct CarryIndex {
   WalkIndex walk;
   int left_hand_site = -1, right_hand_site = -1;
   int left_hand_geom = -1, right_hand_geom = -1;
+  /// the hands' grip actuators (world::HumanoidSpec::grip_n; -1: a humanoid without grip)
+  int left_grip = -1, right_grip = -1;
 };
 
 core::StatusOr<CarryIndex> MakeCarryIndex(const world::SimWorld& world, int a);
@@ -173,6 +179,9 @@ void CarryTargets(const CarryIndex& ix, const CarryState& s, const float* action
 /// Whether the phase expects the hands on the box (the squeeze part of lift and put-down and
 /// the whole carry).
 bool CarryHandsOnBox(const CarryState& s);
+
+/// Sets the hands' grip controls (if the humanoid has them): on while the hands hold the box.
+void SetCarryGrip(const CarryIndex& ix, const CarryState& s, mjData* d);
 
 /// The held points (world): on the box's two held faces at the grasp height, fixed in the box
 /// frame at BeginCarry.

@@ -16,9 +16,9 @@ from simhuman.policy import load_policy
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "..", ".."))
 
 
-def drive(act, envs=32, seconds=25.0, seed=1):
+def drive(act, walk_gait="", envs=32, seconds=25.0, seed=1):
     """Returns (episodes finished, successes, falls, mean return of finished episodes)."""
-    e = simhuman.vector.make("walk", num_envs=envs, threads=2, seed=seed)
+    e = simhuman.vector.make("walk", num_envs=envs, threads=2, seed=seed, walk_gait=walk_gait)
     obs, _ = e.reset(seed=seed)
     finished, success, falls, returns = 0, 0, 0, []
     for _ in range(int(seconds * 30)):  # the policy runs at 30 Hz
@@ -42,7 +42,7 @@ def main():
     rng = np.random.default_rng(0)
     for name, act in [("walk.pt", policy.act),
                       ("random", lambda o: rng.uniform(-3, 3, (len(o), 28)).astype(np.float32))]:
-        n, s, f, r = drive(act, seconds=args.seconds)
+        n, s, f, r = drive(act, walk_gait=policy.walk_gait, seconds=args.seconds)
         print(f"{name:8s}: 32 walkers for {args.seconds:.0f} s: falls {f}, episodes ended {n}, "
               f"successes {s}, mean return of ended episodes {r:.2f}")
 

@@ -35,6 +35,7 @@ class GaussianPolicy(torch.nn.Module):
         self.register_buffer("obs_var", torch.ones(obs_dim, dtype=torch.float64))
         self.obs_clip = float(obs_clip)
         self.task = ""
+        self.walk_gait = ""  # the reference gait a walk policy was trained with ("" or "human")
 
     def normalize(self, obs):
         """(obs - mean) / sqrt(var + 1e-8), clipped to +-obs_clip (float32)."""
@@ -70,6 +71,7 @@ def load_policy(path):
     policy = GaussianPolicy(int(archive.obs_dim), int(archive.act_dim), hidden,
                             float(archive.obs_clip))
     policy.task = str(archive.task)
+    policy.walk_gait = str(getattr(archive, "variant", ""))
     params = dict(archive.actor.named_parameters())
     state = {"log_std": params["log_std"], "obs_mean": archive.obs_mean,
              "obs_var": archive.obs_var}

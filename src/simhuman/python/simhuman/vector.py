@@ -38,6 +38,8 @@ class VectorEnv:
         threads: C++ worker threads stepping them.
         seed: seed of the episodes (reset(seed=...) replaces it).
         physics_solver: MuJoCo solver of the walk task, "newton" (as the runner) or "pgs".
+        walk_gait: the walk task's reference gait, "" (the original) or "human"; a policy
+            runs in the env of the gait it was trained with (``load_policy(...).walk_gait``).
         copy: return copies instead of views of the C++ buffers.
     """
 
@@ -46,8 +48,8 @@ class VectorEnv:
     spec = None
 
     def __init__(self, task="walk", num_envs=128, threads=2, seed=1, physics_solver="newton",
-                 copy=False):
-        self._env = _native.VecEnv(task, num_envs, threads, seed, physics_solver)
+                 copy=False, walk_gait=""):
+        self._env = _native.VecEnv(task, num_envs, threads, seed, physics_solver, walk_gait)
         self._copy = bool(copy)
         self._views = self._env.views()
         self._closed = False
@@ -167,7 +169,8 @@ class VectorEnv:
                 f"actions {self.single_action_space.shape})")
 
 
-def make(task="walk", num_envs=128, threads=2, seed=1, physics_solver="newton", copy=False):
+def make(task="walk", num_envs=128, threads=2, seed=1, physics_solver="newton", copy=False,
+         walk_gait=""):
     """A ``VectorEnv`` of ``task`` (see VectorEnv for the arguments)."""
     return VectorEnv(task, num_envs=num_envs, threads=threads, seed=seed,
-                     physics_solver=physics_solver, copy=copy)
+                     physics_solver=physics_solver, copy=copy, walk_gait=walk_gait)

@@ -99,6 +99,10 @@ class WalkVectorEnvTest(unittest.TestCase):
             vector.make("walk", num_envs=0)
         with self.assertRaisesRegex(ValueError, "physics_solver 'cg' is unknown; valid: newton"):
             vector.make("walk", num_envs=1, physics_solver="cg")
+        with self.assertRaisesRegex(simhuman.BadInputError, "unknown walking gait 'brisk'"):
+            vector.make("walk", num_envs=1, walk_gait="brisk")
+        with self.assertRaisesRegex(simhuman.BadInputError, "walk_gait 'human' applies to the"):
+            vector.make("reach", num_envs=1, walk_gait="human")
 
     def test_seeds(self):
         a, _ = self.envs.reset(seed=np.int64(5))
