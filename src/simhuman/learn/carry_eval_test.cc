@@ -30,6 +30,34 @@ TEST(CarryEval, RefusesAPolicyOfAnotherTaskAndBadRanges) {
   EXPECT_FALSE(RunCarryEval(o, nullptr).ok());
 }
 
+// a carry run with gripping hands records it in its policy file, and the suite evaluates such
+// a policy with the grip; other tasks refuse the key
+TEST(CarryEval, GripIsRecordedInThePolicyFileIntegration) {
+  PpoConfig cfg;
+  cfg.task = "carry";
+  cfg.num_envs = 1;
+  cfg.threads = 1;
+  cfg.carry_grip = true;
+  const std::string dir = core::testing::UniqueTempPath("carry_grip");
+  auto tr = PpoTrainer::Create(cfg, dir);
+  ASSERT_TRUE(tr.ok()) << tr.status();
+  ASSERT_TRUE((*tr)->Checkpoint().ok());
+  auto p = control::LoadPolicyFile(dir + "/policy.pt");
+  ASSERT_TRUE(p.ok()) << p.status();
+  EXPECT_TRUE(p->meta.carry_grip);
+  CarryEvalOptions o;
+  o.policy = dir + "/policy.pt";
+  o.episodes = 1;
+  o.base_time_s = 1;
+  o.max_dist_m = 2;
+  EXPECT_TRUE(RunCarryEval(o, nullptr).ok());
+  PpoConfig walk;
+  walk.carry_grip = true;
+  EXPECT_NE(std::string(walk.Validate().message()).find("carry_grip applies to the carry task"),
+            std::string::npos)
+      << walk.Validate();
+}
+
 // a carry policy fresh from the walking one: episodes run to an end, are drawn from the
 // protocol's ranges, reproducible by seed, and summarised per mass bin
 TEST(CarryEval, EpisodesFollowTheProtocolAndRepeatBySeed) {

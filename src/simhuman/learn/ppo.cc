@@ -39,6 +39,7 @@ TaskOptions OptionsOf(const PpoConfig& c) {
   o.solver = c.physics_solver;
   o.body_scales = c.body_scales;
   o.walk_gait = c.walk_gait;
+  o.carry_grip = c.carry_grip;
   o.walk_gait_weight = c.walk_gait_weight;
   o.walk_gait_width = c.walk_gait_width;
   o.walk_foot_slip_weight = c.walk_foot_slip_weight;
@@ -235,7 +236,8 @@ struct PpoTrainer::Impl {
   }
 
   control::PolicyMeta Meta() const {
-    return control::PolicyMeta{cfg.task, env->obs_dim(), env->act_dim(), cfg.hidden, cfg.walk_gait};
+    return control::PolicyMeta{cfg.task,   env->obs_dim(), env->act_dim(),
+                               cfg.hidden, cfg.walk_gait,  cfg.carry_grip};
   }
 
   double Lr() const {

@@ -39,6 +39,8 @@ const core::FieldTable<PpoConfig>& Table() {
            .In(NumberRange::Closed(0.5, 1.5)),
        F("walk_gait", &PpoConfig::walk_gait,
          "walk and carry tasks' reference gait (\"\" the original, or human)"),
+       F("carry_grip", &PpoConfig::carry_grip,
+         "carry task: the hands grip the box while holding it (agent kind humanoid_grip)"),
        F("walk_gait_weight", &PpoConfig::walk_gait_weight,
          "walk task: weight of the reward for the legs following the reference gait")
            .In(kAtLeast0),
@@ -127,6 +129,12 @@ absl::Status PpoConfig::Validate() const {
     return absl::InvalidArgumentError("training config: walk_gait '" + walk_gait +
                                       "' applies to the walk and carry tasks only; task is '" +
                                       task + "'");
+  }
+  if (carry_grip && task != "carry") {
+    return absl::InvalidArgumentError(
+        "training config: carry_grip applies to the carry task "
+        "only; task is '" +
+        task + "'");
   }
   const PpoConfig defaults;
   if (!TaskHasBodyScales(task) && (walk_gait_weight != defaults.walk_gait_weight ||

@@ -36,6 +36,9 @@ struct PpoConfig {
   /// recorded in the policy file, which then runs with it. A carry run started from a walking
   /// policy (init_from) must name that policy's gait.
   std::string walk_gait;
+  /// carry task: the human's hands grip the box while they hold it (world kind
+  /// "humanoid_grip"); recorded in the policy file
+  bool carry_grip = false;
   /// walk task's reward: the leg gait term's weight and width (rad^2), the foot-slip weight
   double walk_gait_weight = 1.0;
   double walk_gait_width = 0.5;

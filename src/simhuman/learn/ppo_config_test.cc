@@ -19,9 +19,11 @@ std::string Error(const json& j) {
 TEST(PpoConfigTable, DefaultsRoundTripThroughToJsonWithEveryKey) {
   const PpoConfig defaults;
   json j = defaults.ToJson();
-  // every key (38 before the table, + target_kl, body_scales, walk_gait, the walk reward's 3)
-  EXPECT_EQ(j.size(), 44u);
+  // every key (38 before the table, + target_kl, body_scales, walk_gait, the walk reward's 3,
+  // carry_grip)
+  EXPECT_EQ(j.size(), 45u);
   EXPECT_EQ(j["walk_gait"], "");
+  EXPECT_EQ(j["carry_grip"], false);
   EXPECT_EQ(j["walk_gait_weight"], 1.0);
   EXPECT_EQ(j["body_scales"], json::array({1.0}));
   EXPECT_EQ(j["target_kl"], 0.0);

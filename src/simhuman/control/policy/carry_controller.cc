@@ -56,6 +56,12 @@ core::StatusOr<std::unique_ptr<CarryPolicyController>> CarryPolicyController::Lo
                                       "), not a carry policy (obs " + std::to_string(kCarryObsDim) +
                                       ")");
   }
+  if (p->meta.carry_grip) {
+    return absl::UnimplementedError(
+        "carry policy '" + path +
+        "' was trained with gripping hands (carry_grip); simhuman run cannot drive the grip "
+        "yet: evaluate it with simhuman eval --suite carry");
+  }
   core::StatusOr<WalkParams> gait = WalkGait(p->meta.variant);
   if (!gait.ok()) return core::Annotate(gait.status(), "carry policy '" + path + "'");
   impl->params.walk = *gait;

@@ -121,6 +121,7 @@ void SavePolicyKeys(torch::serialize::OutputArchive& ar, const PolicyMeta& meta,
   std::vector<int64_t> h(meta.hidden.begin(), meta.hidden.end());
   ar.write("hidden", torch::tensor(h, torch::kInt64));
   if (!meta.variant.empty()) ar.write("variant", c10::IValue(meta.variant));
+  if (meta.carry_grip) ar.write("carry_grip", c10::IValue(true));
   torch::serialize::OutputArchive a;
   actor->save(a);
   ar.write("actor", a);
@@ -149,6 +150,8 @@ core::StatusOr<PolicyMeta> ReadPolicyMeta(torch::serialize::InputArchive& ar) {
   }
   c10::IValue variant;
   if (ar.try_read("variant", variant) && variant.isString()) meta.variant = variant.toStringRef();
+  c10::IValue grip;
+  meta.carry_grip = ar.try_read("carry_grip", grip) && grip.isBool() && grip.toBool();
   if (meta.obs_dim <= 0 || meta.act_dim <= 0 || meta.hidden.empty()) {
     return absl::DataLossError("policy metadata has invalid dimensions");
   }

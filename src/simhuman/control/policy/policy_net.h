@@ -82,6 +82,9 @@ struct PolicyMeta {
   /// The task's variant the policy was trained under (walk: the gait, control::WalkGait);
   /// key "variant", absent in older files: "".
   std::string variant;
+  /// carry: trained with gripping hands (world kind "humanoid_grip"); key "carry_grip",
+  /// written only when true
+  bool carry_grip = false;
 };
 
 /// Writes the policy keys (format, meta, actor, normalizer) into `ar`.
