@@ -95,7 +95,8 @@ core::StatusOr<CarryEvalSummary> RunCarryEval(
         std::to_string(control::kCarryObsDim) + "): simhuman train --task carry");
   }
   pol->actor->eval();
-  SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> task, CarryTask::Create(1, pol->meta.variant, pol->meta.carry_grip));
+  SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> task,
+                      CarryTask::Create(1, pol->meta.variant, pol->meta.carry_grip));
   task->set_curriculum(1.0);
   CarryEvalSummary s;
   s.mass_bin_episodes.assign(kMassBins, 0);

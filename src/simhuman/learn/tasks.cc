@@ -30,7 +30,8 @@ const std::vector<TaskDef>& Tasks() {
        "", false},
       {"carry", "walk to a box, lift it, carry it to a destination, put it down, step back",
        [](int envs, const TaskOptions& o) -> core::StatusOr<std::unique_ptr<VecTask>> {
-         SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> t, CarryTask::Create(envs, o.walk_gait, o.carry_grip));
+         SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> t,
+                             CarryTask::Create(envs, o.walk_gait, o.carry_grip));
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "walk", false},
