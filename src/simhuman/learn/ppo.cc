@@ -572,11 +572,7 @@ core::StatusOr<std::pair<int64_t, double>> ReadCheckpointProgress(const std::str
 core::StatusOr<std::unique_ptr<VecTask>> MakeVecTask(const std::string& name, int num_envs,
                                                      const std::string& physics_solver,
                                                      const std::string& walk_gait) {
-  if (!walk_gait.empty() && !TaskHasWalkGait(name)) {
-    return absl::InvalidArgumentError("walk_gait '" + walk_gait +
-                                      "' applies to the walk and carry tasks only; task is '" +
-                                      name + "'");
-  }
+  SH_RETURN_IF_ERROR(CheckWalkGaitTask(name, walk_gait));
   TaskOptions o;
   o.solver = physics_solver;
   o.walk_gait = walk_gait;

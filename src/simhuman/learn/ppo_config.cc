@@ -125,10 +125,8 @@ absl::Status PpoConfig::Validate() const {
         "training config: body_scales other than [1] cannot be combined with amp_clips (AMP's "
         "clips are one adult's motion, not scaled to the bodies); drop one of the two");
   }
-  if (!walk_gait.empty() && !TaskHasWalkGait(task)) {
-    return absl::InvalidArgumentError("training config: walk_gait '" + walk_gait +
-                                      "' applies to the walk and carry tasks only; task is '" +
-                                      task + "'");
+  if (absl::Status s = CheckWalkGaitTask(task, walk_gait); !s.ok()) {
+    return core::Annotate(s, "training config");
   }
   if (carry_grip && task != "carry") {
     return absl::InvalidArgumentError(

@@ -12,4 +12,11 @@ bool TaskHasBodyScales(std::string_view name) { return name == "walk"; }
 
 bool TaskHasWalkGait(std::string_view name) { return name == "walk" || name == "carry"; }
 
+absl::Status CheckWalkGaitTask(std::string_view task, std::string_view gait) {
+  if (gait.empty() || TaskHasWalkGait(task)) return absl::OkStatus();
+  return absl::InvalidArgumentError("walk_gait '" + std::string(gait) +
+                                    "' applies to the walk and carry tasks only; task is '" +
+                                    std::string(task) + "'");
+}
+
 }  // namespace simhuman::learn

@@ -53,6 +53,8 @@ std::vector<std::string> TaskNames();
 bool TaskHasBodyScales(std::string_view name);
 /// Whether `name` walks to a reference gait that `walk_gait` chooses (walk, carry).
 bool TaskHasWalkGait(std::string_view name);
+/// InvalidArgument naming both when a non-empty walk gait `gait` is given for a task without one.
+absl::Status CheckWalkGaitTask(std::string_view task, std::string_view gait);
 /// Whether `name` accepts the "pgs" solver (TaskDef::solver_choice).
 bool TaskHasSolverChoice(std::string_view name);
 
