@@ -21,6 +21,7 @@ constexpr int kSuccessHold = 30;  // policy steps at rest after the put-down (1 
 constexpr double kStartAtBoxFraction = 0.5;
 constexpr double kStartInSquatFraction = 0.6;  // of the episodes that start at the box
 constexpr double kMaxApproachSeconds = 20;
+constexpr double kBuiltBoxSide = 0.5;  // the box is built as this cube; ShapeBox scales it
 
 Eigen::Vector3d Vec(const mjtNum* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
 
@@ -57,7 +58,7 @@ core::StatusOr<std::unique_ptr<CarryTask>> CarryTask::Create(int num_envs, std::
   box.id = "box000";
   box.type = "box";
   box.pos = Eigen::Vector3d(0, 0, 0);
-  box.size = {{"depth", 0.5}, {"width", 0.5}, {"height", 0.5}};
+  box.size = {{"depth", kBuiltBoxSide}, {"width", kBuiltBoxSide}, {"height", kBuiltBoxSide}};
   box.mass_kg = 5.0;
   SH_ASSIGN_OR_RETURN(core::CatalogObject obj, world::BuildObject(box));
   core::SceneCatalog scene;
@@ -108,6 +109,18 @@ CarryTask::~CarryTask() {
 void CarryTask::ShapeBox(Env& e, double side_m, double mass_kg) const {
   mjModel* m = e.m;
   const double h = 0.5 * side_m;
+  // every geom of the box body (its face slabs and core tile the built cube) scales with it: a
+  // box drawn and observed small must not keep the built cube's slabs around it
+  const mjModel* built = world_->model();
+  const double s = side_m / kBuiltBoxSide;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_bodyid[g] != box_body_) continue;
+    for (int k = 0; k < 3; ++k) {
+      m->geom_size[3 * g + k] = s * built->geom_size[3 * g + k];
+      m->geom_pos[3 * g + k] = s * built->geom_pos[3 * g + k];
+    }
+    m->geom_rbound[g] = s * built->geom_rbound[g];
+  }
   for (int k = 0; k < 3; ++k) m->geom_size[3 * box_geom_ + k] = h;
   m->geom_pos[3 * box_geom_ + 2] = h;  // the body origin is on the floor under the centre
   m->geom_rbound[box_geom_] = std::sqrt(3.0) * h;

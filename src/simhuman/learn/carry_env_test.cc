@@ -394,5 +394,49 @@ TEST(CarryTask, StartHoldingPutsTheBoxBetweenTheHands) {
   EXPECT_EQ((*t)->state(0).phase, CarryPhase::kCarry);
 }
 
+// a small box is small everywhere: the built cube's face slabs and core scale with it (they
+// used to keep the built 0.5 m cube around a small box, so a held start put the forearms inside
+// the slabs at 10-40 kN)
+TEST(CarryTask, EveryGeomOfASmallBoxScalesWithIt) {
+  constexpr double kSide = 0.3, kTol = 1e-9, kMaxArmForceN = 1000;
+  auto t = CarryTask::Create(1);
+  ASSERT_TRUE(t.ok()) << t.status();
+  std::vector<float> obs((*t)->obs_dim());
+  (*t)->Reset(0, 2000, obs.data());
+  Eigen::Vector3d pelvis;
+  double yaw;
+  control::PelvisPose((*t)->data(0), (*t)->index().walk, &pelvis, &yaw);
+  const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
+  Eigen::Vector3d box = pelvis + ((*t)->params().stand_gap_m + 0.5 * kSide) * fwd;
+  box.z() = 0;
+  (*t)->SetBox(0, kSide, 4.0, box, yaw, (box + 2.0 * fwd).head<2>(), obs.data());
+  const mjModel* m = (*t)->model(0);
+  const int body = m->geom_bodyid[(*t)->box_geom()];
+  int geoms = 0;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_bodyid[g] != body) continue;
+    ++geoms;
+    ASSERT_EQ(m->geom_type[g], mjGEOM_BOX);
+    for (int k = 0; k < 2; ++k) {
+      EXPECT_LE(std::abs(m->geom_pos[3 * g + k]) + m->geom_size[3 * g + k], 0.5 * kSide + kTol)
+          << mj_id2name(m, mjOBJ_GEOM, g);
+    }
+    EXPECT_LE(m->geom_pos[3 * g + 2] + m->geom_size[3 * g + 2], kSide + kTol);
+    EXPECT_GE(m->geom_pos[3 * g + 2] - m->geom_size[3 * g + 2], -kTol);
+  }
+  EXPECT_GT(geoms, 1);
+  // held, the arms touch the box's faces without lying inside it
+  (*t)->StartHoldingNow(0, obs.data());
+  const mjData* d = (*t)->data(0);
+  for (int c = 0; c < d->ncon; ++c) {
+    const mjContact& con = d->contact[c];
+    if (m->geom_bodyid[con.geom1] != body && m->geom_bodyid[con.geom2] != body) continue;
+    mjtNum f[6];
+    mj_contactForce(m, d, c, f);
+    EXPECT_LT(f[0], kMaxArmForceN)
+        << mj_id2name(m, mjOBJ_GEOM, con.geom1) << " - " << mj_id2name(m, mjOBJ_GEOM, con.geom2);
+  }
+}
+
 }  // namespace
 }  // namespace simhuman::learn
