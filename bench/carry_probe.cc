@@ -8,15 +8,16 @@
 //                              [--stand-gap M] [--grasp-frac F] [--reach-depth M] [--pose-at T]
 //                              [--torsion M] [--contacts 1] [--grip 1] [--gait human]
 //                              [--mpc SAMPLES] [--mpc-sigma S] [--mpc-horizon T]
-//                              [--walker FILE] [--walker-blind-arms 1] [--dest M] [--vmax MPS]
+//                              [--walker FILE] [--dest M] [--vmax MPS]
 //
 // --walker FILE drives the carry phase with a walking policy (task "walk", e.g.
 // assets/policies/walk.pt): the action is the walker's output for the first kWalkObsDim entries
-// of the carry observation (the walking observation), with its arm entries zeroed (WalkTargets
-// ignores them), so the arms keep the holding reference and the grip servo. The gait is the
-// file's. --walker-blind-arms 1 shows the walker its arms where its own gait would swing them
-// (the holding arms lie outside what it trained on). --dest is the destination's distance
-// ahead of the box (m), --vmax the walking command's top speed (m/s; the gait's by default).
+// of the carry observation (the walking observation, whose arm entries the carry task shows
+// "blind" while it holds the arms: control::CarryBlindArms), with its arm outputs zeroed
+// (WalkTargets ignores them), so the arms keep the holding reference and the grip servo. The
+// gait is the file's. --dest is the destination's distance ahead of the box (m), --vmax the
+// walking command's top speed (m/s; the gait's, and at most CarryParams::carry_vmax_mps while
+// carrying, by default).
 #include <torch/torch.h>
 
 #include <algorithm>
@@ -57,10 +58,9 @@ struct Args {
   int mpc = 0;            // > 0: the lift MPC with this many samples drives the action
   double mpc_sigma = -1, mpc_horizon = -1, mpc_whands = -1, mpc_wtrack = -1, mpc_wbal = -1;
   std::string policy, sheet;
-  std::string walker;              // a walking policy drives the carry phase
-  bool walker_blind_arms = false;  // the walker sees its gait's arm swing, not the holding arms
-  double dest_m = 2.0;             // destination ahead of the box, m
-  double vmax = -1;                // > 0: the walking command's top speed, m/s
+  std::string walker;   // a walking policy drives the carry phase
+  double dest_m = 2.0;  // destination ahead of the box, m
+  double vmax = -1;     // > 0: the walking command's top speed, m/s (carrying too)
 };
 
 Args Parse(int argc, char** argv) {
@@ -118,8 +118,6 @@ Args Parse(int argc, char** argv) {
       a.sheet = v;
     else if (k == "--walker")
       a.walker = v;
-    else if (k == "--walker-blind-arms")
-      a.walker_blind_arms = std::atoi(v) != 0;
     else if (k == "--dest")
       a.dest_m = std::atof(v);
     else if (k == "--vmax")
@@ -168,21 +166,11 @@ double ComAhead(const mjData* d, const sh::control::CarryIndex& ix) {
   return std::cos(yaw) * dx + std::sin(yaw) * dy;
 }
 
-// the walking observation's layout (WalkObservation): height, up and forward axes, linear and
-// angular velocity (13 entries), then the hinge angles minus the nominal pose, the hinge
-// velocities and the previous action, kWalkActDim each
 constexpr int kWalkActDim = sh::control::kWalkActDim;
-constexpr int kObsHinges = 13;
-constexpr int kObsHingeVel = kObsHinges + kWalkActDim;
-constexpr int kObsPrevAction = kObsHingeVel + kWalkActDim;
 
 // A walking policy driving the carry phase.
 struct Walker {
   sh::control::LoadedPolicy policy;
-  bool blind_arms = false;
-  // its own last outputs, clipped: in training its previous-action input held its arm outputs,
-  // while the carry task records the zeroed ones
-  std::array<float, kWalkActDim> prev{};
 };
 
 // Loads a walking policy (task "walk", the walking dimensions); errors name the file.
@@ -206,30 +194,15 @@ std::optional<Walker> LoadWalker(const std::string& path, std::string* error) {
   return w;
 }
 
-// The walker's action for the carry observation `obs` (arm entries zero).
-void WalkerAction(Walker& w, const sh::control::CarryState& s, const float* obs, float* act) {
+// The walker's action for the carry observation `obs` (its walking part; arm outputs zeroed).
+void WalkerAction(Walker& w, const float* obs, float* act) {
   std::array<float, sh::control::kWalkObsDim> o;
   std::copy(obs, obs + sh::control::kWalkObsDim, o.begin());
-  double swing[kWalkActDim];
-  sh::control::WalkReference(s.gait, s.walk.phase, s.walk.amplitude, s.walk.cmd, swing);
-  const auto& nominal = sh::control::WalkNominalPose();
-  for (int j = 0; j < kWalkActDim; ++j) {
-    if (sh::control::WalkActionUsed(j)) continue;
-    o[kObsPrevAction + j] = w.prev[j];
-    if (w.blind_arms) {
-      o[kObsHinges + j] = static_cast<float>(swing[j] - nominal[j]);
-      o[kObsHingeVel + j] = 0.f;
-    }
-  }
   torch::NoGradGuard ng;
   torch::Tensor x = torch::from_blob(o.data(), {1, sh::control::kWalkObsDim});
   torch::Tensor y = w.policy.actor->forward(w.policy.norm.Normalize(x)).contiguous();
   const float* raw = y.data_ptr<float>();
-  const float clip = static_cast<float>(sh::control::kWalkActionClip);
-  for (int j = 0; j < kWalkActDim; ++j) {
-    w.prev[j] = std::clamp(raw[j], -clip, clip);
-    act[j] = sh::control::WalkActionUsed(j) ? raw[j] : 0.f;
-  }
+  for (int j = 0; j < kWalkActDim; ++j) act[j] = sh::control::WalkActionUsed(j) ? raw[j] : 0.f;
 }
 
 // The largest contact normal force (N) between the box and the human's hands, and between the
@@ -298,7 +271,7 @@ void ChooseAction(Probe& p, std::vector<float>& obs, std::vector<float>& act,
   const int od = t.obs_dim(), ad = t.act_dim();
   std::fill(act.begin(), act.end(), 0.f);
   if (p.walker && t.state(0).phase == CarryPhase::kCarry) {
-    WalkerAction(*p.walker, t.state(0), obs.data(), act.data());
+    WalkerAction(*p.walker, obs.data(), act.data());
     return;
   }
   if (p.pol) {
@@ -380,7 +353,6 @@ EpisodeResult RunEpisode(Probe& p, int ep, double side, double mass) {
     t.StartHoldingNow(0, obs.data());
   else
     t.StartLiftNow(0, obs.data(), a.pose_at);
-  if (p.walker) p.walker->prev.fill(0.f);
   const mjModel* m = t.model(0);
   StartBoxForces(m, t.data(0), ix, t.box_geom(), &res.start_hands_n, &res.start_other_n,
                  &res.start_other_body);
@@ -538,7 +510,6 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s\n", error.c_str());
       return 1;
     }
-    p.walker->blind_arms = a.walker_blind_arms;
     const std::string& own = p.walker->policy.meta.variant;
     if (!a.gait.empty() && a.gait != own) {
       std::fprintf(stderr, "--gait '%s' differs from the gait '%s' that %s walks with\n",
@@ -560,7 +531,7 @@ int main(int argc, char** argv) {
   if (a.hold_rise > -9) params.hold_rise_m = a.hold_rise;
   if (a.hold_gap >= 0) params.hold_gap_m = a.hold_gap;
   if (a.reach_depth >= 0) params.max_reach_depth_m = a.reach_depth;
-  if (a.vmax > 0) params.walk.vmax_mps = a.vmax;
+  if (a.vmax > 0) params.walk.vmax_mps = params.carry_vmax_mps = a.vmax;
   sh::core::Rng rng(a.seed);
   std::vector<EpisodeResult> results;
   for (int ep = 0; ep < a.episodes; ++ep) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "simhuman/control/arm_servo.h"
+#include "simhuman/core/check.h"
 #include "simhuman/core/geometry.h"
 #include "simhuman/learn/walk_env.h"
 #include "simhuman/world/model_builder.h"
@@ -96,6 +97,11 @@ core::StatusOr<std::unique_ptr<CarryTask>> CarryTask::Create(int num_envs, std::
     e.scratch = mj_makeData(e.m);
   }
   return t;
+}
+
+void CarryTask::set_held_start_fraction(double f) {
+  SH_CHECK(f >= 0 && f <= 1, "the held-start fraction lies in [0, 1]");
+  held_start_fraction_ = f;
 }
 
 CarryTask::~CarryTask() {
@@ -226,10 +232,14 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   const double side = e.rng.Uniform(0.4 - 0.15 * c, 0.6 + 0.15 * c);
   const double mass = e.rng.Uniform(2.0, 5.0 + 8.0 * c);
   const double box_yaw = e.rng.Uniform(-M_PI, M_PI);
-  // half the episodes start at the box, ready to lift (the lift is practised from the first
-  // iteration, not only after a walk); the others 1-2 m (up to 5 m) away, facing the box
-  // within +-(30 + 150 c) degrees
-  const bool at_box = e.rng.Uniform() < kStartAtBoxFraction && !evaluation_;
+  // a fraction of the training episodes start holding the box (the carry phase's
+  // reference-state initialisation); of the others half start at the box, ready to lift (the
+  // lift is practised from the first iteration, not only after a walk), the rest 1-2 m (up to
+  // 5 m) away, facing the box within +-(30 + 150 c) degrees. Evaluation draws neither number
+  // and a zero fraction draws none, so those episodes are as they were before held starts.
+  const bool held =
+      !evaluation_ && held_start_fraction_ > 0 && e.rng.Uniform() < held_start_fraction_;
+  const bool at_box = held || (!evaluation_ && e.rng.Uniform() < kStartAtBoxFraction);
   Eigen::Vector2d start;
   double yaw;
   if (at_box) {
@@ -265,7 +275,9 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   const double dest_dir = e.rng.Uniform(-M_PI, M_PI);
   SetBox(i, side, mass, Eigen::Vector3d(0, 0, 0), box_yaw,
          dest_dist * Eigen::Vector2d(std::cos(dest_dir), std::sin(dest_dir)), obs);
-  if (at_box) {
+  if (held) {
+    StartHoldingNow(i, obs);
+  } else if (at_box) {
     // and some of them part-way down into the squat (reference-state initialisation)
     const double pose_at = e.rng.Uniform() < kStartInSquatFraction
                                ? e.rng.Uniform(0.0, control::LiftRiseStartSeconds())

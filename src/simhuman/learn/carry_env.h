@@ -7,8 +7,9 @@
 /// Each env owns a copy of the model so the box's size and mass differ per episode. Boxes are
 /// cubes of side 0.4-0.6 m and 2-5 kg at curriculum 0, growing to CooHOI's 0.25-0.75 m and
 /// 2-13 kg at 1; the human starts 1-2 m (up to 5 m) from the box, the destination is 1-3 m (up
-/// to 10 m) from it in any direction. Half the episodes start at the box, lifting (as DeepMimic's
-/// reference state initialisation starts episodes inside the hard part of a motion).
+/// to 10 m) from it in any direction. A share of the episodes (35 % by default) start holding the
+/// box, in the carry phase, and half the others at the box, lifting (as DeepMimic's reference
+/// state initialisation starts episodes inside the hard part of a motion).
 ///
 /// Terminations: a fall (a body other than the feet and hands on the floor, the pelvis or the
 /// head too low for the phase), a kick (the box sliding faster than 1 m/s while no hand should
@@ -83,8 +84,16 @@ class CarryTask : public VecTask {
   /// `squeeze_m` of press, and the lift's clock is at its end, so the next step enters the carry.
   void StartHoldingNow(int i, float* obs);
 
-  /// Evaluation starts: no episode starts at the box or inside the lift (Reset always walks up
-  /// from 1-2 m, up to 5 m at curriculum 1), and episodes are cut after `max_steps` policy steps.
+  /// The default share of training Reset()s that start holding the box (StartHoldingNow).
+  static constexpr double kDefaultHeldStartFraction = 0.35;
+  /// Sets that share, in [0, 1] (the training config's carry_held_start_frac, validated there;
+  /// out of range is a bug). Evaluation never starts holding.
+  void set_held_start_fraction(double f);
+  double held_start_fraction() const { return held_start_fraction_; }
+
+  /// Evaluation starts: no episode starts holding the box, at the box or inside the lift (Reset
+  /// always walks up from 1-2 m, up to 5 m at curriculum 1), and episodes are cut after `max_steps`
+  /// policy steps.
   void SetEvaluation(int max_steps) {
     evaluation_ = true;
     max_steps_ = max_steps;
@@ -115,6 +124,7 @@ class CarryTask : public VecTask {
   double curriculum_ = 0;
   bool evaluation_ = false;
   int max_steps_ = kMaxSteps;
+  double held_start_fraction_ = kDefaultHeldStartFraction;
 };
 
 }  // namespace simhuman::learn

@@ -34,6 +34,7 @@ TEST(Tasks, NamesAndSolverChoiceAgreeWithTheRegistry) {
 TEST(CarryTask, ObservationIsFiniteAndTheLayoutFull) {
   auto t = CarryTask::Create(2);
   ASSERT_TRUE(t.ok()) << t.status();
+  (*t)->set_held_start_fraction(0);
   std::vector<float> obs((*t)->obs_dim(), NAN);
   (*t)->Reset(0, 7, obs.data());
   for (int k = 0; k < (*t)->obs_dim(); ++k) EXPECT_TRUE(std::isfinite(obs[k])) << k;
@@ -76,6 +77,7 @@ TEST(CarryTask, KeyframesReachTheHeldPointsForEverySize) {
 TEST(CarryTask, SomeEpisodesStartLiftingAtTheBox) {
   auto t = CarryTask::Create(1);
   ASSERT_TRUE(t.ok()) << t.status();
+  (*t)->set_held_start_fraction(0);  // held starts are the lift's last instant
   std::vector<float> obs((*t)->obs_dim());
   int lifting = 0, approaching = 0;
   for (uint64_t seed = 0; seed < 40; ++seed) {
@@ -96,6 +98,7 @@ TEST(CarryTask, SomeEpisodesStartLiftingAtTheBox) {
 TEST(CarryTask, SomeLiftsStartPartWayIntoTheSquat) {
   auto t = CarryTask::Create(1);
   ASSERT_TRUE(t.ok()) << t.status();
+  (*t)->set_held_start_fraction(0);
   std::vector<float> obs((*t)->obs_dim());
   const world::AgentIndex& a = (*t)->index().walk.agent;
   int in_squat = 0;
@@ -121,6 +124,7 @@ TEST(CarryTask, SomeLiftsStartPartWayIntoTheSquat) {
 TEST(CarryTask, GripServoPressesBothHandsOnTheBoxWithZeroAction) {
   auto t = CarryTask::Create(1);
   ASSERT_TRUE(t.ok()) << t.status();
+  (*t)->set_held_start_fraction(0);  // lifts from the squat
   std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
   int gripped = 0, lifts = 0;
   for (uint64_t seed = 0; seed < 100 && lifts < 8; ++seed) {
@@ -436,6 +440,156 @@ TEST(CarryTask, EveryGeomOfASmallBoxScalesWithIt) {
     EXPECT_LT(f[0], kMaxArmForceN)
         << mj_id2name(m, mjOBJ_GEOM, con.geom1) << " - " << mj_id2name(m, mjOBJ_GEOM, con.geom2);
   }
+}
+
+// whether env i's episode started holding its box: the lift's last instant, the box off the
+// floor (StartHoldingNow)
+bool StartedHolding(const CarryTask& t, int i) {
+  const control::CarryState& s = t.state(i);
+  const control::CarryBox b = control::ReadCarryBox(t.model(i), t.data(i), t.box_geom());
+  return s.phase == CarryPhase::kLift && s.phase_time_s > control::kLiftSeconds - 1e-3 &&
+         control::BoxLowestZ(b) > 0.1;
+}
+
+// reference-state starts of the carry phase: the configured share of training resets start
+// holding the box and enter the carry at the first step; evaluation never does
+TEST(CarryTask, AShareOfTrainingResetsStartHoldingTheBox) {
+  constexpr int kResets = 60;
+  auto t = CarryTask::Create(1);
+  ASSERT_TRUE(t.ok()) << t.status();
+  EXPECT_EQ((*t)->held_start_fraction(), CarryTask::kDefaultHeldStartFraction);
+  EXPECT_EQ(PpoConfig().carry_held_start_frac, CarryTask::kDefaultHeldStartFraction);
+  std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
+  (*t)->set_held_start_fraction(0.35);
+  int held = 0;
+  for (uint64_t seed = 0; seed < kResets; ++seed) {
+    (*t)->Reset(0, seed, obs.data());
+    if (!StartedHolding(**t, 0)) continue;
+    ++held;
+    StepInfo info;
+    (*t)->Step(0, act.data(), obs.data(), &info);
+    EXPECT_EQ((*t)->state(0).phase, CarryPhase::kCarry) << seed;
+    EXPECT_FALSE(info.terminated) << seed;
+  }
+  // binomial(60, 0.35): 21 +- 3.7
+  EXPECT_GE(held, 12);
+  EXPECT_LE(held, 30);
+  (*t)->set_held_start_fraction(0);
+  for (uint64_t seed = 0; seed < 10; ++seed) {
+    (*t)->Reset(0, seed, obs.data());
+    EXPECT_FALSE(StartedHolding(**t, 0)) << seed;
+  }
+  (*t)->set_held_start_fraction(1);
+  for (uint64_t seed = 0; seed < 10; ++seed) {
+    (*t)->Reset(0, seed, obs.data());
+    EXPECT_TRUE(StartedHolding(**t, 0)) << seed;
+  }
+  (*t)->SetEvaluation(100);
+  for (uint64_t seed = 0; seed < 10; ++seed) {
+    (*t)->Reset(0, seed, obs.data());
+    EXPECT_EQ((*t)->state(0).phase, CarryPhase::kApproach) << seed;
+  }
+}
+
+// while the task holds the arms, the walking part of the carry observation shows them as the
+// walker saw them while walking (its gait's swing, at rest, no previous arm action), wherever
+// the arms really are; while walking up to the box it shows the real arms
+TEST(CarryTask, BlindArmsShowWhatTheWalkerSeesWhenWalking) {
+  auto t = CarryTask::Create(1);
+  ASSERT_TRUE(t.ok()) << t.status();
+  (*t)->set_held_start_fraction(0);
+  (*t)->SetEvaluation(100);
+  std::vector<float> obs((*t)->obs_dim());
+  (*t)->Reset(0, 5, obs.data());
+  const control::CarryIndex& ix = (*t)->index();
+  const world::AgentIndex& a = ix.walk.agent;
+  const mjModel* m = (*t)->model(0);
+  mjData* d = const_cast<mjData*>((*t)->data(0));  // posed by hand here
+  control::CarryState s = (*t)->state(0);
+  s.walk.phase = 0.3;  // mid-stride
+  s.walk.amplitude = 1.0;
+  s.walk.cmd.vx = 0.8;
+  // the walker walking: its arms on its swing, at rest, previous arm actions zero
+  double swing[control::kWalkActDim];
+  control::WalkReference(s.gait, s.walk.phase, s.walk.amplitude, s.walk.cmd, swing);
+  for (int j = 0; j < control::kWalkActDim; ++j) {
+    if (control::WalkActionUsed(j)) {
+      s.walk.prev_action[j] = 0.1f * j;
+      continue;
+    }
+    d->qpos[a.hinge_qpos[j]] = swing[j];
+    d->qvel[a.hinge_qvel[j]] = 0;
+    s.walk.prev_action[j] = 0;
+  }
+  mj_forward(m, d);
+  std::vector<float> walking(control::kWalkObsDim);
+  control::WalkObservation(s.gait, d, ix.walk, s.walk, walking.data());
+  const control::CarryBox box = control::ReadCarryBox(m, d, (*t)->box_geom());
+  // holding: the arms elsewhere, moving, with previous arm actions
+  for (int j = 0; j < control::kWalkActDim; ++j) {
+    if (control::WalkActionUsed(j)) continue;
+    d->qpos[a.hinge_qpos[j]] = swing[j] + 0.4;
+    d->qvel[a.hinge_qvel[j]] = 2.0;
+    s.walk.prev_action[j] = 0.7f;
+  }
+  mj_forward(m, d);
+  int changed = 0;
+  for (CarryPhase ph : {CarryPhase::kApproach, CarryPhase::kLift, CarryPhase::kCarry,
+                        CarryPhase::kPutDown, CarryPhase::kRetreat}) {
+    s.phase = ph;
+    control::CarryObservation(d, ix, s, box, obs.data());
+    if (control::CarryArmsHeld(s)) {
+      for (int k = 0; k < control::kWalkObsDim; ++k) {
+        EXPECT_EQ(obs[k], walking[k]) << control::CarryPhaseName(ph) << " entry " << k;
+      }
+    } else {
+      for (int k = 0; k < control::kWalkObsDim; ++k) changed += obs[k] != walking[k];
+    }
+  }
+  EXPECT_EQ(changed, 2 * 3 * 8);  // approach and retreat show the real arms: 8 x 3 entries each
+}
+
+// the shipped walking policy, run on the walking part of the carry observation with its arm
+// outputs zeroed (what a carry policy initialised from it does), carries a light box it starts
+// holding, with gripping hands: the starting point of carry training (docs/BENCHMARKS.md,
+// issue 17, session 26; shown the real holding arms it fell within 1.4-3.7 s)
+TEST(CarryTask, TheWalkingPolicyCarriesAHeldLightBoxIntegration) {
+  constexpr double kSeconds = 4, kMinProgressM = 1.5;
+  auto w = control::LoadPolicyFile(std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/walk.pt");
+  ASSERT_TRUE(w.ok()) << w.status();
+  auto t = CarryTask::Create(1, w->meta.variant, /*grip=*/true);
+  ASSERT_TRUE(t.ok()) << t.status();
+  (*t)->SetEvaluation(1000);
+  std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
+  (*t)->Reset(0, 3000, obs.data());
+  Eigen::Vector3d pelvis;
+  double yaw;
+  control::PelvisPose((*t)->data(0), (*t)->index().walk, &pelvis, &yaw);
+  const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
+  Eigen::Vector3d box = pelvis + ((*t)->params().stand_gap_m + 0.2) * fwd;
+  box.z() = 0;
+  (*t)->SetBox(0, 0.4, 2.0, box, yaw, (box + 10.0 * fwd).head<2>(), obs.data());
+  (*t)->StartHoldingNow(0, obs.data());
+  const auto box_at = [&] {
+    return control::ReadCarryBox((*t)->model(0), (*t)->data(0), (*t)->box_geom()).pos;
+  };
+  const Eigen::Vector3d start = box_at();
+  for (int k = 0; k < kSeconds * 30; ++k) {
+    torch::NoGradGuard ng;
+    torch::Tensor o = torch::from_blob(obs.data(), {1, control::kWalkObsDim});
+    torch::Tensor y = w->actor->forward(w->norm.Normalize(o)).contiguous();
+    for (int j = 0; j < control::kWalkActDim; ++j) {
+      act[j] = control::WalkActionUsed(j) ? y.data_ptr<float>()[j] : 0.f;
+    }
+    StepInfo info;
+    (*t)->Step(0, act.data(), obs.data(), &info);
+    ASSERT_FALSE(info.terminated) << CarryFailureName((*t)->last_failure(0)) << " at " << k;
+  }
+  EXPECT_EQ((*t)->state(0).phase, CarryPhase::kCarry);
+  EXPECT_GT((box_at() - start).dot(fwd), kMinProgressM);
+  EXPECT_GT(
+      control::BoxLowestZ(control::ReadCarryBox((*t)->model(0), (*t)->data(0), (*t)->box_geom())),
+      0.1);
 }
 
 }  // namespace

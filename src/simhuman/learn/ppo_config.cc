@@ -41,6 +41,9 @@ const core::FieldTable<PpoConfig>& Table() {
          "walk and carry tasks' reference gait (\"\" the original, or human)"),
        F("carry_grip", &PpoConfig::carry_grip,
          "carry task: the hands grip the box while holding it (agent kind humanoid_grip)"),
+       F("carry_held_start_frac", &PpoConfig::carry_held_start_frac,
+         "carry task: share of training episodes that start holding the box")
+           .In(NumberRange::Closed(0, 1)),
        F("walk_gait_weight", &PpoConfig::walk_gait_weight,
          "walk task: weight of the reward for the legs following the reference gait")
            .In(kAtLeast0),
@@ -135,6 +138,11 @@ absl::Status PpoConfig::Validate() const {
         task + "'");
   }
   const PpoConfig defaults;
+  if (task != "carry" && carry_held_start_frac != defaults.carry_held_start_frac) {
+    return absl::InvalidArgumentError(
+        "training config: carry_held_start_frac applies to the carry task only; task is '" + task +
+        "'");
+  }
   if (!TaskHasBodyScales(task) && (walk_gait_weight != defaults.walk_gait_weight ||
                                    walk_gait_width != defaults.walk_gait_width ||
                                    walk_foot_slip_weight != defaults.walk_foot_slip_weight)) {

@@ -39,6 +39,10 @@ struct PpoConfig {
   /// carry task: the human's hands grip the box while they hold it (world kind
   /// "humanoid_grip"); recorded in the policy file
   bool carry_grip = false;
+  /// carry task: the share of training episodes that start holding the box in the carry phase
+  /// (reference-state initialisation), in [0, 1]; the default is
+  /// learn::CarryTask::kDefaultHeldStartFraction. Evaluation always walks up to the box.
+  double carry_held_start_frac = 0.35;
   /// walk task's reward: the leg gait term's weight and width (rad^2), the foot-slip weight
   double walk_gait_weight = 1.0;
   double walk_gait_width = 0.5;

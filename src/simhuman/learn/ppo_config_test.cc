@@ -20,8 +20,8 @@ TEST(PpoConfigTable, DefaultsRoundTripThroughToJsonWithEveryKey) {
   const PpoConfig defaults;
   json j = defaults.ToJson();
   // every key (38 before the table, + target_kl, body_scales, walk_gait, the walk reward's 3,
-  // carry_grip)
-  EXPECT_EQ(j.size(), 45u);
+  // carry_grip, carry_held_start_frac)
+  EXPECT_EQ(j.size(), 46u);
   EXPECT_EQ(j["walk_gait"], "");
   EXPECT_EQ(j["carry_grip"], false);
   EXPECT_EQ(j["walk_gait_weight"], 1.0);
@@ -56,6 +56,10 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
             "training config 'body_scales' = [0.6, 2] is invalid; entry 1 (2) is outside the "
             "valid range [0.5, 1.5]");
   EXPECT_THAT(Error(json{{"body_scales", json::array()}}), HasSubstr("at least 1 entry"));
+  EXPECT_EQ(Error(json{{"task", "carry"}, {"carry_held_start_frac", 1.5}}),
+            "training config 'carry_held_start_frac' = 1.5 is invalid; valid range is [0, 1]");
+  EXPECT_THAT(Error(json{{"task", "walk"}, {"carry_held_start_frac", 0.5}}),
+              HasSubstr("carry_held_start_frac applies to the carry task only; task is 'walk'"));
   EXPECT_THAT(Error(json{{"walk_gait_width", 0}}),
               HasSubstr("training config 'walk_gait_width' = 0 is invalid; valid range is (0"));
   EXPECT_THAT(Error(json{{"task", "grasp"}, {"walk_foot_slip_weight", 2}}),

@@ -32,6 +32,7 @@ const std::vector<TaskDef>& Tasks() {
        [](int envs, const TaskOptions& o) -> core::StatusOr<std::unique_ptr<VecTask>> {
          SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> t,
                              CarryTask::Create(envs, o.walk_gait, o.carry_grip));
+         t->set_held_start_fraction(o.carry_held_start_frac);
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "walk", false},

@@ -501,6 +501,7 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
     case CarryPhase::kLift:
       if (s->phase_time_s >= kLiftSeconds) {
         Enter(s, CarryPhase::kCarry);
+        s->gait.vmax_mps = std::min(p.walk.vmax_mps, p.carry_vmax_mps);
         // walk so that the held box centre ends over the destination, facing along the way
         Eigen::Vector2d way = s->dest_xy - pos.head<2>();
         double heading = way.norm() > 0.3 ? std::atan2(way.y(), way.x()) : yaw;
@@ -512,6 +513,7 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
     case CarryPhase::kCarry:
       if (Arrived(p, d, ix, *s)) {
         Enter(s, CarryPhase::kPutDown);
+        s->gait = p.walk;
         SetWalkTarget(s, pos.head<2>(), yaw);
       }
       break;
@@ -525,7 +527,7 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
     case CarryPhase::kRetreat:
       break;
   }
-  UpdateWalkCommand(p.walk, d, ix.walk, &s->walk);
+  UpdateWalkCommand(s->gait, d, ix.walk, &s->walk);
   UpdateGrip(p, m, d, ix, box, s);
 }
 
@@ -623,9 +625,27 @@ void CarryTargets(const CarryIndex& ix, const CarryState& s, const float* action
   }
 }
 
+bool CarryArmsHeld(const CarryState& s) {
+  return s.phase == CarryPhase::kLift || s.phase == CarryPhase::kCarry ||
+         s.phase == CarryPhase::kPutDown;
+}
+
+void CarryBlindArms(const CarryState& s, float* walk_obs) {
+  double swing[kWalkActDim];
+  WalkReference(s.gait, s.walk.phase, s.walk.amplitude, s.walk.cmd, swing);
+  const Pose& nominal = WalkNominalPose();
+  for (int j = 0; j < kWalkActDim; ++j) {
+    if (WalkActionUsed(j)) continue;
+    walk_obs[kWalkObsHinges + j] = static_cast<float>(swing[j] - nominal[j]);
+    walk_obs[kWalkObsHingeVel + j] = 0.f;
+    walk_obs[kWalkObsPrevAction + j] = 0.f;
+  }
+}
+
 void CarryObservation(const mjData* d, const CarryIndex& ix, const CarryState& s,
                       const CarryBox& box, float* obs) {
   WalkObservation(s.gait, d, ix.walk, s.walk, obs);
+  if (CarryArmsHeld(s)) CarryBlindArms(s, obs);
   float* o = obs + kWalkObsDim;
   int k = 0;
   Eigen::Vector3d pos;

@@ -65,6 +65,10 @@ struct CarryParams {
   /// The walking reference gait (WalkGait) of the walking policy the carry policy starts from:
   /// the approach, the carry and the retreat walk to it
   WalkParams walk;
+  /// The carry phase's top walking speed (m/s): the command and the reference stride use
+  /// min(walk.vmax_mps, this) while carrying (a walker holding 5-7 kg keeps it 6 of 6 times at
+  /// 0.8 against 1 of 6 at the human gait's 1.3; docs/BENCHMARKS.md, issue 17, session 26)
+  double carry_vmax_mps = 0.8;
 };
 
 /// The box being carried, in the world (from the simulation or a perception estimate).
@@ -165,9 +169,21 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
                  const CarryIndex& ix, const CarryBox& box, CarryState* s);
 
 /// Writes kCarryObsDim floats: the walking observation, then the box, the destination, the
-/// phase and the hands (see docs/FORMATS.md, "Carrying policy").
+/// phase and the hands (see docs/FORMATS.md, "Carrying policy"). While the task holds the arms
+/// (CarryArmsHeld) the walking part's arm entries are blind (CarryBlindArms).
 void CarryObservation(const mjData* d, const CarryIndex& ix, const CarryState& s,
                       const CarryBox& box, float* obs);
+
+/// Whether the task, not the walking gait, poses the arms: the lift, the carry and the put-down.
+bool CarryArmsHeld(const CarryState& s);
+
+/// "Blind arms": overwrites the 8 arm entries (those WalkActionUsed ignores) of a walking
+/// observation `walk_obs` (kWalkObsDim floats) with what a walker sees of its own arms while it
+/// walks: the angles of the gait's arm swing at the current clock and command, velocity 0 and
+/// previous action 0. A walking policy shown the holding arms falls even with a 0.5 kg box; shown
+/// its own swing it carries boxes up to 7 kg (docs/BENCHMARKS.md, issue 17, session 26). The
+/// hands stay observed through the carry entries (hands relative to the held points, contacts).
+void CarryBlindArms(const CarryState& s, float* walk_obs);
 
 /// The phase's reference pose (28 hinges): walking gait, lift or put-down blend, holding arms.
 void CarryReference(const CarryState& s, double* q28);

@@ -28,6 +28,12 @@ inline constexpr int kWalkSubsteps = 4;                ///< physics steps per po
 inline constexpr double kWalkPolicyDt = kWalkPhysicsDt * kWalkSubsteps;  ///< s (30 Hz)
 inline constexpr int kWalkObsDim = 116;
 inline constexpr int kWalkActDim = world::kHumanoidDofs;
+/// The walking observation's layout (WalkObservation): height, up and forward axes, linear and
+/// angular velocity (13 entries), then kWalkActDim each of the hinge angles minus the nominal
+/// pose, the hinge velocities and the previous action, then the command part.
+inline constexpr int kWalkObsHinges = 13;
+inline constexpr int kWalkObsHingeVel = kWalkObsHinges + kWalkActDim;
+inline constexpr int kWalkObsPrevAction = kWalkObsHingeVel + kWalkActDim;
 inline constexpr double kWalkActionScale = 0.5;  ///< rad of PD-target offset per action unit
 inline constexpr double kWalkActionClip = 3.0;   ///< actions are clipped to +-this
 
