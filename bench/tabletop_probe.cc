@@ -224,7 +224,10 @@ int main(int argc, char** argv) {
     if (a.approach_steps > 0) so.approach_steps = a.approach_steps;
     if (a.thumb_delay >= 0) so.thumb_delay_steps = a.thumb_delay;
     if (a.rot_weight > 0) so.ik_rot_weight_m = a.rot_weight;
-    auto grasp = sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, g, pipeline, so);
+    const sh::control::manip::GraspPolicyFactory grasp =
+        [&](const sh::control::manip::TabletopGoal& at) {
+          return sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, at, pipeline, so);
+        };
     std::unique_ptr<sh::render::OffscreenRenderer> r;
     std::vector<std::vector<uint8_t>> frames;
     constexpr int kW = 320, kH = 240;

@@ -157,6 +157,12 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
   eval_cmd->add_option("--grasp-policy", ev->grasp_policy,
                        "tabletop, place, stack: grasp policy file or 'scripted' (default "
                        "assets/policies/grasp.pt if present, else scripted)");
+  eval_cmd
+      ->add_option("--grasp-attempts", ev->grasp_attempts,
+                   "tabletop, place, stack: grasps tried on one object before a miss ends the "
+                   "episode (1: no second try, as DASH)")
+      ->check(CLI::Range(1, 5))
+      ->capture_default_str();
   eval_cmd->add_option("--vision-model", ev->vision_model,
                        "vision suite, --perception vision: model file (default "
                        "assets/vision/vision.pt)");

@@ -120,6 +120,8 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
   EXPECT_FALSE(std::filesystem::exists(out + "/p"));
   ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--perception", "eyes"}),
                  {"--perception", "truth", "vision"});
+  ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--grasp-attempts", "0"}),
+                 {"--grasp-attempts", "not in range 1 to 5"});
   ExpectBadInput(Cli({"run", "--scene", "tabletop_demo", "--perception", "eyes", "--command",
                       "put the red box on the blue cylinder"}),
                  {"--perception"});

@@ -35,6 +35,8 @@ struct EvalFlags {
   /// Tabletop suites: a grasp policy file, or "scripted"; empty: assets/policies/grasp.pt when
   /// it exists, else "scripted".
   std::string grasp_policy;
+  /// Tabletop suites: grasps tried on one object (control::manip::TabletopOptions).
+  int grasp_attempts = 2;
   /// Tabletop suites: "truth" or "vision" (the head camera and the vision model).
   std::string perception = "truth";
   /// The vision suite and --perception vision: a model file (simhuman train --task vision); empty:

@@ -31,6 +31,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   o.seed = flags.seed;
   o.grasp = eval::DefaultGraspPolicy(flags.grasp_policy);
   o.perception = flags.perception;
+  o.grasp_attempts = flags.grasp_attempts;
   o.vision_model = flags.vision_model.empty() ? DefaultVisionModel() : flags.vision_model;
   if (o.perception == "vision") {
     if (absl::Status s = CheckVisionModelFile(o.vision_model); !s.ok()) {
@@ -42,9 +43,9 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   if (!made.ok()) return ReportError(err, kCommand, made);
   std::ofstream lines(dir + "/episodes.jsonl", std::ios::trunc);
   out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes, seed "
-      << o.seed << ", grasp " << o.grasp << ", perception " << o.perception
-      << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string()) << " -> " << dir
-      << std::endl;
+      << o.seed << ", grasp " << o.grasp << " (" << o.grasp_attempts << " attempts), perception "
+      << o.perception << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string())
+      << " -> " << dir << std::endl;
   out << "  ep kind   object        shape     ok   failed at    steps wall_s  end" << std::endl;
   core::StatusOr<eval::TabletopEvalSummary> s =
       eval::RunTabletopEval(o, [&](const eval::TabletopEpisode& e) {
@@ -56,6 +57,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   summary["suite"] = flags.suite;
   summary["seed"] = o.seed;
   summary["grasp"] = o.grasp;
+  summary["grasp_attempts"] = o.grasp_attempts;
   if (o.perception == "vision") summary["vision_model"] = o.vision_model;
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) summary[key] = value;
@@ -89,6 +91,8 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   for (const auto& [stage, n] : s->failures_by_stage) {
     out << "  failed at " << stage << ": " << n << std::endl;
   }
+  out << "  grasped again after a miss: " << s->regrasped << " episodes, " << s->regrasped_successes
+      << " of them succeeded" << std::endl;
   for (const auto& [task, t] : s->by_task) {
     out << "  " << task << ": " << t.successes << "/" << t.episodes << " (" << t.plan_failures
         << " plan failures)" << std::endl;

@@ -129,6 +129,8 @@ nlohmann::json TabletopEvalSummary::ToJson() const {
           {"success_rate", success_rate},
           {"success_rate_excluding_plan_failures", success_rate_no_plan_fail},
           {"failures_by_stage", failures_by_stage},
+          {"regrasped", regrasped},
+          {"regrasped_successes", regrasped_successes},
           {"pipeline_steps_per_s", steps_per_s},
           {"raw_mj_step_steps_per_s", raw_steps_per_s},
           {"pipeline_steps_per_cpu_s", cpu_steps_per_s},
@@ -152,6 +154,7 @@ nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
           {"failed_stage", e.failed_stage},
           {"end_reason", e.end_reason},
           {"sim_steps", e.sim_steps},
+          {"grasp_attempts", e.grasp_attempts},
           {"wall_s", e.wall_s},
           {"cpu_s", e.cpu_s}};
 }
@@ -167,7 +170,8 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   std::unique_ptr<TabletopVision> vision;
   SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
                       control::LoadGraspPolicy(o.grasp));
-  const control::manip::TabletopOptions pipeline;  // named: GCC 12 misreads a default temporary
+  control::manip::TabletopOptions pipeline;
+  pipeline.grasp_attempts = o.grasp_attempts;
   TabletopEvalSummary sum;
   int64_t steps = 0;
   double wall = 0, cpu = 0;
@@ -205,8 +209,9 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
       };
     }
     if (seen.ok()) {
-      const control::manip::GraspPolicyFn grasp =
-          make_grasp(w->model(), w->data(), ix, goal, pipeline);
+      const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
+        return make_grasp(w->model(), w->data(), ix, g, pipeline);
+      };
       r = control::manip::RunTabletop(*w, ix, goal, grasp, pipeline, hook);
       if (!seen.ok()) return seen;  // the renderer failed mid-episode
     } else {
@@ -229,6 +234,9 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
                                   : control::manip::TabletopStageName(r.failed_stage);
     e.end_reason = r.end_reason;
     e.sim_steps = r.sim_steps;
+    e.grasp_attempts = r.grasp_attempts;
+    sum.regrasped += r.grasp_attempts > 1;
+    sum.regrasped_successes += r.grasp_attempts > 1 && r.success;
     e.wall_s = r.wall_s;
     e.cpu_s = r.cpu_s;
     ++sum.episodes;
@@ -353,7 +361,9 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
   const control::manip::TabletopOptions options;
   SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
                       control::LoadGraspPolicy(grasp_policy));
-  const control::manip::GraspPolicyFn grasp = make_grasp(w.model(), w.data(), ix, goal, options);
+  const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
+    return make_grasp(w.model(), w.data(), ix, g, options);
+  };
   const mjModel* m = w.model();
   if (trajectory) {
     *trajectory = control::Trajectory();

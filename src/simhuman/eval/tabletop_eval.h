@@ -34,6 +34,9 @@ struct TabletopEvalOptions {
   /// vision model `vision_model` (eval/tabletop_vision.h).
   std::string perception = "truth";
   std::string vision_model;
+  /// Grasps tried on one object before a miss ends the episode
+  /// (control::manip::TabletopOptions::grasp_attempts).
+  int grasp_attempts = 2;
 };
 
 /// The --perception values.
@@ -47,6 +50,7 @@ struct TabletopEpisode {
   std::string failed_stage;  ///< "" on success
   std::string end_reason;
   int sim_steps = 0;
+  int grasp_attempts = 0;  ///< grasps begun
   double wall_s = 0, cpu_s = 0;
 };
 
@@ -55,6 +59,8 @@ struct TabletopEvalSummary {
   double success_rate = 0;               ///< over all trials
   double success_rate_no_plan_fail = 0;  ///< excluding motion-planning failures (DASH reports it)
   std::map<std::string, int> failures_by_stage;
+  /// Episodes that grasped more than once, and how many of those succeeded.
+  int regrasped = 0, regrasped_successes = 0;
   /// Per task, keyed "<kind>/<shape of the object moved>" (e.g. "stack/cylinder").
   struct Tally {
     int episodes = 0, successes = 0, plan_failures = 0;

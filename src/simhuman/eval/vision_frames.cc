@@ -76,8 +76,9 @@ core::Status CollectVisionFrames(const VisionFrameOptions& o,
     SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix,
                         control::manip::MakeGraspIndex(*e.world, 0, true));
     SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopSceneGoal(e.ts, *e.world));
-    const control::manip::GraspPolicyFn grasp =
-        make_grasp(e.world->model(), e.world->data(), ix, goal, pipeline);
+    const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
+      return make_grasp(e.world->model(), e.world->data(), ix, g, pipeline);
+    };
     core::Rng rng(core::DeriveSeed(seed, 0x9a2f));
     const Eigen::Vector3d aim = goal.target + Jitter(rng, o.position_noise_m);
     const Eigen::Vector3d start =

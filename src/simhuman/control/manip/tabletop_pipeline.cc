@@ -76,7 +76,7 @@ class Run {
   }
   ~Run() { mj_deleteData(scratch_); }
 
-  TabletopResult Go(const GraspPolicyFn& policy);
+  TabletopResult Go(const GraspPolicyFactory& make_policy);
 
  private:
   // one physics step: the arm by the tracker (or the grasp targets), the fingers by their
@@ -171,13 +171,17 @@ class Run {
   }
   std::optional<TabletopResult> Reach(ArmTracker& tr);
   std::optional<TabletopResult> Transport(ArmTracker& tr);
+  std::optional<TabletopResult> GraspAndLift(ArmTracker& tr, const GraspPolicyFn& policy);
+  bool LetGo(ArmTracker& tr);
+  std::optional<std::string> ReadyForRetry(ArmTracker& tr);
+  static constexpr double kRetrySettleS = 0.5;  // the object comes to rest before the next look
 
   world::SimWorld& w_;
   const mjModel* m_;
   mjData* d_;
   mjData* scratch_ = nullptr;
   const GraspIndex& ix_;
-  const TabletopGoal& g_;
+  TabletopGoal g_;  // a copy: a new attempt plans from where the object now stands
   const TabletopOptions& o_;
   const StepHook& hook_;
   GraspState s_;
@@ -348,21 +352,9 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   return std::nullopt;
 }
 
-TabletopResult Run::Go(const GraspPolicyFn& policy) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  const double cpu0 = ThreadCpuSeconds();
-  core::StatusOr<ArmTracker> tracker = ArmTracker::Create(m_, ix_.arm, o_.tracker);
-  if (!tracker.ok()) return Fail(TabletopStage::kReach, std::string(tracker.status().message()));
-  ArmTracker& tr = *tracker;
-  auto finish = [&](TabletopResult r) {
-    r.final_pos = ObjectCom();
-    r.sim_steps = steps_;
-    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    r.cpu_s = ThreadCpuSeconds() - cpu0;
-    return r;
-  };
-  if (auto f = Reach(tr)) return finish(*f);
-  // grasp: the policy at 40 Hz
+// grasp: the policy at 40 Hz, the grip then held by targets the fingers cannot reach (DASH's
+// tracking-error trick), and the lift; a grasp miss when the object does not rise with the hand
+std::optional<TabletopResult> Run::GraspAndLift(ArmTracker& tr, const GraspPolicyFn& policy) {
   HoldCurrentPose(d_, ix_, &s_);
   const int substeps = std::max(1, static_cast<int>(std::lround(0.025 / m_->opt.timestep)));
   std::vector<float> obs(kGraspObsDim), act(kGraspActDim);
@@ -371,14 +363,13 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
     policy(obs.data(), act.data());
     ApplyGraspAction(ix_, act.data(), &s_);
     for (int j = 0; j < substeps; ++j) {
-      if (!Step({})) return finish(Fail(TabletopStage::kGrasp, "unstable simulation"));
+      if (!Step({})) return Fail(TabletopStage::kGrasp, "unstable simulation");
     }
   }
   // what touched the object when the grasp ended (said in a grasp miss's end reason)
   float touch[kGraspTouchParts];
   GraspTouch(m_, d_, ix_, g_.object_body, touch);
   const std::string grip = GripSummary(touch);
-  // the grip is held by targets the fingers cannot reach (DASH's tracking-error trick)
   for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) {
     const double e = s_.target[i] - d_->qpos[ix_.qpos[i]];
     s_.target[i] = std::clamp(s_.target[i] + (e > 0   ? 1
@@ -389,13 +380,93 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
   }
   const double z0 = ObjectCom().z();
   if (!MovePalm(tr, Eigen::Vector3d(0, 0, o_.lift_m), 0.8, {})) {
-    return finish(Fail(TabletopStage::kLift, "unstable simulation"));
+    return Fail(TabletopStage::kLift, "unstable simulation");
   }
   if (!InHand() || ObjectCom().z() - z0 < 0.5 * o_.lift_m) {
-    return finish(Fail(TabletopStage::kGrasp,
-                       "grasp miss: the object did not rise with the hand (touching it at the "
-                       "end of the grasp: " +
-                           grip + ")"));
+    return Fail(TabletopStage::kGrasp,
+                "grasp miss: the object did not rise with the hand (touching it at the end of "
+                "the grasp: " +
+                    grip + ")");
+  }
+  return std::nullopt;
+}
+
+// the fingers open over release_s while the arm holds, then the palm backs away from the object
+// and rises
+bool Run::LetGo(ArmTracker& tr) {
+  const Eigen::VectorXd hold = ix_.arm.Get(d_);
+  mju_copy(scratch_->qpos, d_->qpos, m_->nq);
+  if (TopGrasp(g_, o_)) {
+    SetClawHand(ix_, scratch_);  // what came down over the object clears it
+  } else {
+    SetOpenHand(ix_, scratch_);
+  }
+  std::array<double, kGraspDofs> from = s_.target;
+  const double t0 = d_->time;
+  while (d_->time - t0 < o_.release_s) {
+    const double a = std::min(1.0, (d_->time - t0) / o_.release_s);
+    for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) {
+      s_.target[i] = from[i] + a * (scratch_->qpos[ix_.qpos[i]] - from[i]);
+    }
+    if (!Step([&] { tr.Hold(hold, d_); })) return false;
+  }
+  const Eigen::Vector3d out_of_palm = Rot(d_, ix_.arm.hand_body).col(1) * (ix_.arm.right ? 1 : -1);
+  return MovePalm(tr, -0.06 * out_of_palm + Eigen::Vector3d(0, 0, 0.08), 0.6, {});
+}
+
+// after a miss: lets go, waits for the object to come to rest, and takes where the controllers
+// now see it as the next attempt's plan; an error says why there is no next attempt
+std::optional<std::string> Run::ReadyForRetry(ArmTracker& tr) {
+  if (!LetGo(tr)) return std::string("unstable simulation");
+  const Eigen::VectorXd still = ix_.arm.Get(d_);
+  const double t0 = d_->time;
+  while (d_->time - t0 < kRetrySettleS) {
+    if (!Step([&] { tr.Hold(still, d_); })) return std::string("unstable simulation");
+  }
+  const ObjectView seen = ObserveObject(g_, d_, false);
+  if (g_.shape != GraspShape::kSphere && seen.up.z() < std::cos(M_PI / 6))
+    return std::string("the object tipped over");
+  if (std::abs(seen.base.z() - g_.planned_pos.z()) > 0.02)
+    return std::string("the object left its support");
+  g_.planned_pos = seen.base;
+  s_.task_pos = seen.base;
+  return std::nullopt;
+}
+
+TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const double cpu0 = ThreadCpuSeconds();
+  core::StatusOr<ArmTracker> tracker = ArmTracker::Create(m_, ix_.arm, o_.tracker);
+  if (!tracker.ok()) return Fail(TabletopStage::kReach, std::string(tracker.status().message()));
+  ArmTracker& tr = *tracker;
+  int attempts = 0;
+  auto finish = [&](TabletopResult r) {
+    r.final_pos = ObjectCom();
+    r.sim_steps = steps_;
+    r.grasp_attempts = attempts;
+    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    r.cpu_s = ThreadCpuSeconds() - cpu0;
+    return r;
+  };
+  for (;;) {
+    if (auto f = Reach(tr)) {
+      // a later attempt that finds no way to the object stays the grasp miss it follows
+      if (attempts > 0 && f->plan_failure) {
+        f->failed_stage = TabletopStage::kGrasp;
+        f->plan_failure = false;
+        f->end_reason = "grasp miss, then no new reach: " + f->end_reason;
+      }
+      return finish(*f);
+    }
+    ++attempts;
+    std::optional<TabletopResult> miss = GraspAndLift(tr, make_policy(g_));
+    if (!miss) break;
+    if (miss->failed_stage != TabletopStage::kGrasp || attempts >= o_.grasp_attempts)
+      return finish(*miss);
+    if (std::optional<std::string> why = ReadyForRetry(tr)) {
+      miss->end_reason += "; no new attempt: " + *why;
+      return finish(*miss);
+    }
   }
   if (auto f = Transport(tr)) return finish(*f);
   // place: the object upright (it tilts in the grip on the way) with its centre of mass over the
@@ -421,29 +492,8 @@ TabletopResult Run::Go(const GraspPolicyFn& policy) {
                 [&] { return Supported(); })) {
     return finish(Fail(TabletopStage::kPlace, "unstable simulation"));
   }
-  // release: the fingers open, the arm holds
-  const Eigen::VectorXd hold = ix_.arm.Get(d_);
-  mju_copy(scratch_->qpos, d_->qpos, m_->nq);
-  if (TopGrasp(g_, o_)) {
-    SetClawHand(ix_, scratch_);  // what came down over the object clears it
-  } else {
-    SetOpenHand(ix_, scratch_);
-  }
-  std::array<double, kGraspDofs> from = s_.target;
-  const double t0 = d_->time;
-  while (d_->time - t0 < o_.release_s) {
-    const double a = std::min(1.0, (d_->time - t0) / o_.release_s);
-    for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) {
-      s_.target[i] = from[i] + a * (scratch_->qpos[ix_.qpos[i]] - from[i]);
-    }
-    if (!Step([&] { tr.Hold(hold, d_); }))
-      return finish(Fail(TabletopStage::kRelease, "unstable simulation"));
-  }
-  // retract: the palm backs away from the object and rises
-  const Eigen::Vector3d out_of_palm = Rot(d_, ix_.arm.hand_body).col(1) * (ix_.arm.right ? 1 : -1);
-  if (!MovePalm(tr, -0.06 * out_of_palm + Eigen::Vector3d(0, 0, 0.08), 0.6, {})) {
-    return finish(Fail(TabletopStage::kRelease, "unstable simulation"));
-  }
+  // release and retract
+  if (!LetGo(tr)) return finish(Fail(TabletopStage::kRelease, "unstable simulation"));
   // settle
   const Eigen::VectorXd rest = ix_.arm.Get(d_);
   const double t1 = d_->time;
@@ -482,10 +532,10 @@ double ThreadCpuSeconds() {
 }
 
 TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const TabletopGoal& goal,
-                           const GraspPolicyFn& policy, const TabletopOptions& options,
+                           const GraspPolicyFactory& make_policy, const TabletopOptions& options,
                            const StepHook& hook) {
   Run run(world, ix, goal, options, hook);
-  return run.Go(policy);
+  return run.Go(make_policy);
 }
 
 ObjectView ObserveObject(const TabletopGoal& g, const mjData* d, bool held) {

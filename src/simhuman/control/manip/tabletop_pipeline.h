@@ -76,6 +76,11 @@ struct TabletopOptions {
   double palm_behind_m = 0.025;
   double palm_behind_margin_m = 0.005;
   int grasp_policy_steps = 60;  ///< 1.5 s at 40 Hz
+  /// Grasp attempts: after a miss (the object does not rise with the hand) the hand opens,
+  /// backs away, and, when the object still stands upright on its support where the controllers
+  /// see it, reaches for it again from there with a fresh grasp policy, as a person tries again.
+  /// 1: no second try (DASH).
+  int grasp_attempts = 2;
   /// The palm's centre at this fraction of a box's or cylinder's height (a sphere: its centre),
   /// at most `grip_max_m` above its base
   double grip_height_frac = 0.5;
@@ -141,6 +146,7 @@ struct TabletopResult {
   TabletopStage failed_stage = TabletopStage::kDone;  ///< kDone when nothing failed
   std::string end_reason;  ///< "success", "plan failure: ...", "grasp miss: ...", ...
   bool plan_failure = false;
+  int grasp_attempts = 0;  ///< grasps begun (more than one after a miss)
   Eigen::Vector3d final_pos = Eigen::Vector3d::Zero();  ///< the object's centre of mass
   int sim_steps = 0;
   double wall_s = 0;
@@ -155,12 +161,16 @@ double ThreadCpuSeconds();
 /// Called after every physics step (recording, video); may be empty.
 using StepHook = std::function<void(const mjData* d)>;
 
+/// Makes the grasp policy of one attempt at `goal` (after a miss, the goal's planned_pos is where
+/// the object now stands); policies keep per-attempt state, so each attempt gets a new one.
+using GraspPolicyFactory = std::function<GraspPolicyFn(const TabletopGoal& goal)>;
+
 /// Runs the pipeline on `world` (its data is stepped), agent `ix.arm.agent`. The body's other
 /// servos keep their targets. Success is DASH's rule: the object's centre within 10 cm of the
 /// target in x and y, its centre of mass at least 5 cm above the target's z, plus ours: at rest
 /// (speed < 5 cm/s) `settle_s` after the release.
 TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const TabletopGoal& goal,
-                           const GraspPolicyFn& policy, const TabletopOptions& options,
+                           const GraspPolicyFactory& make_policy, const TabletopOptions& options,
                            const StepHook& hook = {});
 
 }  // namespace simhuman::control::manip

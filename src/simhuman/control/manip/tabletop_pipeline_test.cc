@@ -53,12 +53,18 @@ Scene BoxScene(double width, double mass) {
   return s;
 }
 
+// a fresh scripted grasp for each attempt
+GraspPolicyFactory Scripted(const Scene& s, const TabletopOptions& options,
+                            const ScriptedGraspOptions& grasp = {}) {
+  return [&s, options, grasp](const TabletopGoal& g) {
+    return MakeScriptedGrasp(s.world->model(), s.world->data(), s.ix, g, options, grasp);
+  };
+}
+
 TEST(TabletopPipelineTest, EveryStageRunsAndReportsWhereItFailedIntegration) {
   Scene s = BoxScene(0.06, 1.0);
   const TabletopOptions options;
-  TabletopResult r = RunTabletop(
-      *s.world, s.ix, s.goal,
-      MakeScriptedGrasp(s.world->model(), s.world->data(), s.ix, s.goal, options), options);
+  TabletopResult r = RunTabletop(*s.world, s.ix, s.goal, Scripted(s, options), options);
   std::printf("result: %s (stage %s) steps %d wall %.2f s, final %.3f %.3f %.3f\n",
               r.end_reason.c_str(), TabletopStageName(r.failed_stage), r.sim_steps, r.wall_s,
               r.final_pos.x(), r.final_pos.y(), r.final_pos.z());
@@ -74,13 +80,39 @@ TEST(TabletopPipelineTest, ScriptedGraspPlacesLightAndHeavyBoxesIntegration) {
   for (double mass : {1.0, 4.0}) {
     Scene s = BoxScene(0.06, mass);
     const TabletopOptions options;
-    const TabletopResult r = RunTabletop(
-        *s.world, s.ix, s.goal,
-        MakeScriptedGrasp(s.world->model(), s.world->data(), s.ix, s.goal, options), options);
+    const TabletopResult r = RunTabletop(*s.world, s.ix, s.goal, Scripted(s, options), options);
     EXPECT_TRUE(r.success) << mass << " kg: " << r.end_reason;
     EXPECT_LT(std::hypot(r.final_pos.x() - s.goal.target.x(), r.final_pos.y() - s.goal.target.y()),
               0.10)
         << mass << " kg";
+  }
+}
+
+// After a miss the hand lets go and tries again from where the object stands: a first attempt
+// that keeps the hand open misses, the second (the scripted grasp) places the box. With one
+// attempt allowed the same start ends at the miss.
+TEST(TabletopPipelineTest, AMissedGraspIsTriedAgainIntegration) {
+  for (int allowed : {1, 2}) {
+    Scene s = BoxScene(0.06, 1.0);
+    TabletopOptions options;
+    options.grasp_attempts = allowed;
+    int made = 0;
+    const GraspPolicyFactory first_open = [&](const TabletopGoal& g) -> GraspPolicyFn {
+      if (made++ == 0) {
+        return [](const float*, float* act) { std::fill(act, act + kGraspActDim, 0.0f); };
+      }
+      return MakeScriptedGrasp(s.world->model(), s.world->data(), s.ix, g, options);
+    };
+    const TabletopResult r = RunTabletop(*s.world, s.ix, s.goal, first_open, options);
+    std::printf("%d attempt(s) allowed: %s after %d\n", allowed, r.end_reason.c_str(),
+                r.grasp_attempts);
+    if (allowed == 1) {
+      EXPECT_EQ(r.failed_stage, TabletopStage::kGrasp) << r.end_reason;
+      EXPECT_EQ(r.grasp_attempts, 1);
+    } else {
+      EXPECT_TRUE(r.success) << r.end_reason;
+      EXPECT_EQ(r.grasp_attempts, 2);
+    }
   }
 }
 
@@ -94,13 +126,11 @@ double LargestTiltInTheAir(bool hold_rotation) {
   const TabletopOptions options;
   ScriptedGraspOptions grasp;
   grasp.hold_rotation = hold_rotation;
-  const mjModel* m = s.world->model();
   const int b = s.goal.object_body;
   const double z0 = s.world->data()->xipos[3 * b + 2];
   double tilt = 0;
   const TabletopResult r = RunTabletop(
-      *s.world, s.ix, s.goal, MakeScriptedGrasp(m, s.world->data(), s.ix, s.goal, options, grasp),
-      options, [&](const mjData* d) {
+      *s.world, s.ix, s.goal, Scripted(s, options, grasp), options, [&](const mjData* d) {
         if (d->xipos[3 * b + 2] > z0 + 0.05) {
           tilt = std::max(tilt, std::acos(std::clamp(d->xmat[9 * b + 8], -1.0, 1.0)));
         }
