@@ -54,7 +54,7 @@ struct Args {
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   double grip_frac = -1, grip_max = -1;
-  double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1;
+  double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1, object_clearance = -1;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
 };
@@ -80,6 +80,7 @@ Args Parse(int argc, char** argv) {
                                                   {"--squeeze", &a.squeeze},
                                                   {"--path-speed", &a.path_speed},
                                                   {"--clearance", &a.clearance},
+                                                  {"--object-clearance", &a.object_clearance},
                                                   {"--min-inertia", &a.min_inertia}};
   const std::map<std::string, int*> ints = {{"--from", &a.from},
                                             {"--to", &a.to},
@@ -210,6 +211,7 @@ int main(int argc, char** argv) {
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
+    if (a.object_clearance >= 0) pipeline.motion.object_clearance_m = a.object_clearance;
     if (a.comfort_reach > 0) pipeline.comfort_reach_m = a.comfort_reach;
     if (a.grip_frac > 0) pipeline.grip_height_frac = a.grip_frac;
     if (a.shortcuts >= 0) pipeline.motion.planner.shortcut_iterations = a.shortcuts;

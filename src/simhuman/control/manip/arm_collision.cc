@@ -70,6 +70,11 @@ ArmCollider::ArmCollider(const mjModel* m, const ArmChain& arm, int carried_body
         std::swap(p.arm1, p.arm2);
       }
       if (!mjCOLLISIONFUNC[m->geom_type[p.g1]][m->geom_type[p.g2]]) continue;
+      const int other = in_arm[b1] ? b2 : in_arm[b2] ? b1 : -1;
+      if (other >= 0 && other != carried_body && m->body_jntnum[other] > 0 &&
+          m->jnt_type[m->body_jntadr[other]] == mjJNT_FREE) {
+        p.movable = other;
+      }
       p.margin = (m->opt.enableflags & mjENBL_OVERRIDE)
                      ? m->opt.o_margin
                      : std::max(m->geom_margin[g1], m->geom_margin[g2]);
@@ -78,8 +83,8 @@ ArmCollider::ArmCollider(const mjModel* m, const ArmChain& arm, int carried_body
   }
 }
 
-int ArmCollider::Count(const mjData* d, const std::vector<int>& ignore_bodies,
-                       double tolerance_m) const {
+int ArmCollider::Count(const mjData* d, const std::vector<int>& ignore_bodies, double tolerance_m,
+                       double clearance_m, int clearance_exempt) const {
   // the arm's contacts ignoring each body in turn (one count when none is ignored)
   constexpr int kMaxIgnores = 8;
   SH_CHECK(ignore_bodies.size() <= kMaxIgnores, "ArmCollider::Count: at most 8 bodies to ignore");
@@ -89,21 +94,25 @@ int ArmCollider::Count(const mjData* d, const std::vector<int>& ignore_bodies,
   mjContact con[mjMAXCONPAIR];
   for (const Pair& p : pairs_) {
     const mjtNum r1 = m_->geom_rbound[p.g1], r2 = m_->geom_rbound[p.g2];
+    const bool keep_clear = clearance_m > 0 && p.movable >= 0 && p.movable != clearance_exempt;
+    const mjtNum margin = keep_clear ? p.margin + clearance_m : p.margin;
     if (r1 > 0 && r2 > 0) {
       // mj_collideGeoms' bounding-sphere test
       const mjtNum* x1 = d->geom_xpos + 3 * p.g1;
       const mjtNum* x2 = d->geom_xpos + 3 * p.g2;
       const mjtNum dx = x1[0] - x2[0], dy = x1[1] - x2[1], dz = x1[2] - x2[2];
-      const mjtNum reach = p.margin + r1 + r2;
+      const mjtNum reach = margin + r1 + r2;
       if (dx * dx + dy * dy + dz * dz > reach * reach) continue;
-      if (m_->geom_type[p.g2] == mjGEOM_BOX && ClearOfBox(m_, d, p.g2, p.g1, r1, p.margin)) {
+      if (m_->geom_type[p.g2] == mjGEOM_BOX && ClearOfBox(m_, d, p.g2, p.g1, r1, margin)) {
         continue;
       }
     }
     const int n =
-        mjCOLLISIONFUNC[m_->geom_type[p.g1]][m_->geom_type[p.g2]](m_, d, con, p.g1, p.g2, p.margin);
+        mjCOLLISIONFUNC[m_->geom_type[p.g1]][m_->geom_type[p.g2]](m_, d, con, p.g1, p.g2, margin);
     int deep = 0;
-    for (int c = 0; c < n; ++c) deep += !(con[c].dist > -tolerance_m);
+    for (int c = 0; c < n; ++c) {
+      deep += keep_clear ? con[c].dist < clearance_m : !(con[c].dist > -tolerance_m);
+    }
     if (deep == 0) continue;
     if (p.arm1 || p.arm2) {
       for (int k = 0; k < slots; ++k) {

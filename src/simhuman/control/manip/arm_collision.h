@@ -27,8 +27,11 @@ class ArmCollider {
   /// pose may not have: those of the arm with anything but `ignore_body` (the object in the
   /// hand; -1: none), plus, with a carried body, those of the carried body with anything but
   /// the arm. With several bodies to ignore, the smallest count of the arm's contacts ignoring
-  /// one of them (a contact no single ignore explains counts).
-  int Count(const mjData* d, const std::vector<int>& ignore_bodies, double tolerance_m) const;
+  /// one of them (a contact no single ignore explains counts). With `clearance_m` > 0, the arm
+  /// must also keep that far from every movable object (a body with a free joint) but
+  /// `clearance_exempt` and the carried body: closer counts as a contact.
+  int Count(const mjData* d, const std::vector<int>& ignore_bodies, double tolerance_m,
+            double clearance_m = 0, int clearance_exempt = -1) const;
 
   /// The geom pairs checked (for tests).
   int num_pairs() const { return static_cast<int>(pairs_.size()); }
@@ -39,6 +42,7 @@ class ArmCollider {
     int b1, b2;
     bool arm1, arm2;
     mjtNum margin;
+    int movable = -1;  ///< the other body when it is a movable object and the pair has the arm
   };
   const mjModel* m_;
   int carried_;

@@ -88,5 +88,78 @@ TEST(ArmCollisionTest, CountsWhatMjCollisionFindsForTheArmAndACarriedObjectInteg
   }
 }
 
+// The clearance from movable objects: the same verdict as mj_collision on a copy of the model
+// whose movable objects' geoms carry the clearance as their margin, counting those objects'
+// contacts with the arm closer than the clearance (and the exempt object's only when they touch).
+TEST(ArmCollisionTest, KeepsTheClearanceFromMovableObjectsThatMjCollisionMeasuresIntegration) {
+  auto ts = world::GenerateTabletop(5, "place");
+  ASSERT_TRUE(ts.ok()) << ts.status();
+  auto catalog = world::BuildCatalog(ts->scene);
+  ASSERT_TRUE(catalog.ok()) << catalog.status();
+  auto human = world::AgentFromHuman(ts->scene.humans[0], 0, *catalog);
+  ASSERT_TRUE(human.ok()) << human.status();
+  auto w = world::SimWorld::Create(*catalog, {*human}, world::DexterousModelOptions());
+  ASSERT_TRUE(w.ok()) << w.status();
+  const mjModel* m = (*w)->model();
+  mjData* d = (*w)->data();
+  const GraspIndex gi = *MakeGraspIndex(**w, 0, true);
+  const ArmChain& arm = gi.arm;
+  const int obj = mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName(ts->task.object_id).c_str());
+  const int obj_qpos = m->jnt_qposadr[m->body_jntadr[obj]];
+  constexpr double kClear = 0.02, kTol = 0.002;
+  auto movable = [&](int b) {
+    return m->body_jntnum[b] > 0 && m->jnt_type[m->body_jntadr[b]] == mjJNT_FREE;
+  };
+  // per exempt body (-1, obj): the model with the others' margins inflated
+  using ModelPtr = std::unique_ptr<mjModel, void (*)(mjModel*)>;
+  std::vector<ModelPtr> inflated;
+  for (int exempt : {-1, obj}) {
+    inflated.emplace_back(mj_copyModel(nullptr, m), mj_deleteModel);
+    for (int g = 0; g < m->ngeom; ++g) {
+      const int b = m->geom_bodyid[g];
+      if (movable(b) && b != exempt) inflated.back()->geom_margin[g] += kClear;
+    }
+  }
+  std::unique_ptr<mjData, void (*)(mjData*)> dd(mj_makeData(m), mj_deleteData);
+  auto in_arm = [&](int b) {
+    return std::find(arm.bodies.begin(), arm.bodies.end(), b) != arm.bodies.end();
+  };
+  const ArmCollider collider(m, arm);
+  core::Rng rng(5);
+  int kept_apart = 0;
+  for (int k = 0; k < 300; ++k) {
+    Eigen::VectorXd q(ArmChain::kDofs);
+    for (int i = 0; i < ArmChain::kDofs; ++i) q[i] = rng.Uniform(arm.lo[i], arm.hi[i]);
+    arm.Set(d, q);
+    mj_kinematics(m, d);
+    for (int i = 0; i < 3; ++i) {
+      d->qpos[obj_qpos + i] = d->site_xpos[3 * arm.palm_site + i] + rng.Uniform(-0.12, 0.12);
+    }
+    mj_kinematics(m, d);
+    for (int exempt : {-1, obj}) {
+      const mjModel* mi = inflated[exempt < 0 ? 0 : 1].get();
+      mju_copy(dd->qpos, d->qpos, m->nq);
+      mj_kinematics(mi, dd.get());
+      mj_collision(mi, dd.get());
+      int want = 0;
+      for (int c = 0; c < dd->ncon; ++c) {
+        const mjContact& con = dd->contact[c];
+        const int b1 = m->geom_bodyid[con.geom1], b2 = m->geom_bodyid[con.geom2];
+        if (!in_arm(b1) && !in_arm(b2)) continue;
+        const int other = in_arm(b1) ? b2 : b1;
+        const bool clear = !in_arm(other) && movable(other) && other != exempt;
+        want += clear ? con.dist < kClear : con.dist <= -kTol;
+      }
+      const int got = collider.Count(d, {}, kTol, kClear, exempt);
+      // a margin can change how many points MuJoCo's narrow phase gives a pair, so the counts may
+      // differ by a point; whether a pose is free may not
+      EXPECT_EQ(got > 0, want > 0) << "pose " << k << " exempt " << exempt;
+      EXPECT_NEAR(got, want, 0.2 * want + 1) << "pose " << k << " exempt " << exempt;
+      kept_apart += exempt < 0 && got > collider.Count(d, {}, kTol);
+    }
+  }
+  EXPECT_GT(kept_apart, 20);  // the clearance counts poses that do not touch
+}
+
 }  // namespace
 }  // namespace simhuman::control::manip

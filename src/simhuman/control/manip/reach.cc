@@ -61,7 +61,8 @@ int Contacts(const mjModel* m, mjData* s, const ArmChain& arm, const Eigen::Vect
     carried.Place(s, arm);
     mj_kinematics(m, s);
   }
-  return collider.Count(s, o.ignore_bodies, o.contact_tolerance_m);
+  return collider.Count(s, o.ignore_bodies, o.contact_tolerance_m, o.object_clearance_m,
+                        o.approach_body);
 }
 
 struct Candidate {
@@ -103,12 +104,11 @@ void CollectFreePoses(const mjModel* m, mjData* s, const ArmChain& arm,
   }
 }
 
-}  // namespace
-
-core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjData* s,
-                                        const ArmChain& arm, const std::vector<PalmPose>& goals,
-                                        const std::vector<Eigen::Vector3d>& approach_dirs,
-                                        const ArmMotionOptions& o) {
+// PlanArmMotion with the clearance of `o` as given
+core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, mjData* s,
+                                            const ArmChain& arm, const std::vector<PalmPose>& goals,
+                                            const std::vector<Eigen::Vector3d>& approach_dirs,
+                                            const ArmMotionOptions& o) {
   SH_RETURN_IF_ERROR(o.planner.Validate());
   if (goals.empty()) return absl::InvalidArgumentError("plan failure: no palm poses to reach");
   if (!approach_dirs.empty() && approach_dirs.size() != goals.size()) {
@@ -221,6 +221,26 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
   if (!traj.ok()) return core::Annotate(traj.status(), "plan failure: retiming");
   return ArmMotion{*std::move(traj), reached.goal, reached.q, static_cast<int>(free.size()),
                    Seconds(t0)};
+}
+
+}  // namespace
+
+core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjData* s,
+                                        const ArmChain& arm, const std::vector<PalmPose>& goals,
+                                        const std::vector<Eigen::Vector3d>& approach_dirs,
+                                        const ArmMotionOptions& o) {
+  core::StatusOr<ArmMotion> r = PlanArmMotionOnce(m, d, s, arm, goals, approach_dirs, o);
+  if (r.ok() || o.object_clearance_m <= 0 ||
+      !(absl::IsFailedPrecondition(r.status()) || absl::IsNotFound(r.status()))) {
+    return r;
+  }
+  // no pose or path keeps the clearance: one that only avoids touching
+  ArmMotionOptions touching = o;
+  touching.object_clearance_m = 0;
+  core::StatusOr<ArmMotion> closer =
+      PlanArmMotionOnce(m, d, s, arm, goals, approach_dirs, touching);
+  if (closer.ok()) closer->clearance_kept = false;
+  return closer;
 }
 
 core::StatusOr<ArmTracker> ArmTracker::Create(const mjModel* m, const ArmChain& arm,

@@ -38,8 +38,13 @@ struct ArmMotionOptions {
   double max_joint_speed = 3.0;          ///< rad/s per joint
   double reshape_fraction = 0.1;         ///< the final part of the path given the approach tangent
   double contact_tolerance_m = 0.002;    ///< penetration a pose may have and still be free
-  IkOptions ik;                          ///< the goal poses' inverse kinematics
-  int ik_restarts = 8;  ///< further IK seeds per goal when no goal is free from the current arm
+  /// The arm keeps this far from movable objects (free bodies) other than `approach_body`, so
+  /// that the tracked arm, which strays a little from its path, does not knock them over; when
+  /// no pose or path keeps it, the plan only avoids touching them (ArmMotion::clearance_kept)
+  double object_clearance_m = 0.02;
+  int approach_body = -1;  ///< the object reached for (-1: none): it may come closer
+  IkOptions ik;            ///< the goal poses' inverse kinematics
+  int ik_restarts = 8;     ///< further IK seeds per goal when no goal is free from the current arm
   /// Bodies whose contacts with the arm do not count (the object in the hand during transport).
   std::vector<int> ignore_bodies;
   /// The object in the hand (transport; -1: none): it moves with the hand, its pose relative to
@@ -55,6 +60,9 @@ struct ArmMotion {
   Eigen::VectorXd goal_q;   ///< the arm angles there
   int goals_reachable = 0;  ///< palm poses with a collision-free IK solution
   double plan_time_s = 0;   ///< IK, search, shortcut and retiming
+  /// The path keeps ArmMotionOptions::object_clearance_m from movable objects; false when no
+  /// pose or path did and the plan only avoids touching them
+  bool clearance_kept = true;
 };
 
 /// Plans the arm of `arm` from its pose in `d` to one of `goals` (palm poses, e.g.

@@ -241,17 +241,18 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   for (int k = 0; k < o_.approach_angles; ++k)
     around.push_back(-M_PI + 2 * M_PI * k / o_.approach_angles);
   std::pair<std::vector<PalmPose>, std::vector<Eigen::Vector3d>> face_goals, around_goals;
+  ArmMotionOptions mo = o_.motion;
+  mo.approach_body = g_.object_body;
   auto plan = [&]() {
     if (!faces.empty()) {
       core::StatusOr<ArmMotion> on_face =
-          PlanArmMotion(m_, d_, scratch_, ix_.arm, face_goals.first, face_goals.second, o_.motion);
+          PlanArmMotion(m_, d_, scratch_, ix_.arm, face_goals.first, face_goals.second, mo);
       // no free pose on a face, or no path to the ones found: from all around
       if (on_face.ok() ||
           !(absl::IsFailedPrecondition(on_face.status()) || absl::IsNotFound(on_face.status())))
         return on_face;
     }
-    return PlanArmMotion(m_, d_, scratch_, ix_.arm, around_goals.first, around_goals.second,
-                         o_.motion);
+    return PlanArmMotion(m_, d_, scratch_, ix_.arm, around_goals.first, around_goals.second, mo);
   };
   // a far object or target: the trunk leans forward first, as a seated person does, so that
   // the arm ends well inside its reach at both; then more while no arm pose reaches the object
