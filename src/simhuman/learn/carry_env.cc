@@ -22,6 +22,9 @@ constexpr int kSuccessHold = 30;  // policy steps at rest after the put-down (1 
 constexpr double kStartAtBoxFraction = 0.5;
 constexpr double kStartInSquatFraction = 0.6;  // of the episodes that start at the box
 constexpr double kMaxApproachSeconds = 20;
+// a carry that has not reached its stand point by then stalled (the put-down starts within
+// CarryParams::arrive_dwell_s of reaching it)
+constexpr double kMaxCarrySeconds = 30;
 constexpr double kBuiltBoxSide = 0.5;  // the box is built as this cube; ShapeBox scales it
 
 Eigen::Vector3d Vec(const mjtNum* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
@@ -43,7 +46,7 @@ const char* CarryFailureName(CarryFailure f) {
     case CarryFailure::kLost:
       return "lost the box";
     case CarryFailure::kStalled:
-      return "stalled before the box";
+      return "stalled (approach over 20 s or carry over 30 s)";
     case CarryFailure::kNonFinite:
       return "non-finite state";
   }
@@ -102,6 +105,11 @@ core::StatusOr<std::unique_ptr<CarryTask>> CarryTask::Create(int num_envs, std::
 void CarryTask::set_held_start_fraction(double f) {
   SH_CHECK(f >= 0 && f <= 1, "the held-start fraction lies in [0, 1]");
   held_start_fraction_ = f;
+}
+
+void CarryTask::set_put_down_start_fraction(double f) {
+  SH_CHECK(f >= 0 && f <= 1, "the put-down-start fraction lies in [0, 1]");
+  put_down_start_fraction_ = f;
 }
 
 CarryTask::~CarryTask() {
@@ -170,54 +178,66 @@ void CarryTask::StartLiftNow(int i, float* obs, double pose_at_s) {
   control::CarryObservation(e.d, ix_, e.s, box, obs);
 }
 
-void CarryTask::StartHoldingNow(int i, float* obs) {
+void CarryTask::StartHoldingNow(int i, float* obs) { StartHeld(i, -1, obs); }
+
+void CarryTask::StartPutDownNow(int i, double t_s, float* obs) {
+  StartHeld(i, std::max(t_s, 0.0), obs);
+}
+
+void CarryTask::StartHeld(int i, double put_down_at_s, float* obs) {
   Env& e = envs_[i];
   mjData* d = e.d;
   const world::AgentIndex& a = ix_.walk.agent;
   control::CarryBox box = control::ReadCarryBox(e.m, d, box_geom_);
   control::StartLift(params_, e.m, e.scratch, d, ix_, box, &e.s);
   e.s.phase_time_s = control::kLiftSeconds - 1e-6;
-  double ref[kWalkActDim];
-  control::CarryReference(e.s, ref);
-  {
-    // posed with the hands touching the held faces (the keyframe's press would start the
-    // episode with the hands inside the box); the grip servo presses from there
-    control::CarryParams touch = params_;
-    touch.squeeze_m = 0;
-    const control::LiftGeometry g = control::MakeLiftGeometry(touch, d, ix_, e.s, box);
-    const control::CarryPoses k = control::SolveCarryPoses(touch, e.m, e.scratch, ix_, g);
+  // posed with the hands touching the held faces (the keyframe's press would start the
+  // episode with the hands inside the box); the grip servo presses from there
+  control::CarryParams touch = params_;
+  touch.squeeze_m = 0;
+  const control::CarryPoses touch_poses = control::SolveCarryPoses(
+      touch, e.m, e.scratch, ix_, control::MakeLiftGeometry(touch, d, ix_, e.s, box));
+  if (put_down_at_s >= 0) {
+    control::StartPutDown(params_, d, ix_, &e.s);
+    control::PoseInPutDown(e.m, d, ix_, put_down_at_s, touch_poses, &e.s);
+  } else {
+    double ref[kWalkActDim];
+    control::CarryReference(e.s, ref);
     static const std::array<std::array<int, 4>, 2> kArms = *control::ArmJointIndices();
     for (const auto& arm : kArms) {
-      for (int j : arm) ref[j] = k.hold[j];
+      for (int j : arm) ref[j] = touch_poses.hold[j];
     }
+    Eigen::Vector3d pelvis;
+    double yaw;
+    control::PelvisPose(d, ix_.walk, &pelvis, &yaw);
+    d->qpos[a.root_qpos + 3] = std::cos(yaw / 2);
+    d->qpos[a.root_qpos + 4] = d->qpos[a.root_qpos + 5] = 0;
+    d->qpos[a.root_qpos + 6] = std::sin(yaw / 2);
+    for (int j = 0; j < kWalkActDim; ++j) {
+      d->qpos[a.hinge_qpos[j]] = ref[j];
+      d->ctrl[a.actuator[j]] = ref[j];
+    }
+    mju_zero(d->qvel, e.m->nv);
+    mj_kinematics(e.m, d);
+    d->qpos[a.root_qpos + 2] -=
+        LowestBoxCornerZ(e.m, d, {ix_.walk.left_foot_geom, ix_.walk.right_foot_geom}) - 0.001;
+    mj_kinematics(e.m, d);
   }
-  Eigen::Vector3d pelvis;
-  double yaw;
-  control::PelvisPose(d, ix_.walk, &pelvis, &yaw);
-  d->qpos[a.root_qpos + 3] = std::cos(yaw / 2);
-  d->qpos[a.root_qpos + 4] = d->qpos[a.root_qpos + 5] = 0;
-  d->qpos[a.root_qpos + 6] = std::sin(yaw / 2);
-  for (int j = 0; j < kWalkActDim; ++j) {
-    d->qpos[a.hinge_qpos[j]] = ref[j];
-    d->ctrl[a.actuator[j]] = ref[j];
-  }
-  mju_zero(d->qvel, e.m->nv);
-  mj_kinematics(e.m, d);
-  d->qpos[a.root_qpos + 2] -=
-      LowestBoxCornerZ(e.m, d, {ix_.walk.left_foot_geom, ix_.walk.right_foot_geom}) - 0.001;
-  mj_kinematics(e.m, d);
   // the box: its held points' middle between the hands, its held faces squeezed by squeeze_m
   const Eigen::Vector3d hl(d->site_xpos + 3 * ix_.left_hand_site);
   const Eigen::Vector3d hr(d->site_xpos + 3 * ix_.right_hand_site);
   Eigen::Vector3d local_mid = e.s.held_left_local;
   local_mid[e.s.held_axis] = 0;
-  const Eigen::Vector3d centre = 0.5 * (hl + hr) - box.rot * local_mid;
+  Eigen::Vector3d centre = 0.5 * (hl + hr) - box.rot * local_mid;
+  // (low in the put-down squat, the box rests on the floor instead)
+  centre.z() = std::max(centre.z(), box.pos.z() - control::BoxLowestZ(box) + 0.001);
   // the free joint moves the body, whose origin need not be the box geom's centre
   const Eigen::Vector3d body_off = Eigen::Vector3d(d->xpos + 3 * box_body_) - box.pos;
   for (int k = 0; k < 3; ++k) d->qpos[box_qpos_ + k] = centre[k] + body_off[k];
   mj_forward(e.m, d);
   box = control::ReadCarryBox(e.m, d, box_geom_);
-  control::UpdateWalkCommand(params_.walk, d, ix_.walk, &e.s.walk);
+  if (put_down_at_s >= 0) e.s.dest_xy = box.pos.head<2>();
+  control::UpdateWalkCommand(e.s.gait, d, ix_.walk, &e.s.walk);
   control::CarryObservation(d, ix_, e.s, box, obs);
 }
 
@@ -237,9 +257,12 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   // lift is practised from the first iteration, not only after a walk), the rest 1-2 m (up to
   // 5 m) away, facing the box within +-(30 + 150 c) degrees. Evaluation draws neither number
   // and a zero fraction draws none, so those episodes are as they were before held starts.
-  const bool held =
-      !evaluation_ && held_start_fraction_ > 0 && e.rng.Uniform() < held_start_fraction_;
-  const bool at_box = held || (!evaluation_ && e.rng.Uniform() < kStartAtBoxFraction);
+  // A share start inside the put-down, drawn first (a zero share draws nothing).
+  const bool put_down =
+      !evaluation_ && put_down_start_fraction_ > 0 && e.rng.Uniform() < put_down_start_fraction_;
+  const bool held = !put_down && !evaluation_ && held_start_fraction_ > 0 &&
+                    e.rng.Uniform() < held_start_fraction_;
+  const bool at_box = put_down || held || (!evaluation_ && e.rng.Uniform() < kStartAtBoxFraction);
   Eigen::Vector2d start;
   double yaw;
   if (at_box) {
@@ -275,7 +298,9 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   const double dest_dir = e.rng.Uniform(-M_PI, M_PI);
   SetBox(i, side, mass, Eigen::Vector3d(0, 0, 0), box_yaw,
          dest_dist * Eigen::Vector2d(std::cos(dest_dir), std::sin(dest_dir)), obs);
-  if (held) {
+  if (put_down) {
+    StartPutDownNow(i, e.rng.Uniform(0.0, control::PutDownLowerEndSeconds()), obs);
+  } else if (held) {
     StartHoldingNow(i, obs);
   } else if (at_box) {
     // and some of them part-way down into the squat (reference-state initialisation)
@@ -307,7 +332,8 @@ CarryFailure CarryTask::Check(const Env& e, const control::CarryBox& box) const 
   const double speed = std::hypot(box.linvel.x(), box.linvel.y());
   if (!control::CarryHandsOnBox(e.s) && low < 0.3 && speed > 1.0) return CarryFailure::kKick;
   if (ph == CarryPhase::kCarry && e.s.phase_time_s > 1.0 && low < 0.03) return CarryFailure::kDrop;
-  if (ph == CarryPhase::kApproach && e.s.phase_time_s > kMaxApproachSeconds) {
+  if ((ph == CarryPhase::kApproach && e.s.phase_time_s > kMaxApproachSeconds) ||
+      (ph == CarryPhase::kCarry && e.s.phase_time_s > kMaxCarrySeconds)) {
     return CarryFailure::kStalled;
   }
   Eigen::Vector3d pelvis = Vec(d->xpos + 3 * a.pelvis_body);

@@ -7,16 +7,19 @@
 /// Each env owns a copy of the model so the box's size and mass differ per episode. Boxes are
 /// cubes of side 0.4-0.6 m and 2-5 kg at curriculum 0, growing to CooHOI's 0.25-0.75 m and
 /// 2-13 kg at 1; the human starts 1-2 m (up to 5 m) from the box, the destination is 1-3 m (up
-/// to 10 m) from it in any direction. A share of the episodes (35 % by default) start holding the
-/// box, in the carry phase, and half the others at the box, lifting (as DeepMimic's reference
-/// state initialisation starts episodes inside the hard part of a motion).
+/// to 10 m) from it in any direction. A configured share start part-way into the put-down (none
+/// by default), a share of the others (35 % by default) holding the box, in the carry phase, and
+/// half the rest at the box, lifting (as DeepMimic's reference state initialisation starts
+/// episodes inside the hard part of a motion).
 ///
 /// Terminations: a fall (a body other than the feet and hands on the floor, the pelvis or the
 /// head too low for the phase), a kick (the box sliding faster than 1 m/s while no hand should
 /// hold it), a drop (the box back on the floor during the carry phase) and losing the box (its
-/// centre more than 1.2 m from the pelvis while held) and stalling (still approaching after 20 s:
-/// without it a policy learns to stop short of the box and never lift). Success: the box at rest on
-/// the floor within 0.2 m of the destination after the put-down, the human standing.
+/// centre more than 1.2 m from the pelvis while held) and stalling (still approaching after 20 s,
+/// or still carrying after 30 s: without it a policy learns to stop short of its stand points
+/// and never squat; the squats also start after 1 s near them, CarryParams::arrive_dwell_s).
+/// Success: the box at rest on the floor within 0.2 m of the destination after the put-down, the
+/// human standing.
 
 #include <memory>
 #include <vector>
@@ -84,12 +87,28 @@ class CarryTask : public VecTask {
   /// `squeeze_m` of press, and the lift's clock is at its end, so the next step enters the carry.
   void StartHoldingNow(int i, float* obs);
 
+  /// Starts env i holding its box `t_s` seconds into the put-down (reference-state
+  /// initialisation of the squat down; tests, probes): StartHoldingNow's keyframes with the
+  /// hands touching the held faces, the human posed by control::PoseInPutDown (t_s clamped to
+  /// [0, control::PutDownLowerEndSeconds()]), the box between the hands (raised if it would be
+  /// in the floor), and the destination moved to the box's place, so that a put-down from here
+  /// succeeds.
+  void StartPutDownNow(int i, double t_s, float* obs);
+
   /// The default share of training Reset()s that start holding the box (StartHoldingNow).
   static constexpr double kDefaultHeldStartFraction = 0.35;
   /// Sets that share, in [0, 1] (the training config's carry_held_start_frac, validated there;
   /// out of range is a bug). Evaluation never starts holding.
   void set_held_start_fraction(double f);
   double held_start_fraction() const { return held_start_fraction_; }
+
+  /// The default share of training Reset()s that start inside the put-down (StartPutDownNow,
+  /// uniformly over its lowering part); the held share applies to the other resets.
+  static constexpr double kDefaultPutDownStartFraction = 0.0;
+  /// Sets that share, in [0, 1] (the training config's carry_put_down_start_frac, validated
+  /// there; out of range is a bug). Evaluation never starts inside the put-down.
+  void set_put_down_start_fraction(double f);
+  double put_down_start_fraction() const { return put_down_start_fraction_; }
 
   /// Evaluation starts: no episode starts holding the box, at the box or inside the lift (Reset
   /// always walks up from 1-2 m, up to 5 m at curriculum 1), and episodes are cut after `max_steps`
@@ -113,6 +132,7 @@ class CarryTask : public VecTask {
   };
   CarryTask() = default;
   void ShapeBox(Env& e, double side_m, double mass_kg) const;
+  void StartHeld(int i, double put_down_at_s, float* obs);  // put_down_at_s < 0: carry phase
   CarryFailure Check(const Env& e, const control::CarryBox& box) const;
   double Reward(Env& e, const control::CarryBox& box, const float* action, double power);
   std::unique_ptr<world::SimWorld> world_;
@@ -125,6 +145,7 @@ class CarryTask : public VecTask {
   bool evaluation_ = false;
   int max_steps_ = kMaxSteps;
   double held_start_fraction_ = kDefaultHeldStartFraction;
+  double put_down_start_fraction_ = kDefaultPutDownStartFraction;
 };
 
 }  // namespace simhuman::learn

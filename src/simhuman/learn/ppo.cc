@@ -41,6 +41,7 @@ TaskOptions OptionsOf(const PpoConfig& c) {
   o.walk_gait = c.walk_gait;
   o.carry_grip = c.carry_grip;
   o.carry_held_start_frac = c.carry_held_start_frac;
+  o.carry_put_down_start_frac = c.carry_put_down_start_frac;
   o.walk_gait_weight = c.walk_gait_weight;
   o.walk_gait_width = c.walk_gait_width;
   o.walk_foot_slip_weight = c.walk_foot_slip_weight;

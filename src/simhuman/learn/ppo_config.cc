@@ -44,6 +44,9 @@ const core::FieldTable<PpoConfig>& Table() {
        F("carry_held_start_frac", &PpoConfig::carry_held_start_frac,
          "carry task: share of training episodes that start holding the box")
            .In(NumberRange::Closed(0, 1)),
+       F("carry_put_down_start_frac", &PpoConfig::carry_put_down_start_frac,
+         "carry task: share of training episodes that start part-way into the put-down")
+           .In(NumberRange::Closed(0, 1)),
        F("walk_gait_weight", &PpoConfig::walk_gait_weight,
          "walk task: weight of the reward for the legs following the reference gait")
            .In(kAtLeast0),
@@ -142,6 +145,11 @@ absl::Status PpoConfig::Validate() const {
     return absl::InvalidArgumentError(
         "training config: carry_held_start_frac applies to the carry task only; task is '" + task +
         "'");
+  }
+  if (task != "carry" && carry_put_down_start_frac != defaults.carry_put_down_start_frac) {
+    return absl::InvalidArgumentError(
+        "training config: carry_put_down_start_frac applies to the carry task only; task is '" +
+        task + "'");
   }
   if (!TaskHasBodyScales(task) && (walk_gait_weight != defaults.walk_gait_weight ||
                                    walk_gait_width != defaults.walk_gait_width ||

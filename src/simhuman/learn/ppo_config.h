@@ -43,6 +43,10 @@ struct PpoConfig {
   /// (reference-state initialisation), in [0, 1]; the default is
   /// learn::CarryTask::kDefaultHeldStartFraction. Evaluation always walks up to the box.
   double carry_held_start_frac = 0.35;
+  /// carry task: the share of training episodes that start part-way into the put-down's squat
+  /// (reference-state initialisation), in [0, 1]; the held share applies to the others. The
+  /// default is learn::CarryTask::kDefaultPutDownStartFraction. Evaluation never does.
+  double carry_put_down_start_frac = 0.0;
   /// walk task's reward: the leg gait term's weight and width (rad^2), the foot-slip weight
   double walk_gait_weight = 1.0;
   double walk_gait_width = 0.5;

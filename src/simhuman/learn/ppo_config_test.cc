@@ -20,8 +20,8 @@ TEST(PpoConfigTable, DefaultsRoundTripThroughToJsonWithEveryKey) {
   const PpoConfig defaults;
   json j = defaults.ToJson();
   // every key (38 before the table, + target_kl, body_scales, walk_gait, the walk reward's 3,
-  // carry_grip, carry_held_start_frac)
-  EXPECT_EQ(j.size(), 46u);
+  // carry_grip, carry_held_start_frac, carry_put_down_start_frac)
+  EXPECT_EQ(j.size(), 47u);
   EXPECT_EQ(j["walk_gait"], "");
   EXPECT_EQ(j["carry_grip"], false);
   EXPECT_EQ(j["walk_gait_weight"], 1.0);
@@ -60,6 +60,12 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
             "training config 'carry_held_start_frac' = 1.5 is invalid; valid range is [0, 1]");
   EXPECT_THAT(Error(json{{"task", "walk"}, {"carry_held_start_frac", 0.5}}),
               HasSubstr("carry_held_start_frac applies to the carry task only; task is 'walk'"));
+  EXPECT_EQ(Error(json{{"task", "carry"}, {"carry_put_down_start_frac", -0.1}}),
+            "training config 'carry_put_down_start_frac' = -0.1 is invalid; valid range is [0, 1]");
+  EXPECT_THAT(
+      Error(json{{"task", "walk"}, {"carry_put_down_start_frac", 0.2}}),
+      HasSubstr("carry_put_down_start_frac applies to the carry task only; task is 'walk'"));
+  EXPECT_TRUE(Error(json{{"task", "carry"}, {"carry_put_down_start_frac", 0.25}}).empty());
   EXPECT_THAT(Error(json{{"walk_gait_width", 0}}),
               HasSubstr("training config 'walk_gait_width' = 0 is invalid; valid range is (0"));
   EXPECT_THAT(Error(json{{"task", "grasp"}, {"walk_foot_slip_weight", 2}}),

@@ -33,6 +33,7 @@ const std::vector<TaskDef>& Tasks() {
          SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> t,
                              CarryTask::Create(envs, o.walk_gait, o.carry_grip));
          t->set_held_start_fraction(o.carry_held_start_frac);
+         t->set_put_down_start_fraction(o.carry_put_down_start_frac);
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "walk", false},

@@ -20,6 +20,7 @@ struct TaskOptions {
   std::string walk_gait;                    ///< walk, carry: control::WalkGait name
   bool carry_grip = false;                  ///< carry: the hands grip (CarryTask::Create)
   double carry_held_start_frac = 0.35;      ///< carry: share of Reset()s that start holding
+  double carry_put_down_start_frac = 0.0;   ///< carry: share that start inside the put-down
   /// walk: reward weights of the leg gait term and foot slip, and the leg term's width (rad^2);
   /// the defaults are WalkRewardWeights'
   double walk_gait_weight = 1.0, walk_gait_width = 0.5, walk_foot_slip_weight = 0.5;

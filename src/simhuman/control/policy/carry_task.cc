@@ -204,17 +204,21 @@ double PhaseDuration(CarryPhase p) {
   return 0;
 }
 
-// at the stand point (not the walk target, which may lie past it), facing its way, slow
-bool Arrived(const CarryParams& p, const mjData* d, const CarryIndex& ix, const CarryState& s) {
+// at the stand point (not the walk target, which may lie past it): facing its way and slow, or
+// within the arrival radius for arrive_dwell_s of this phase whatever the speed and heading
+// (counts that time: call once per policy step)
+bool Arrived(const CarryParams& p, const mjData* d, const CarryIndex& ix, CarryState* s) {
   double to_target, yaw_err;
-  WalkErrors(d, ix.walk, s.walk, &to_target, &yaw_err);
+  WalkErrors(d, ix.walk, s->walk, &to_target, &yaw_err);
   Eigen::Vector3d pos;
   double yaw;
   PelvisPose(d, ix.walk, &pos, &yaw);
-  const double dist = (pos.head<2>() - s.stand_xy).norm();
+  const double dist = (pos.head<2>() - s->stand_xy).norm();
+  if (dist >= p.arrive_radius_m) return false;
+  s->near_stand_s += kWalkPolicyDt;
+  if (s->near_stand_s >= p.arrive_dwell_s - 1e-9) return true;
   const mjtNum* v = d->qvel + ix.walk.agent.root_qvel;
-  return dist < p.arrive_radius_m && std::abs(yaw_err) < p.arrive_yaw_rad &&
-         std::hypot(v[0], v[1]) < p.arrive_speed_mps;
+  return std::abs(yaw_err) < p.arrive_yaw_rad && std::hypot(v[0], v[1]) < p.arrive_speed_mps;
 }
 
 // the stand point `xy`; the walker aims `lead` past it (it stops short of its target)
@@ -228,6 +232,7 @@ void SetWalkTarget(CarryState* s, const Eigen::Vector2d& xy, double yaw,
 void Enter(CarryState* s, CarryPhase phase) {
   s->phase = phase;
   s->phase_time_s = 0;
+  s->near_stand_s = 0;
 }
 
 double FaceYaw(const CarryState& s) { return std::atan2(s.face_dir.y(), s.face_dir.x()); }
@@ -418,11 +423,16 @@ void StartLift(const CarryParams& p, const mjModel* m, mjData* scratch, const mj
 
 double LiftRiseStartSeconds() { return kRiseStart; }
 
-void PoseInLift(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s, CarryState* s) {
+double PutDownLowerEndSeconds() { return kLowerEnd; }
+
+namespace {
+
+// poses the agent at rest in the hinge pose `ref` (also its controls), the root at its current
+// heading pitched forward by `pitch`, the feet's midpoint where it was and the lowest foot
+// corner on the floor
+void PoseOnFeet(const mjModel* m, mjData* d, const CarryIndex& ix, const double* ref,
+                double pitch) {
   const world::AgentIndex& a = ix.walk.agent;
-  s->phase_time_s = Clamp(t_s, 0.0, kRiseStart);
-  double ref[kWalkActDim];
-  CarryReference(*s, ref);
   Eigen::Vector3d pelvis;
   double yaw;
   PelvisPose(d, ix.walk, &pelvis, &yaw);
@@ -432,7 +442,6 @@ void PoseInLift(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s, C
                            0.5 * (d->geom_xpos[3 * l + 1] + d->geom_xpos[3 * r + 1]));
   };
   const Eigen::Vector2d feet0 = feet_xy();
-  const double pitch = s->poses.squat_pitch_rad * Smooth(s->phase_time_s / kSqueezeStart);
   mjtNum q_yaw[4] = {std::cos(yaw / 2), 0, 0, std::sin(yaw / 2)};
   mjtNum q_pitch[4] = {std::cos(pitch / 2), 0, std::sin(pitch / 2), 0};
   mju_mulQuat(d->qpos + a.root_qpos + 3, q_yaw, q_pitch);
@@ -449,6 +458,34 @@ void PoseInLift(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s, C
   mj_kinematics(m, d);
   d->qpos[a.root_qpos + 2] -= LowestBoxCornerZ(m, d, {l, r}) - 0.001;
   mj_forward(m, d);
+}
+
+}  // namespace
+
+void PoseInLift(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s, CarryState* s) {
+  s->phase_time_s = Clamp(t_s, 0.0, kRiseStart);
+  double ref[kWalkActDim];
+  CarryReference(*s, ref);
+  PoseOnFeet(m, d, ix, ref, s->poses.squat_pitch_rad * Smooth(s->phase_time_s / kSqueezeStart));
+}
+
+void StartPutDown(const CarryParams& p, const mjData* d, const CarryIndex& ix, CarryState* s) {
+  Eigen::Vector3d pos;
+  double yaw;
+  PelvisPose(d, ix.walk, &pos, &yaw);
+  Enter(s, CarryPhase::kPutDown);
+  s->gait = p.walk;
+  SetWalkTarget(s, pos.head<2>(), yaw);
+}
+
+void PoseInPutDown(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s,
+                   const CarryPoses& pose_with, CarryState* s) {
+  s->phase_time_s = Clamp(t_s, 0.0, kLowerEnd);
+  CarryState posed = *s;
+  posed.poses = pose_with;
+  double ref[kWalkActDim];
+  CarryReference(posed, ref);
+  PoseOnFeet(m, d, ix, ref, s->poses.squat_pitch_rad * (s->phase_time_s / kLowerEnd));
 }
 
 namespace {
@@ -496,7 +533,7 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
   PelvisPose(d, ix.walk, &pos, &yaw);
   switch (s->phase) {
     case CarryPhase::kApproach:
-      if (Arrived(p, d, ix, *s)) StartLift(p, m, scratch, d, ix, box, s);
+      if (Arrived(p, d, ix, s)) StartLift(p, m, scratch, d, ix, box, s);
       break;
     case CarryPhase::kLift:
       if (s->phase_time_s >= kLiftSeconds) {
@@ -511,11 +548,7 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
       }
       break;
     case CarryPhase::kCarry:
-      if (Arrived(p, d, ix, *s)) {
-        Enter(s, CarryPhase::kPutDown);
-        s->gait = p.walk;
-        SetWalkTarget(s, pos.head<2>(), yaw);
-      }
+      if (Arrived(p, d, ix, s)) StartPutDown(p, d, ix, s);
       break;
     case CarryPhase::kPutDown:
       if (s->phase_time_s >= kPutDownSeconds) {

@@ -48,7 +48,11 @@ struct CarryParams {
   double arrive_radius_m = 0.2;    ///< at a stand point: within this ...
   double arrive_yaw_rad = 0.2;     ///< ... and heading error below this ...
   double arrive_speed_mps = 0.25;  ///< ... and slower than this
-  double retreat_m = 0.6;          ///< step back this far after putting down
+  /// ... or within arrive_radius_m of it for this long in the phase (summed), whatever the
+  /// speed and heading: the lift and the put-down cannot be avoided by hovering near the stand
+  /// point (a policy that fell in the squats learned to; docs/BENCHMARKS.md, issue 17, session 26)
+  double arrive_dwell_s = 1.0;
+  double retreat_m = 0.6;  ///< step back this far after putting down
   /// the approach aims this far past the stand point (arrival is judged at the stand point):
   /// the walker stops about 0.3 m short of its target
   double approach_lead_m = 0.30;
@@ -95,7 +99,8 @@ struct CarryPoses {
 struct CarryState {
   CarryPhase phase = CarryPhase::kApproach;
   double phase_time_s = 0;
-  WalkState walk;   ///< the walking part (its target is the current stand point)
+  double near_stand_s = 0;  ///< time within arrive_radius_m of the stand point in this phase
+  WalkState walk;           ///< the walking part (its target is the current stand point)
   WalkParams gait;  ///< the walking reference gait (CarryParams::walk, copied by BeginCarry)
   Eigen::Vector2d dest_xy = Eigen::Vector2d::Zero();    ///< where the box goes (centre), m
   Eigen::Vector2d face_dir = Eigen::Vector2d::UnitX();  ///< stand frame +x at pick-up (world)
@@ -161,6 +166,22 @@ void PoseInLift(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s, C
 
 /// Seconds into the lift at which the rise starts (the end of PoseInLift's range).
 double LiftRiseStartSeconds();
+
+/// Enters the put-down where the human stands (what arriving at the carry stand point does):
+/// the walking target is held there and the gait's full speed restored.
+void StartPutDown(const CarryParams& p, const mjData* d, const CarryIndex& ix, CarryState* s);
+
+/// Reference-state initialisation inside a started put-down (training): sets the phase time to
+/// `t_s` (clamped to the lowering part, [0, PutDownLowerEndSeconds()]), the hinges and controls
+/// to the put-down reference there computed with the keyframes `pose_with` (e.g. solved with no
+/// press, so the hands touch the held faces instead of starting inside the box), the root
+/// pitched as the squat keyframe scaled by the progress down, the feet flat where they were and
+/// the lowest foot corner on the floor, the human at rest. The box is not moved.
+void PoseInPutDown(const mjModel* m, mjData* d, const CarryIndex& ix, double t_s,
+                   const CarryPoses& pose_with, CarryState* s);
+
+/// Seconds into the put-down at which the squat is down (the end of PoseInPutDown's range).
+double PutDownLowerEndSeconds();
 
 /// Advances phases, the walking command and the grip servo by one policy step (call before
 /// CarryObservation). Entering the lift solves its keyframes (SolveCarryPoses) on `scratch`.
