@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 #include "simhuman/control/manip/grasp_task.h"
 #include "simhuman/core/rng.h"
@@ -43,22 +44,43 @@ int CountFromAllContacts(const mjModel* m, mjData* d, const ArmChain& arm,
   return best + carried_count;
 }
 
+// a generated tabletop scene with its seated human, and its task object's body and qpos address
+struct TableScene {
+  std::unique_ptr<world::SimWorld> world;
+  GraspIndex gi;
+  int obj = -1, obj_qpos = -1;
+};
+std::optional<TableScene> MakeTableScene(uint64_t seed, const char* kind) {
+  auto ts = world::GenerateTabletop(seed, kind);
+  auto catalog = ts.ok() ? world::BuildCatalog(ts->scene) : ts.status();
+  auto human = catalog.ok() ? world::AgentFromHuman(ts->scene.humans[0], 0, *catalog)
+                            : core::StatusOr<world::AgentSpec>(catalog.status());
+  if (!human.ok()) {
+    ADD_FAILURE() << human.status();
+    return std::nullopt;
+  }
+  auto w = world::SimWorld::Create(*catalog, {*human}, world::DexterousModelOptions());
+  if (!w.ok()) {
+    ADD_FAILURE() << w.status();
+    return std::nullopt;
+  }
+  TableScene s;
+  s.world = *std::move(w);
+  s.gi = *MakeGraspIndex(*s.world, 0, true);
+  const mjModel* m = s.world->model();
+  s.obj = mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName(ts->task.object_id).c_str());
+  s.obj_qpos = m->jnt_qposadr[m->body_jntadr[s.obj]];
+  return s;
+}
+
 TEST(ArmCollisionTest, CountsWhatMjCollisionFindsForTheArmAndACarriedObjectIntegration) {
   for (uint64_t seed : {3u, 8u}) {
-    auto ts = world::GenerateTabletop(seed, seed % 2 ? "stack" : "place");
-    ASSERT_TRUE(ts.ok()) << ts.status();
-    auto catalog = world::BuildCatalog(ts->scene);
-    ASSERT_TRUE(catalog.ok()) << catalog.status();
-    auto human = world::AgentFromHuman(ts->scene.humans[0], 0, *catalog);
-    ASSERT_TRUE(human.ok()) << human.status();
-    auto w = world::SimWorld::Create(*catalog, {*human}, world::DexterousModelOptions());
-    ASSERT_TRUE(w.ok()) << w.status();
-    const mjModel* m = (*w)->model();
-    mjData* d = (*w)->data();
-    const GraspIndex gi = *MakeGraspIndex(**w, 0, true);
-    const ArmChain& arm = gi.arm;
-    const int obj = mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName(ts->task.object_id).c_str());
-    const int obj_qpos = m->jnt_qposadr[m->body_jntadr[obj]];
+    const std::optional<TableScene> scene = MakeTableScene(seed, seed % 2 ? "stack" : "place");
+    ASSERT_TRUE(scene);
+    const mjModel* m = scene->world->model();
+    mjData* d = scene->world->data();
+    const ArmChain& arm = scene->gi.arm;
+    const int obj = scene->obj, obj_qpos = scene->obj_qpos;
     const ArmCollider alone(m, arm), carrying(m, arm, obj);
     EXPECT_GT(carrying.num_pairs(), alone.num_pairs());
     core::Rng rng(seed);
@@ -92,20 +114,12 @@ TEST(ArmCollisionTest, CountsWhatMjCollisionFindsForTheArmAndACarriedObjectInteg
 // whose movable objects' geoms carry the clearance as their margin, counting those objects'
 // contacts with the arm closer than the clearance (and the exempt object's only when they touch).
 TEST(ArmCollisionTest, KeepsTheClearanceFromMovableObjectsThatMjCollisionMeasuresIntegration) {
-  auto ts = world::GenerateTabletop(5, "place");
-  ASSERT_TRUE(ts.ok()) << ts.status();
-  auto catalog = world::BuildCatalog(ts->scene);
-  ASSERT_TRUE(catalog.ok()) << catalog.status();
-  auto human = world::AgentFromHuman(ts->scene.humans[0], 0, *catalog);
-  ASSERT_TRUE(human.ok()) << human.status();
-  auto w = world::SimWorld::Create(*catalog, {*human}, world::DexterousModelOptions());
-  ASSERT_TRUE(w.ok()) << w.status();
-  const mjModel* m = (*w)->model();
-  mjData* d = (*w)->data();
-  const GraspIndex gi = *MakeGraspIndex(**w, 0, true);
-  const ArmChain& arm = gi.arm;
-  const int obj = mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName(ts->task.object_id).c_str());
-  const int obj_qpos = m->jnt_qposadr[m->body_jntadr[obj]];
+  const std::optional<TableScene> scene = MakeTableScene(5, "place");
+  ASSERT_TRUE(scene);
+  const mjModel* m = scene->world->model();
+  mjData* d = scene->world->data();
+  const ArmChain& arm = scene->gi.arm;
+  const int obj = scene->obj, obj_qpos = scene->obj_qpos;
   constexpr double kClear = 0.02, kTol = 0.002;
   auto movable = [&](int b) {
     return m->body_jntnum[b] > 0 && m->jnt_type[m->body_jntadr[b]] == mjJNT_FREE;
