@@ -44,6 +44,20 @@ int CountFromAllContacts(const mjModel* m, mjData* d, const ArmChain& arm,
   return best + carried_count;
 }
 
+// a random arm pose, and the object (its free joint at `obj_qpos`) somewhere around the palm:
+// into the hand, the table or another object
+void RandomArmAndObject(const mjModel* m, mjData* d, const ArmChain& arm, int obj_qpos,
+                        core::Rng& rng) {
+  Eigen::VectorXd q(ArmChain::kDofs);
+  for (int i = 0; i < ArmChain::kDofs; ++i) q[i] = rng.Uniform(arm.lo[i], arm.hi[i]);
+  arm.Set(d, q);
+  mj_kinematics(m, d);
+  for (int i = 0; i < 3; ++i) {
+    d->qpos[obj_qpos + i] = d->site_xpos[3 * arm.palm_site + i] + rng.Uniform(-0.12, 0.12);
+  }
+  mj_kinematics(m, d);
+}
+
 // a generated tabletop scene with its seated human, and its task object's body and qpos address
 struct TableScene {
   std::unique_ptr<world::SimWorld> world;
@@ -86,15 +100,7 @@ TEST(ArmCollisionTest, CountsWhatMjCollisionFindsForTheArmAndACarriedObjectInteg
     core::Rng rng(seed);
     int touching = 0, carried_touching = 0;
     for (int k = 0; k < 400; ++k) {
-      Eigen::VectorXd q(ArmChain::kDofs);
-      for (int i = 0; i < ArmChain::kDofs; ++i) q[i] = rng.Uniform(arm.lo[i], arm.hi[i]);
-      arm.Set(d, q);
-      mj_kinematics(m, d);
-      // the object somewhere around the palm (into the hand, the table or another object)
-      for (int i = 0; i < 3; ++i) {
-        d->qpos[obj_qpos + i] = d->site_xpos[3 * arm.palm_site + i] + rng.Uniform(-0.12, 0.12);
-      }
-      mj_kinematics(m, d);
+      RandomArmAndObject(m, d, arm, obj_qpos, rng);
       for (double tol : {0.0, 0.002}) {
         const int a = alone.Count(d, {}, tol);
         EXPECT_EQ(a, CountFromAllContacts(m, d, arm, {}, -1, tol)) << "pose " << k;
@@ -142,14 +148,7 @@ TEST(ArmCollisionTest, KeepsTheClearanceFromMovableObjectsThatMjCollisionMeasure
   core::Rng rng(5);
   int kept_apart = 0;
   for (int k = 0; k < 300; ++k) {
-    Eigen::VectorXd q(ArmChain::kDofs);
-    for (int i = 0; i < ArmChain::kDofs; ++i) q[i] = rng.Uniform(arm.lo[i], arm.hi[i]);
-    arm.Set(d, q);
-    mj_kinematics(m, d);
-    for (int i = 0; i < 3; ++i) {
-      d->qpos[obj_qpos + i] = d->site_xpos[3 * arm.palm_site + i] + rng.Uniform(-0.12, 0.12);
-    }
-    mj_kinematics(m, d);
+    RandomArmAndObject(m, d, arm, obj_qpos, rng);
     for (int exempt : {-1, obj}) {
       const mjModel* mi = inflated[exempt < 0 ? 0 : 1].get();
       mju_copy(dd->qpos, d->qpos, m->nq);
