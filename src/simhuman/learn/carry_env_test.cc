@@ -21,6 +21,20 @@ namespace {
 using control::CarryPhase;
 
 // the env-free names used by config parsing agree with the registry
+// sets env 0's box (cube side, mass) ahead of the human, its centre `ahead_m` beyond the stand
+// gap, and its destination `dest_m` further on; returns the human's forward direction
+Eigen::Vector3d BoxAhead(CarryTask& t, double side, double mass, double ahead_m, double dest_m,
+                         float* obs) {
+  Eigen::Vector3d pelvis;
+  double yaw;
+  control::PelvisPose(t.data(0), t.index().walk, &pelvis, &yaw);
+  const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
+  Eigen::Vector3d box = pelvis + (t.params().stand_gap_m + ahead_m) * fwd;
+  box.z() = 0;
+  t.SetBox(0, side, mass, box, yaw, (box + dest_m * fwd).head<2>(), obs);
+  return fwd;
+}
+
 TEST(Tasks, NamesAndSolverChoiceAgreeWithTheRegistry) {
   std::vector<std::string> names;
   for (const TaskDef& t : Tasks()) {
@@ -291,13 +305,7 @@ TEST(CarryTask, GripPullsTheHandsOntoTheHeldBoxOnlyWhileHoldingIntegration) {
     if (grip) {
       EXPECT_EQ((*t)->data(0)->ctrl[ix.left_grip], 0.0);
     }
-    Eigen::Vector3d pelvis;
-    double yaw;
-    control::PelvisPose((*t)->data(0), ix.walk, &pelvis, &yaw);
-    const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
-    Eigen::Vector3d box = pelvis + ((*t)->params().stand_gap_m + 0.3) * fwd;
-    box.z() = 0;
-    (*t)->SetBox(0, 0.6, 8.0, box, yaw, (box + 2.0 * fwd).head<2>(), obs.data());
+    BoxAhead(**t, 0.6, 8.0, 0.3, 2.0, obs.data());
     (*t)->StartHoldingNow(0, obs.data());
     (*t)->Step(0, act.data(), obs.data(), &info);
     const mjModel* m = (*t)->model(0);
@@ -337,13 +345,7 @@ TEST(CarryMpc, KeepsTheSquatBalancedWhereTheReferenceAloneFallsIntegration) {
     (*t)->SetEvaluation(100000);
     std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
     (*t)->Reset(0, 3000, obs.data());
-    Eigen::Vector3d pelvis;
-    double yaw;
-    control::PelvisPose((*t)->data(0), (*t)->index().walk, &pelvis, &yaw);
-    const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
-    Eigen::Vector3d box = pelvis + ((*t)->params().stand_gap_m + 0.225) * fwd;
-    box.z() = 0;
-    (*t)->SetBox(0, 0.45, 5.0, box, yaw, (box + 2.0 * fwd).head<2>(), obs.data());
+    BoxAhead(**t, 0.45, 5.0, 0.225, 2.0, obs.data());
     (*t)->StartLiftNow(0, obs.data());
     control::CarryMpcOptions o;
     o.seed = 3000;
@@ -376,13 +378,7 @@ TEST(CarryTask, StartHoldingPutsTheBoxBetweenTheHands) {
   ASSERT_TRUE(t.ok()) << t.status();
   std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
   (*t)->Reset(0, 2000, obs.data());
-  Eigen::Vector3d pelvis;
-  double yaw;
-  control::PelvisPose((*t)->data(0), (*t)->index().walk, &pelvis, &yaw);
-  const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
-  Eigen::Vector3d box = pelvis + ((*t)->params().stand_gap_m + 0.3) * fwd;
-  box.z() = 0;
-  (*t)->SetBox(0, 0.6, 4.0, box, yaw, (box + 2.0 * fwd).head<2>(), obs.data());
+  BoxAhead(**t, 0.6, 4.0, 0.3, 2.0, obs.data());
   (*t)->StartHoldingNow(0, obs.data());
   const mjData* d = (*t)->data(0);
   const control::CarryBox b = control::ReadCarryBox((*t)->model(0), d, (*t)->box_geom());
@@ -407,13 +403,7 @@ TEST(CarryTask, EveryGeomOfASmallBoxScalesWithIt) {
   ASSERT_TRUE(t.ok()) << t.status();
   std::vector<float> obs((*t)->obs_dim());
   (*t)->Reset(0, 2000, obs.data());
-  Eigen::Vector3d pelvis;
-  double yaw;
-  control::PelvisPose((*t)->data(0), (*t)->index().walk, &pelvis, &yaw);
-  const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
-  Eigen::Vector3d box = pelvis + ((*t)->params().stand_gap_m + 0.5 * kSide) * fwd;
-  box.z() = 0;
-  (*t)->SetBox(0, kSide, 4.0, box, yaw, (box + 2.0 * fwd).head<2>(), obs.data());
+  BoxAhead(**t, kSide, 4.0, 0.5 * kSide, 2.0, obs.data());
   const mjModel* m = (*t)->model(0);
   const int body = m->geom_bodyid[(*t)->box_geom()];
   int geoms = 0;
@@ -562,13 +552,7 @@ TEST(CarryTask, TheWalkingPolicyCarriesAHeldLightBoxIntegration) {
   (*t)->SetEvaluation(1000);
   std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
   (*t)->Reset(0, 3000, obs.data());
-  Eigen::Vector3d pelvis;
-  double yaw;
-  control::PelvisPose((*t)->data(0), (*t)->index().walk, &pelvis, &yaw);
-  const Eigen::Vector3d fwd(std::cos(yaw), std::sin(yaw), 0);
-  Eigen::Vector3d box = pelvis + ((*t)->params().stand_gap_m + 0.2) * fwd;
-  box.z() = 0;
-  (*t)->SetBox(0, 0.4, 2.0, box, yaw, (box + 10.0 * fwd).head<2>(), obs.data());
+  const Eigen::Vector3d fwd = BoxAhead(**t, 0.4, 2.0, 0.2, 10.0, obs.data());
   (*t)->StartHoldingNow(0, obs.data());
   const auto box_at = [&] {
     return control::ReadCarryBox((*t)->model(0), (*t)->data(0), (*t)->box_geom()).pos;
