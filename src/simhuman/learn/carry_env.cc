@@ -24,8 +24,8 @@ constexpr double kStartInSquatFraction = 0.6;  // of the episodes that start at 
 constexpr double kMaxApproachSeconds = 20;
 // a carry that has not reached its stand point by then stalled (the put-down starts within
 // CarryParams::arrive_dwell_s of reaching it)
-constexpr double kMaxCarrySeconds = 30;
-constexpr double kBuiltBoxSide = 0.5;  // the box is built as this cube; ShapeBox scales it
+constexpr double kMaxCarrySeconds = 15;  // training destinations lie 1-3 m away
+constexpr double kBuiltBoxSide = 0.5;    // the box is built as this cube; ShapeBox scales it
 
 Eigen::Vector3d Vec(const mjtNum* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
 
@@ -46,7 +46,7 @@ const char* CarryFailureName(CarryFailure f) {
     case CarryFailure::kLost:
       return "lost the box";
     case CarryFailure::kStalled:
-      return "stalled (approach over 20 s or carry over 30 s)";
+      return "stalled (approach over 20 s or carry over 15 s)";
     case CarryFailure::kNonFinite:
       return "non-finite state";
   }

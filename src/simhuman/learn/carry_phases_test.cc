@@ -97,6 +97,38 @@ TEST(CarryPhases, HoldingTheBoxAtTheStandPointStartsThePutDownWhateverTheHeading
   }
 }
 
+// the held box over the destination starts the put-down at once, wherever the pelvis is (here
+// 0.5 m from its stand point, outside the arrival radius); a box 0.25 m from it keeps carrying
+TEST(CarryPhases, TheHeldBoxOverTheDestinationStartsThePutDown) {
+  auto t = CarryTask::Create(1);
+  ASSERT_TRUE(t.ok()) << t.status();
+  (*t)->set_held_start_fraction(1);
+  std::vector<float> obs((*t)->obs_dim());
+  (*t)->Reset(0, 3, obs.data());
+  ASSERT_EQ((*t)->state(0).phase, CarryPhase::kLift);
+  Eigen::Vector2d xy;
+  double yaw;
+  Pelvis(**t, &xy, &yaw);
+  for (double box_off_m : {0.1, 0.25}) {
+    Frozen f(**t);
+    const control::CarryBox box = control::ReadCarryBox(f.m, f.d, (*t)->box_geom());
+    control::CarryState s = (*t)->state(0);
+    s.phase = CarryPhase::kCarry;
+    s.phase_time_s = 1.0;
+    s.stand_xy = xy + 0.5 * Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
+    s.walk.target_xy = s.stand_xy;
+    s.dest_xy = box.pos.head<2>() + box_off_m * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+    const int steps = f.StepsToLeave(**t, CarryPhase::kCarry, 3.0, &s);
+    SCOPED_TRACE(testing::Message() << "box " << box_off_m << " m from the destination");
+    if (box_off_m > (*t)->params().put_down_box_radius_m) {
+      EXPECT_EQ(steps, -1);
+    } else {
+      EXPECT_EQ(steps, 1);
+      EXPECT_EQ(s.phase, CarryPhase::kPutDown);
+    }
+  }
+}
+
 // the same rule starts the lift: a human standing still at the stand point facing away from
 // the box (outside the strict heading tolerance) starts lifting within kPhaseChangeWithinS
 TEST(CarryPhases, StandingAtTheBoxStartsTheLiftWhateverTheHeading) {

@@ -548,7 +548,10 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
       }
       break;
     case CarryPhase::kCarry:
-      if (Arrived(p, d, ix, s)) StartPutDown(p, d, ix, s);
+      if (Arrived(p, d, ix, s) ||
+          (box.pos.head<2>() - s->dest_xy).norm() < p.put_down_box_radius_m) {
+        StartPutDown(p, d, ix, s);
+      }
       break;
     case CarryPhase::kPutDown:
       if (s->phase_time_s >= kPutDownSeconds) {

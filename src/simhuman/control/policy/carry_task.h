@@ -52,6 +52,10 @@ struct CarryParams {
   /// speed and heading: the lift and the put-down cannot be avoided by hovering near the stand
   /// point (a policy that fell in the squats learned to; docs/BENCHMARKS.md, issue 17, session 26)
   double arrive_dwell_s = 1.0;
+  /// the put-down also starts once the held box's centre is this close (horizontally) to the
+  /// destination, wherever the pelvis is: a carrier holding the box just over the destination
+  /// with its pelvis outside arrive_radius_m could dodge it (issue 17, session 26)
+  double put_down_box_radius_m = 0.15;
   double retreat_m = 0.6;  ///< step back this far after putting down
   /// the approach aims this far past the stand point (arrival is judged at the stand point):
   /// the walker stops about 0.3 m short of its target
