@@ -60,12 +60,8 @@ core::StatusOr<std::unique_ptr<GraspTask>> GraspTask::Create(int num_envs, bool 
   const world::ModelOptions opt = world::DexterousModelOptions();
   SH_ASSIGN_OR_RETURN(t->world_, world::SimWorld::Create(scene, {human}, opt));
   SH_ASSIGN_OR_RETURN(t->ix_, control::manip::MakeGraspIndex(*t->world_, 0, true));
-  mjModel* m = t->world_->mutable_model();
-  // buffers for one seated human, a hand and a few objects (the scene default is sized for
-  // rooms and teams: ~150 MB per mjData with its njmax)
-  m->nconmax = 160;
-  m->njmax = 800;
-  m->nstack = 400000;
+  // buffers sized for one seated human, a hand and a few objects (DexterousModelOptions)
+  const mjModel* m = t->world_->model();
   t->object_body_ = mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName(kObjectId).c_str());
   for (int k = 0; k < 3; ++k) {
     const std::string g = world::ObjectBodyName(kObjectId) + "/" + std::to_string(k);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 #include "simhuman/world/humanoid.h"
 #include "simhuman/world/objects.h"
@@ -130,6 +131,15 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
     return absl::InvalidArgumentError("model option impratio " + F(options.impratio) +
                                       " must be a finite number >= 1");
   }
+  for (auto [key, value, low] : {std::tuple<const char*, int, int>{"nconmax", options.nconmax, 1},
+                                 {"njmax", options.njmax, 1},
+                                 {"nstack", options.nstack, 1000}}) {
+    if (value < low) {
+      return absl::InvalidArgumentError(std::string("model option ") + key + " " +
+                                        std::to_string(value) + " must be at least " +
+                                        std::to_string(low));
+    }
+  }
   std::ostringstream o;
   o << "<mujoco model=\"simhuman\">\n"
     << "<compiler angle=\"degree\" autolimits=\"true\"/>\n"
@@ -137,7 +147,8 @@ core::StatusOr<std::string> BuildModelXml(const core::SceneCatalog& scene,
     << options.solver_iterations << "\" integrator=\"Euler\" solver=\""
     << (options.solver == "pgs" ? "PGS" : "Newton") << "\" cone=\"" << options.cone
     << "\" impratio=\"" << F(options.impratio) << "\"/>\n"
-    << "<size nconmax=\"1500\" njmax=\"4000\" nstack=\"3000000\"/>\n"
+    << "<size nconmax=\"" << options.nconmax << "\" njmax=\"" << options.njmax << "\" nstack=\""
+    << options.nstack << "\"/>\n"
     << "<visual><global offwidth=\"" << options.offscreen_width << "\" offheight=\""
     << options.offscreen_height << "\"/><quality shadowsize=\"2048\"/>"
     << "<headlight ambient=\"0.35 0.35 0.35\" diffuse=\"0.5 0.5 0.5\"/></visual>\n"

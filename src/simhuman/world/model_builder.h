@@ -25,6 +25,13 @@ struct ModelOptions {
   double impratio = 1;
   int offscreen_width = 640;  ///< framebuffer for headless rendering
   int offscreen_height = 480;
+  /// MuJoCo's buffer sizes (MJCF <size>): contacts, constraint rows and the stack (mjtNum).
+  /// Every mjData of the model allocates and clears them: njmax alone costs njmax^2 x 8 bytes
+  /// (128 MB at the default, sized for rooms and teams). A run that outgrows them gets MuJoCo's
+  /// CONTACTFULL/CNSTRFULL warning (contacts dropped), which the health checks report.
+  int nconmax = 1500;
+  int njmax = 4000;
+  int nstack = 3000000;
 };
 
 /// Name prefix of agent `i` ("" for agent 0, "h1/" for agent 1, ...).

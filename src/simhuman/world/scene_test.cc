@@ -408,5 +408,25 @@ TEST(SceneTest, FrictionIsReadCheckedWrittenAndReachesTheModel) {
               HasSubstr("object 'box000': friction 0.01 is outside the valid range [0.1, 2]"));
 }
 
+// MuJoCo's buffer sizes come from ModelOptions (the tabletop's are small: every mjData clears
+// them when made); sizes below the minimum are refused by name
+TEST(ModelBuilder, BufferSizesComeFromTheOptionsAndAreChecked) {
+  SceneSpec s;
+  s.name = "sizes";
+  core::StatusOr<core::SceneCatalog> cat = BuildCatalog(s);
+  ASSERT_TRUE(cat.ok()) << cat.status();
+  ModelOptions o;
+  o.nconmax = 250;
+  o.njmax = 1000;
+  o.nstack = 800000;
+  core::StatusOr<std::string> xml = BuildModelXml(*cat, {}, o);
+  ASSERT_TRUE(xml.ok()) << xml.status();
+  EXPECT_THAT(*xml, HasSubstr("<size nconmax=\"250\" njmax=\"1000\" nstack=\"800000\"/>"));
+  o.njmax = 0;
+  xml = BuildModelXml(*cat, {}, o);
+  ASSERT_FALSE(xml.ok());
+  EXPECT_THAT(std::string(xml.status().message()), HasSubstr("njmax 0 must be at least 1"));
+}
+
 }  // namespace
 }  // namespace simhuman::world

@@ -212,6 +212,12 @@ ModelOptions DexterousModelOptions() {
   o.timestep_s = 1.0 / 240;
   o.cone = "elliptic";
   o.impratio = 3;
+  // one seated human, a hand and a table of 4-6 objects: 60-150 constraint rows measured;
+  // MuJoCo clears every mjData's buffers when it makes one, and at the room-sized default the
+  // tabletop pipeline spent about a third of its time doing so
+  o.nconmax = 250;
+  o.njmax = 1000;
+  o.nstack = 800000;
   return o;
 }
 

@@ -95,8 +95,16 @@ class Run {
     for (int k = 0; k < m_->nv; ++k) {
       if (!std::isfinite(d_->qvel[k])) return false;
     }
+    // contacts dropped for want of buffer (world::ModelOptions' sizes): the physics is wrong
+    if (d_->warning[mjWARN_CONTACTFULL].number > 0 || d_->warning[mjWARN_CNSTRFULL].number > 0) {
+      step_error_ = "MuJoCo's contact buffers are full (nconmax " + std::to_string(m_->nconmax) +
+                    ", njmax " + std::to_string(m_->njmax) + "): contacts were dropped";
+      return false;
+    }
     return true;
   }
+  // why the last Step failed
+  std::string StepError() const { return step_error_; }
   bool Follow(ArmTracker& tr, const Trajectory& traj, double extra_s) {
     tr.Reset();
     const double t0 = d_->time;
@@ -186,6 +194,7 @@ class Run {
   const StepHook& hook_;
   GraspState s_;
   int steps_ = 0;
+  std::string step_error_ = "unstable simulation";
 };
 
 std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
@@ -200,8 +209,7 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   for (int i = ArmChain::kDofs; i < kGraspDofs; ++i) s_.target[i] = scratch_->qpos[ix_.qpos[i]];
   const Eigen::VectorXd still = ix_.arm.Get(d_);
   for (int k = 0; k < 60; ++k) {
-    if (!Step([&] { tr.Hold(still, d_); }))
-      return Fail(TabletopStage::kReach, "unstable simulation");
+    if (!Step([&] { tr.Hold(still, d_); })) return Fail(TabletopStage::kReach, StepError());
   }
   Eigen::Vector3d centre = g_.planned_pos + Eigen::Vector3d(0, 0, GripHeightM(g_, o_));
   // palm poses around the object at the given approach angles
@@ -277,7 +285,7 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
     while (lean + 1 < leans &&
            far - o_.lean_shoulder_m * std::sin(o_.lean_deg[lean] * M_PI / 180) > o_.comfort_reach_m)
       ++lean;
-    if (!lean_to(lean)) return Fail(TabletopStage::kReach, "unstable simulation");
+    if (!lean_to(lean)) return Fail(TabletopStage::kReach, StepError());
   }
   // a plan at the grip height; when no arm pose or path reaches it, the object higher up (the
   // arm lies on the table on the way to a far object's middle; a seated person takes it higher,
@@ -304,14 +312,13 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   core::StatusOr<ArmMotion> motion = plan_at_heights();
   // leaning further while no arm pose is free or no path reaches one
   for (++lean; lean < leans && plan_failed(motion); ++lean) {
-    if (!lean_to(lean)) return Fail(TabletopStage::kReach, "unstable simulation");
+    if (!lean_to(lean)) return Fail(TabletopStage::kReach, StepError());
     motion = plan_at_heights();
   }
   if (!motion.ok()) {
     return Fail(TabletopStage::kReach, std::string(motion.status().message()), true);
   }
-  if (!Follow(tr, motion->trajectory, 0.05))
-    return Fail(TabletopStage::kReach, "unstable simulation");
+  if (!Follow(tr, motion->trajectory, 0.05)) return Fail(TabletopStage::kReach, StepError());
   return std::nullopt;
 }
 
@@ -346,8 +353,7 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   if (!motion.ok()) {
     return Fail(TabletopStage::kTransport, std::string(motion.status().message()), true);
   }
-  if (!Follow(tr, motion->trajectory, 0.2))
-    return Fail(TabletopStage::kTransport, "unstable simulation");
+  if (!Follow(tr, motion->trajectory, 0.2)) return Fail(TabletopStage::kTransport, StepError());
   if (!InHand())
     return Fail(TabletopStage::kTransport, "drop in transport: the object fell out of the hand");
   return std::nullopt;
@@ -364,7 +370,7 @@ std::optional<TabletopResult> Run::GraspAndLift(ArmTracker& tr, const GraspPolic
     policy(obs.data(), act.data());
     ApplyGraspAction(ix_, act.data(), &s_);
     for (int j = 0; j < substeps; ++j) {
-      if (!Step({})) return Fail(TabletopStage::kGrasp, "unstable simulation");
+      if (!Step({})) return Fail(TabletopStage::kGrasp, StepError());
     }
   }
   // what touched the object when the grasp ended (said in a grasp miss's end reason)
@@ -381,7 +387,7 @@ std::optional<TabletopResult> Run::GraspAndLift(ArmTracker& tr, const GraspPolic
   }
   const double z0 = ObjectCom().z();
   if (!MovePalm(tr, Eigen::Vector3d(0, 0, o_.lift_m), 0.8, {})) {
-    return Fail(TabletopStage::kLift, "unstable simulation");
+    return Fail(TabletopStage::kLift, StepError());
   }
   if (!InHand() || ObjectCom().z() - z0 < 0.5 * o_.lift_m) {
     return Fail(TabletopStage::kGrasp,
@@ -418,11 +424,11 @@ bool Run::LetGo(ArmTracker& tr) {
 // after a miss: lets go, waits for the object to come to rest, and takes where the controllers
 // now see it as the next attempt's plan; an error says why there is no next attempt
 std::optional<std::string> Run::ReadyForRetry(ArmTracker& tr) {
-  if (!LetGo(tr)) return std::string("unstable simulation");
+  if (!LetGo(tr)) return std::string(StepError());
   const Eigen::VectorXd still = ix_.arm.Get(d_);
   const double t0 = d_->time;
   while (d_->time - t0 < kRetrySettleS) {
-    if (!Step([&] { tr.Hold(still, d_); })) return std::string("unstable simulation");
+    if (!Step([&] { tr.Hold(still, d_); })) return std::string(StepError());
   }
   const ObjectView seen = ObserveObject(g_, d_, false);
   if (g_.shape != GraspShape::kSphere && seen.up.z() < std::cos(M_PI / 6))
@@ -485,22 +491,21 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
     if (err.norm() < o_.align_tol_m && Eigen::AngleAxisd(turn).angle() < o_.align_tilt_rad) break;
     const Eigen::Vector3d p(d_->site_xpos + 3 * ix_.arm.palm_site);
     if (!MovePalm(tr, c + turn * (p - c) - p + err, o_.align_s, {}, &turn)) {
-      return finish(Fail(TabletopStage::kPlace, "unstable simulation"));
+      return finish(Fail(TabletopStage::kPlace, StepError()));
     }
   }
   const double drop = o_.carry_clearance_m + 0.04;
   if (!MovePalm(tr, Eigen::Vector3d(0, 0, -drop), drop / o_.lower_speed_mps,
                 [&] { return Supported(); })) {
-    return finish(Fail(TabletopStage::kPlace, "unstable simulation"));
+    return finish(Fail(TabletopStage::kPlace, StepError()));
   }
   // release and retract
-  if (!LetGo(tr)) return finish(Fail(TabletopStage::kRelease, "unstable simulation"));
+  if (!LetGo(tr)) return finish(Fail(TabletopStage::kRelease, StepError()));
   // settle
   const Eigen::VectorXd rest = ix_.arm.Get(d_);
   const double t1 = d_->time;
   while (d_->time - t1 < o_.settle_s) {
-    if (!Step([&] { tr.Hold(rest, d_); }))
-      return finish(Fail(TabletopStage::kSettle, "unstable simulation"));
+    if (!Step([&] { tr.Hold(rest, d_); })) return finish(Fail(TabletopStage::kSettle, StepError()));
   }
   const Eigen::Vector3d c = ObjectCom();
   mjtNum vel[6];
