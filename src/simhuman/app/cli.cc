@@ -163,6 +163,12 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
                    "episode (1: no second try, as DASH)")
       ->check(CLI::Range(1, 5))
       ->capture_default_str();
+  eval_cmd
+      ->add_option("--jobs", ev->jobs,
+                   "tabletop, place, stack: episodes run at once, one thread each (results do "
+                   "not depend on it; 2 uses both cores of a 2-core machine)")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
   eval_cmd->add_option("--vision-model", ev->vision_model,
                        "vision suite, --perception vision: model file (default "
                        "assets/vision/vision.pt)");

@@ -122,6 +122,8 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
                  {"--perception", "truth", "vision"});
   ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--grasp-attempts", "0"}),
                  {"--grasp-attempts", "not in range 1 to 5"});
+  ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--jobs", "0"}),
+                 {"--jobs", "not in range 1 to 64"});
   ExpectBadInput(Cli({"run", "--scene", "tabletop_demo", "--perception", "eyes", "--command",
                       "put the red box on the blue cylinder"}),
                  {"--perception"});

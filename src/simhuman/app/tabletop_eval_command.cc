@@ -32,6 +32,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   o.grasp = eval::DefaultGraspPolicy(flags.grasp_policy);
   o.perception = flags.perception;
   o.grasp_attempts = flags.grasp_attempts;
+  o.jobs = flags.jobs;
   o.vision_model = flags.vision_model.empty() ? DefaultVisionModel() : flags.vision_model;
   if (o.perception == "vision") {
     if (absl::Status s = CheckVisionModelFile(o.vision_model); !s.ok()) {
@@ -79,6 +80,11 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   out << buf << std::endl;
   std::snprintf(buf, sizeof(buf), "simulated %.1f s in %.1f s of wall time (%.2fx real time)",
                 s->sim_s, s->wall_s, s->wall_s > 0 ? s->sim_s / s->wall_s : 0.0);
+  out << buf << std::endl;
+  std::snprintf(buf, sizeof(buf),
+                "the run: %d episodes at once, %.1f s elapsed, pipeline %.0f simulation steps/s "
+                "in all",
+                s->jobs, s->elapsed_s, s->steps_per_elapsed_s);
   out << buf << std::endl;
   if (o.perception == "vision") {
     std::snprintf(buf, sizeof(buf),

@@ -1,7 +1,12 @@
 #include "simhuman/eval/tabletop_eval.h"
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <filesystem>
+#include <mutex>
+#include <optional>
+#include <thread>
 
 #include "simhuman/control/manip/scripted_grasp.h"
 #include "simhuman/control/manip/tabletop_pipeline.h"
@@ -72,6 +77,7 @@ core::StatusOr<control::manip::TabletopGoal> TabletopSceneGoal(const world::Tabl
 namespace {
 
 // mj_step alone, `steps` times from the state in `from` (an episode's start): wall and CPU time
+// (of the calling thread)
 struct RawTime {
   double wall_s = 0, cpu_s = 0;
 };
@@ -136,6 +142,9 @@ nlohmann::json TabletopEvalSummary::ToJson() const {
           {"pipeline_steps_per_cpu_s", cpu_steps_per_s},
           {"raw_mj_step_steps_per_cpu_s", raw_cpu_steps_per_s},
           {"real_time_factor", wall_s > 0 ? sim_s / wall_s : 0.0},
+          {"jobs", jobs},
+          {"elapsed_s", elapsed_s},
+          {"pipeline_steps_per_elapsed_s", steps_per_elapsed_s},
           {"perception", perception},
           {"perception_failures", perception_failures},
           {"vision_frames", vision_frames},
@@ -159,113 +168,217 @@ nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
           {"cpu_s", e.cpu_s}};
 }
 
+namespace {
+
+// mj_step alone from every episode's start, so that it shares the run's load
+constexpr int kRawSteps = 1000;
+
+// one episode's record and what the summary adds up from it
+struct EpisodeOutcome {
+  TabletopEpisode e;
+  RawTime raw;
+  double sim_s = 0;
+  bool perception_failure = false;
+};
+
+// what one worker thread keeps across its episodes (the renderer and the vision model)
+struct Worker {
+  std::unique_ptr<TabletopVision> vision;
+};
+
+core::StatusOr<EpisodeOutcome> RunEpisode(const TabletopEvalOptions& o, int i,
+                                          const control::GraspPolicyMaker& make_grasp,
+                                          const control::manip::TabletopOptions& pipeline,
+                                          Worker* worker) {
+  EpisodeOutcome out;
+  const uint64_t seed = core::DeriveSeed(o.seed, 0x7ab1e, static_cast<uint64_t>(i));
+  std::string kind = o.kind;
+  if (kind == "any") kind = i % 2 == 0 ? "place" : "stack";
+  SH_ASSIGN_OR_RETURN(world::TabletopScene ts, world::GenerateTabletop(seed, kind));
+  SH_ASSIGN_OR_RETURN(core::SceneCatalog catalog, world::BuildCatalog(ts.scene));
+  SH_ASSIGN_OR_RETURN(world::AgentSpec human,
+                      world::AgentFromHuman(ts.scene.humans[0], 0, catalog));
+  const world::ModelOptions opt = world::DexterousModelOptions();
+  SH_ASSIGN_OR_RETURN(std::unique_ptr<world::SimWorld> w,
+                      world::SimWorld::Create(catalog, {human}, opt));
+  SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(*w, 0, true));
+  SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopSceneGoal(ts, *w));
+  out.raw = RawStepTime(w->model(), w->data(), kRawSteps);
+  control::manip::TabletopResult r;
+  control::manip::StepHook hook;
+  core::Status seen = absl::OkStatus();
+  if (o.perception == "vision") {
+    if (!worker->vision) {
+      SH_ASSIGN_OR_RETURN(worker->vision, TabletopVision::Create(o.vision_model, w->model()));
+    }
+    TabletopVision* vision = worker->vision.get();
+    seen =
+        vision->Begin(*w, catalog, ts.task.object_id, ts.task.target_id, &goal, ix.arm.hand_body);
+    if (!seen.ok() && !absl::IsNotFound(seen)) return seen;
+    hook = [&seen, vision](const mjData* d) {
+      if (core::Status s = vision->OnStep(d); !s.ok()) seen = s;
+    };
+  }
+  if (seen.ok()) {
+    const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
+      return make_grasp(w->model(), w->data(), ix, g, pipeline);
+    };
+    r = control::manip::RunTabletop(*w, ix, goal, grasp, pipeline, hook);
+    if (!seen.ok()) return seen;  // the renderer failed mid-episode
+  } else {
+    out.perception_failure = true;
+    r.failed_stage = control::manip::TabletopStage::kReach;
+    r.end_reason = "perception failure: " + std::string(seen.message());
+  }
+  TabletopEpisode& e = out.e;
+  e.index = i;
+  e.seed = seed;
+  e.kind = kind;
+  e.object = ts.task.object_id;
+  e.shape = goal.shape == GraspShape::kBox        ? "box"
+            : goal.shape == GraspShape::kCylinder ? "cylinder"
+                                                  : "sphere";
+  e.success = r.success;
+  e.plan_failure = r.plan_failure;
+  e.failed_stage = r.success    ? ""
+                   : !seen.ok() ? "perception"
+                                : control::manip::TabletopStageName(r.failed_stage);
+  e.end_reason = r.end_reason;
+  e.sim_steps = r.sim_steps;
+  e.grasp_attempts = r.grasp_attempts;
+  e.wall_s = r.wall_s;
+  e.cpu_s = r.cpu_s;
+  out.sim_s = r.sim_steps * w->model()->opt.timestep;
+  return out;
+}
+
+// the run's sums over its episodes
+struct Totals {
+  int64_t steps = 0;
+  double wall_s = 0, cpu_s = 0;
+  RawTime raw;
+};
+
+void AddEpisode(const EpisodeOutcome& x, TabletopEvalSummary* sum, Totals* t) {
+  const TabletopEpisode& e = x.e;
+  sum->perception_failures += x.perception_failure;
+  sum->regrasped += e.grasp_attempts > 1;
+  sum->regrasped_successes += e.grasp_attempts > 1 && e.success;
+  ++sum->episodes;
+  sum->successes += e.success;
+  sum->plan_failures += e.plan_failure;
+  if (!e.success) ++sum->failures_by_stage[e.failed_stage];
+  TabletopEvalSummary::Tally& tally = sum->by_task[e.kind + "/" + e.shape];
+  ++tally.episodes;
+  tally.successes += e.success;
+  tally.plan_failures += e.plan_failure;
+  sum->sim_s += x.sim_s;
+  t->steps += e.sim_steps;
+  t->wall_s += e.wall_s;
+  t->cpu_s += e.cpu_s;
+  t->raw.wall_s += x.raw.wall_s;
+  t->raw.cpu_s += x.raw.cpu_s;
+}
+
+// `jobs` threads run the episodes (each its own world, grasp policy and renderer); `deliver`
+// gets every outcome in episode order as soon as it and all before it are done. The first
+// error stops the run (episodes already begun finish) and is returned.
+core::Status RunEpisodes(const TabletopEvalOptions& o, int jobs,
+                         const std::function<core::StatusOr<EpisodeOutcome>(int, Worker*)>& run,
+                         const std::function<void(const EpisodeOutcome&)>& deliver,
+                         std::vector<Worker>* workers) {
+  if (jobs == 1) {
+    for (int i = 0; i < o.episodes; ++i) {
+      SH_ASSIGN_OR_RETURN(EpisodeOutcome x, run(i, &(*workers)[0]));
+      deliver(x);
+    }
+    return absl::OkStatus();
+  }
+  std::mutex mu;
+  std::condition_variable cv;
+  std::vector<std::optional<core::StatusOr<EpisodeOutcome>>> done(o.episodes);
+  std::atomic<int> next{0};
+  std::atomic<bool> stop{false};
+  std::vector<std::thread> threads;
+  for (int k = 0; k < jobs; ++k) {
+    threads.emplace_back([&, k] {
+      for (int i = next++; i < o.episodes && !stop; i = next++) {
+        core::StatusOr<EpisodeOutcome> x = run(i, &(*workers)[k]);
+        if (!x.ok()) stop = true;
+        std::lock_guard<std::mutex> lock(mu);
+        done[i] = std::move(x);
+        cv.notify_all();
+      }
+    });
+  }
+  core::Status status = absl::OkStatus();
+  for (int i = 0; i < o.episodes && status.ok(); ++i) {
+    std::unique_lock<std::mutex> lock(mu);
+    cv.wait(lock, [&] { return done[i].has_value(); });
+    core::StatusOr<EpisodeOutcome> x = std::move(*done[i]);
+    lock.unlock();
+    if (x.ok()) {
+      deliver(*x);
+    } else {
+      status = x.status();
+      stop = true;
+    }
+  }
+  for (std::thread& t : threads) t.join();
+  return status;
+}
+
+}  // namespace
+
 core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     const TabletopEvalOptions& o, const std::function<void(const TabletopEpisode&)>& on_episode) {
   if (o.episodes < 1) return absl::InvalidArgumentError("--episodes must be >= 1");
+  if (o.jobs < 1) {
+    return absl::InvalidArgumentError("--jobs " + std::to_string(o.jobs) + " must be >= 1");
+  }
   const std::vector<std::string>& kinds = PerceptionNames();
   if (std::find(kinds.begin(), kinds.end(), o.perception) == kinds.end()) {
     return absl::InvalidArgumentError("--perception '" + o.perception +
                                       "' is unknown; valid: " + core::JoinNames(kinds));
   }
-  std::unique_ptr<TabletopVision> vision;
   SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
                       control::LoadGraspPolicy(o.grasp));
   control::manip::TabletopOptions pipeline;
   pipeline.grasp_attempts = o.grasp_attempts;
+  const int jobs = std::min(o.jobs, o.episodes);
+  std::vector<Worker> workers(jobs);
   TabletopEvalSummary sum;
-  int64_t steps = 0;
-  double wall = 0, cpu = 0;
-  // raw mj_step: 1000 steps from every episode's start, so that it shares the run's load
-  constexpr int kRawSteps = 1000;
-  RawTime raw;
-  for (int i = 0; i < o.episodes; ++i) {
-    const uint64_t seed = core::DeriveSeed(o.seed, 0x7ab1e, static_cast<uint64_t>(i));
-    std::string kind = o.kind;
-    if (kind == "any") kind = i % 2 == 0 ? "place" : "stack";
-    SH_ASSIGN_OR_RETURN(world::TabletopScene ts, world::GenerateTabletop(seed, kind));
-    SH_ASSIGN_OR_RETURN(core::SceneCatalog catalog, world::BuildCatalog(ts.scene));
-    SH_ASSIGN_OR_RETURN(world::AgentSpec human,
-                        world::AgentFromHuman(ts.scene.humans[0], 0, catalog));
-    const world::ModelOptions opt = world::DexterousModelOptions();
-    SH_ASSIGN_OR_RETURN(std::unique_ptr<world::SimWorld> w,
-                        world::SimWorld::Create(catalog, {human}, opt));
-    SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(*w, 0, true));
-    SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopSceneGoal(ts, *w));
-    const RawTime rt = RawStepTime(w->model(), w->data(), kRawSteps);
-    raw.wall_s += rt.wall_s;
-    raw.cpu_s += rt.cpu_s;
-    control::manip::TabletopResult r;
-    control::manip::StepHook hook;
-    core::Status seen = absl::OkStatus();
-    if (o.perception == "vision") {
-      if (!vision) {
-        SH_ASSIGN_OR_RETURN(vision, TabletopVision::Create(o.vision_model, w->model()));
-      }
-      seen =
-          vision->Begin(*w, catalog, ts.task.object_id, ts.task.target_id, &goal, ix.arm.hand_body);
-      if (!seen.ok() && !absl::IsNotFound(seen)) return seen;
-      hook = [&](const mjData* d) {
-        if (core::Status s = vision->OnStep(d); !s.ok()) seen = s;
-      };
-    }
-    if (seen.ok()) {
-      const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
-        return make_grasp(w->model(), w->data(), ix, g, pipeline);
-      };
-      r = control::manip::RunTabletop(*w, ix, goal, grasp, pipeline, hook);
-      if (!seen.ok()) return seen;  // the renderer failed mid-episode
-    } else {
-      ++sum.perception_failures;
-      r.failed_stage = control::manip::TabletopStage::kReach;
-      r.end_reason = "perception failure: " + std::string(seen.message());
-    }
-    TabletopEpisode e;
-    e.index = i;
-    e.seed = seed;
-    e.kind = kind;
-    e.object = ts.task.object_id;
-    e.shape = goal.shape == GraspShape::kBox        ? "box"
-              : goal.shape == GraspShape::kCylinder ? "cylinder"
-                                                    : "sphere";
-    e.success = r.success;
-    e.plan_failure = r.plan_failure;
-    e.failed_stage = r.success    ? ""
-                     : !seen.ok() ? "perception"
-                                  : control::manip::TabletopStageName(r.failed_stage);
-    e.end_reason = r.end_reason;
-    e.sim_steps = r.sim_steps;
-    e.grasp_attempts = r.grasp_attempts;
-    sum.regrasped += r.grasp_attempts > 1;
-    sum.regrasped_successes += r.grasp_attempts > 1 && r.success;
-    e.wall_s = r.wall_s;
-    e.cpu_s = r.cpu_s;
-    ++sum.episodes;
-    sum.successes += r.success;
-    sum.plan_failures += r.plan_failure;
-    if (!r.success) ++sum.failures_by_stage[e.failed_stage];
-    TabletopEvalSummary::Tally& t = sum.by_task[e.kind + "/" + e.shape];
-    ++t.episodes;
-    t.successes += r.success;
-    t.plan_failures += r.plan_failure;
-    steps += r.sim_steps;
-    wall += r.wall_s;
-    cpu += r.cpu_s;
-    sum.sim_s += r.sim_steps * w->model()->opt.timestep;
-    if (on_episode) on_episode(e);
-  }
+  Totals t;
+  const auto t0 = std::chrono::steady_clock::now();
+  SH_RETURN_IF_ERROR(RunEpisodes(
+      o, jobs, [&](int i, Worker* w) { return RunEpisode(o, i, make_grasp, pipeline, w); },
+      [&](const EpisodeOutcome& x) {
+        AddEpisode(x, &sum, &t);
+        if (on_episode) on_episode(x.e);
+      },
+      &workers));
+  sum.jobs = jobs;
+  sum.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   sum.success_rate = static_cast<double>(sum.successes) / sum.episodes;
   const int no_plan = sum.episodes - sum.plan_failures;
   sum.success_rate_no_plan_fail = no_plan > 0 ? static_cast<double>(sum.successes) / no_plan : 0;
-  sum.steps_per_s = wall > 0 ? steps / wall : 0;
-  sum.cpu_steps_per_s = cpu > 0 ? steps / cpu : 0;
-  sum.raw_steps_per_s = raw.wall_s > 0 ? sum.episodes * kRawSteps / raw.wall_s : 0;
-  sum.raw_cpu_steps_per_s = raw.cpu_s > 0 ? sum.episodes * kRawSteps / raw.cpu_s : 0;
-  sum.wall_s = wall;
+  sum.steps_per_s = t.wall_s > 0 ? t.steps / t.wall_s : 0;
+  sum.cpu_steps_per_s = t.cpu_s > 0 ? t.steps / t.cpu_s : 0;
+  sum.steps_per_elapsed_s = sum.elapsed_s > 0 ? t.steps / sum.elapsed_s : 0;
+  sum.raw_steps_per_s = t.raw.wall_s > 0 ? sum.episodes * kRawSteps / t.raw.wall_s : 0;
+  sum.raw_cpu_steps_per_s = t.raw.cpu_s > 0 ? sum.episodes * kRawSteps / t.raw.cpu_s : 0;
+  sum.wall_s = t.wall_s;
   sum.perception = o.perception;
-  if (vision) {
-    sum.vision_frames = vision->frames();
-    sum.vision_ms_per_frame = vision->frames() ? 1000 * vision->vision_s() / vision->frames() : 0;
-    sum.render_ms_per_frame = vision->frames() ? 1000 * vision->render_s() / vision->frames() : 0;
+  double vision_s = 0, render_s = 0;
+  for (const Worker& w : workers) {
+    if (!w.vision) continue;
+    sum.vision_frames += w.vision->frames();
+    vision_s += w.vision->vision_s();
+    render_s += w.vision->render_s();
+  }
+  if (sum.vision_frames > 0) {
+    sum.vision_ms_per_frame = 1000 * vision_s / sum.vision_frames;
+    sum.render_ms_per_frame = 1000 * render_s / sum.vision_frames;
   }
   return sum;
 }

@@ -37,6 +37,9 @@ struct TabletopEvalOptions {
   /// Grasps tried on one object before a miss ends the episode
   /// (control::manip::TabletopOptions::grasp_attempts).
   int grasp_attempts = 2;
+  /// Episodes run at once, one thread each (its own world, grasp policy and renderer); the
+  /// results are the same for any value (each episode is seeded by its index)
+  int jobs = 1;
 };
 
 /// The --perception values.
@@ -81,6 +84,11 @@ struct TabletopEvalSummary {
   /// The same two speeds per second of CPU time (the pipeline's thread): what a core of its own
   /// gives, which other processes sharing the machine change far less than the wall-clock ones.
   double cpu_steps_per_s = 0, raw_cpu_steps_per_s = 0;
+  /// The run as a whole: episodes run at once (TabletopEvalOptions::jobs), its wall time from
+  /// the first episode's start to the last one's end, and the pipeline's simulation steps over
+  /// that time (with jobs = 2: what the 2 cores give together)
+  int jobs = 1;
+  double elapsed_s = 0, steps_per_elapsed_s = 0;
   nlohmann::json ToJson() const;
 };
 

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace simhuman::eval {
 namespace {
 
@@ -42,6 +44,36 @@ TEST(TabletopEvalTest, EpisodesAndTheFailureTableAddUpIntegration) {
   EXPECT_EQ(s->DashTally("place").episodes + s->DashTally("stack").episodes, moved_round_or_box);
   EXPECT_EQ(3 - moved_round_or_box, moved_sphere);
   EXPECT_TRUE(s->ToJson()["dash_protocol"].contains("stack"));
+}
+
+// two episodes at once give the episodes of one at a time, delivered in order
+TEST(TabletopEvalTest, JobsRunEpisodesAtOnceWithTheSameResultsIntegration) {
+  TabletopEvalOptions o;
+  o.episodes = 4;
+  o.seed = 3;
+  o.grasp = "scripted";
+  std::vector<TabletopEpisode> one, two;
+  auto a = RunTabletopEval(o, [&](const TabletopEpisode& e) { one.push_back(e); });
+  ASSERT_TRUE(a.ok()) << a.status();
+  o.jobs = 2;
+  auto b = RunTabletopEval(o, [&](const TabletopEpisode& e) { two.push_back(e); });
+  ASSERT_TRUE(b.ok()) << b.status();
+  ASSERT_EQ(one.size(), 4u);
+  ASSERT_EQ(two.size(), 4u);
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(two[i].index, static_cast<int>(i));
+    EXPECT_EQ(two[i].success, one[i].success);
+    EXPECT_EQ(two[i].end_reason, one[i].end_reason);
+    EXPECT_EQ(two[i].sim_steps, one[i].sim_steps);
+  }
+  EXPECT_EQ(b->successes, a->successes);
+  EXPECT_EQ(b->jobs, 2);
+  EXPECT_EQ(a->jobs, 1);
+  EXPECT_GT(b->steps_per_elapsed_s, 0);
+  o.jobs = 0;
+  auto bad = RunTabletopEval(o);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_THAT(bad.status().message(), HasSubstr("--jobs 0 must be >= 1"));
 }
 
 TEST(TabletopEvalTest, AnUnloadableGraspPolicyIsNamed) {
