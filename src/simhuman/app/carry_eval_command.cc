@@ -28,6 +28,7 @@ int CarryEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& er
   o.policy = eval::DefaultCarryPolicy(flags.policy);
   o.episodes = flags.episodes;
   o.seed = flags.seed;
+  o.approach_policy = flags.approach_policy;
   if (o.policy.empty()) {
     return ReportError(err, kCommand,
                        absl::InvalidArgumentError(
@@ -40,7 +41,8 @@ int CarryEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& er
   if (!made.ok()) return ReportError(err, kCommand, made);
   std::ofstream lines(dir + "/episodes.jsonl", std::ios::trunc);
   out << "simhuman eval: suite carry, " << o.episodes << " episodes, seed " << o.seed << ", policy "
-      << o.policy << " -> " << dir << std::endl;
+      << o.policy << (o.approach_policy.empty() ? std::string() : ", approach " + o.approach_policy)
+      << " -> " << dir << std::endl;
   out << "  ep mass_kg side_m dist_m ok   fell  time_s  end_cm  phase      end" << std::endl;
   core::StatusOr<learn::CarryEvalSummary> s =
       learn::RunCarryEval(o, nullptr, [&](const learn::CarryEpisode& e) {

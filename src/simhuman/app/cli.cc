@@ -163,6 +163,9 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
                    "episode (1: no second try, as DASH)")
       ->check(CLI::Range(1, 5))
       ->capture_default_str();
+  eval_cmd->add_option("--approach-policy", ev->approach_policy,
+                       "carry: a walking policy file (e.g. assets/policies/walk.pt) that walks up "
+                       "to the box; the carry policy takes over at the lift");
   eval_cmd
       ->add_option("--jobs", ev->jobs,
                    "tabletop, place, stack: episodes run at once, one thread each (results do "

@@ -37,7 +37,9 @@ struct EvalFlags {
   std::string grasp_policy;
   /// Tabletop suites: grasps tried on one object (control::manip::TabletopOptions).
   int grasp_attempts = 2;
-  int jobs = 1;  ///< tabletop, place, stack: episodes run at once (threads)
+  int jobs = 1;
+  std::string approach_policy;  ///< carry: a walking policy for the approach phase  ///< tabletop,
+                                ///< place, stack: episodes run at once (threads)
   /// Tabletop suites: "truth" or "vision" (the head camera and the vision model).
   std::string perception = "truth";
   /// The vision suite and --perception vision: a model file (simhuman train --task vision); empty:

@@ -46,7 +46,7 @@ const char* CarryFailureName(CarryFailure f) {
     case CarryFailure::kLost:
       return "lost the box";
     case CarryFailure::kStalled:
-      return "stalled (approach over 20 s or carry over 15 s)";
+      return "stalled (training: approach over 20 s or carry over 15 s)";
     case CarryFailure::kNonFinite:
       return "non-finite state";
   }
@@ -332,8 +332,9 @@ CarryFailure CarryTask::Check(const Env& e, const control::CarryBox& box) const 
   const double speed = std::hypot(box.linvel.x(), box.linvel.y());
   if (!control::CarryHandsOnBox(e.s) && low < 0.3 && speed > 1.0) return CarryFailure::kKick;
   if (ph == CarryPhase::kCarry && e.s.phase_time_s > 1.0 && low < 0.03) return CarryFailure::kDrop;
-  if ((ph == CarryPhase::kApproach && e.s.phase_time_s > kMaxApproachSeconds) ||
-      (ph == CarryPhase::kCarry && e.s.phase_time_s > kMaxCarrySeconds)) {
+  // training only: evaluation walks and carries up to 20 m, within its own time limit
+  if (!evaluation_ && ((ph == CarryPhase::kApproach && e.s.phase_time_s > kMaxApproachSeconds) ||
+                       (ph == CarryPhase::kCarry && e.s.phase_time_s > kMaxCarrySeconds))) {
     return CarryFailure::kStalled;
   }
   Eigen::Vector3d pelvis = Vec(d->xpos + 3 * a.pelvis_body);

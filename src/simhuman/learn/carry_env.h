@@ -17,7 +17,8 @@
 /// hold it), a drop (the box back on the floor during the carry phase) and losing the box (its
 /// centre more than 1.2 m from the pelvis while held) and stalling (still approaching after 20 s,
 /// or still carrying after 15 s: without it a policy learns to stop short of its stand points
-/// and never squat; the squats also start after 1 s near them, CarryParams::arrive_dwell_s).
+/// and never squat; the squats also start after 1 s near them, CarryParams::arrive_dwell_s;
+/// training only: evaluation ends at its own time limit).
 /// Success: the box at rest on the floor within 0.2 m of the destination after the put-down, the
 /// human standing.
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "simhuman/control/policy/policy_net.h"
 #include "simhuman/core/rng.h"
@@ -31,7 +32,7 @@ int MassBin(double kg) {
 
 // runs one episode on env 0 of `task` with the policy's mean action
 CarryEpisode RunOne(const CarryEvalOptions& o, int index, control::LoadedPolicy& pol,
-                    CarryTask& task) {
+                    control::LoadedPolicy* approach, CarryTask& task) {
   CarryEpisode ep;
   ep.index = index;
   const uint64_t seed = core::DeriveSeed(o.seed, static_cast<uint64_t>(index));
@@ -52,8 +53,10 @@ CarryEpisode RunOne(const CarryEvalOptions& o, int index, control::LoadedPolicy&
   StepInfo info;
   int steps = 0;
   for (; steps < max_steps; ++steps) {
-    torch::Tensor x = torch::from_blob(obs.data(), {1, od});
-    torch::Tensor a = pol.actor->forward(pol.norm.Normalize(x)).contiguous();
+    const bool walk_up = approach && task.state(0).phase == control::CarryPhase::kApproach;
+    control::LoadedPolicy& acting = walk_up ? *approach : pol;
+    torch::Tensor x = torch::from_blob(obs.data(), {1, walk_up ? control::kWalkObsDim : od});
+    torch::Tensor a = acting.actor->forward(acting.norm.Normalize(x)).contiguous();
     std::copy(a.data_ptr<float>(), a.data_ptr<float>() + ad, act.begin());
     task.Step(0, act.data(), obs.data(), &info);
     if (info.terminated || info.truncated) break;
@@ -68,6 +71,30 @@ CarryEpisode RunOne(const CarryEvalOptions& o, int index, control::LoadedPolicy&
   control::CarryBox box = control::ReadCarryBox(task.model(0), task.data(0), task.box_geom());
   ep.final_dist_m = (dest - box.pos.head<2>()).norm();
   return ep;
+}
+
+// a walking policy of the carry policy's reference gait `gait`, for the approach
+core::StatusOr<control::LoadedPolicy> LoadApproachPolicy(const std::string& path,
+                                                         const std::string& gait) {
+  core::StatusOr<control::LoadedPolicy> p = control::LoadPolicyFile(path);
+  if (!p.ok()) {
+    return absl::InvalidArgumentError("--approach-policy '" + path +
+                                      "': " + std::string(p.status().message()));
+  }
+  if (p->meta.task != "walk" || p->meta.obs_dim != control::kWalkObsDim ||
+      p->meta.act_dim != control::kWalkActDim) {
+    return absl::InvalidArgumentError(
+        "--approach-policy '" + path + "' holds a '" + p->meta.task + "' policy (obs " +
+        std::to_string(p->meta.obs_dim) + "); the approach needs a 'walk' policy (obs " +
+        std::to_string(control::kWalkObsDim) + "), e.g. assets/policies/walk.pt");
+  }
+  if (p->meta.variant != gait) {
+    return absl::InvalidArgumentError("--approach-policy '" + path + "' walks the '" +
+                                      p->meta.variant + "' gait; the carry policy walks '" + gait +
+                                      "'");
+  }
+  p->actor->eval();
+  return p;
 }
 
 }  // namespace
@@ -95,6 +122,10 @@ core::StatusOr<CarryEvalSummary> RunCarryEval(
         std::to_string(control::kCarryObsDim) + "): simhuman train --task carry");
   }
   pol->actor->eval();
+  std::optional<control::LoadedPolicy> approach;
+  if (!o.approach_policy.empty()) {
+    SH_ASSIGN_OR_RETURN(approach, LoadApproachPolicy(o.approach_policy, pol->meta.variant));
+  }
   SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> task,
                       CarryTask::Create(1, pol->meta.variant, pol->meta.carry_grip));
   task->set_curriculum(1.0);
@@ -109,7 +140,7 @@ core::StatusOr<CarryEvalSummary> RunCarryEval(
   double precision_sum = 0;
   int successes = 0, falls = 0;
   for (int i = 0; i < o.episodes; ++i) {
-    CarryEpisode ep = RunOne(o, i, *pol, *task);
+    CarryEpisode ep = RunOne(o, i, *pol, approach ? &*approach : nullptr, *task);
     successes += ep.success;
     falls += ep.fell;
     if (ep.success) precision_sum += ep.final_dist_m;
@@ -150,6 +181,7 @@ nlohmann::ordered_json CarrySummaryJson(const CarryEvalSummary& s, const CarryEv
           {"fall_rate", s.fall_rate},
           {"success_by_mass", by_mass},
           {"policy", o.policy},
+          {"approach_policy", o.approach_policy},
           {"seed", o.seed},
           {"dist_m", {o.min_dist_m, o.max_dist_m}},
           {"mass_kg", {o.min_mass_kg, o.max_mass_kg}},

@@ -22,6 +22,10 @@ namespace simhuman::learn {
 
 struct CarryEvalOptions {
   std::string policy;  ///< a carry policy file (simhuman train --task carry)
+  /// A walking policy file (simhuman train --task walk, the same reference gait) that drives
+  /// the approach phase instead of the carry policy (which takes over at the lift); empty: the
+  /// carry policy walks up too. The carry observation begins with the walking one.
+  std::string approach_policy;
   int episodes = 100;
   uint64_t seed = 1;
   double min_dist_m = 1.0, max_dist_m = 20.0;  ///< box to destination

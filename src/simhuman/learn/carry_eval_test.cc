@@ -102,5 +102,46 @@ TEST(CarryEval, EpisodesFollowTheProtocolAndRepeatBySeed) {
   EXPECT_EQ(CarrySummaryJson(*s, o)["success_by_mass"].size(), 4u);
 }
 
+// --approach-policy: a walking policy walks up to the box and the carry policy takes over at the
+// lift. An untrained carry policy (no --init-from) falls on its way to the box; with the walker
+// walking up, the same episodes get past the approach. A policy of another task, or a walker of
+// another gait, is refused by name.
+TEST(CarryEval, AnApproachPolicyWalksUpToTheBoxIntegration) {
+  PpoConfig cfg;
+  cfg.task = "carry";
+  cfg.num_envs = 1;
+  cfg.threads = 1;
+  auto walker = control::LoadPolicyFile(kWalk);
+  ASSERT_TRUE(walker.ok()) << walker.status();
+  cfg.walk_gait = walker->meta.variant;
+  const std::string dir = core::testing::UniqueTempPath("carry_approach");
+  auto tr = PpoTrainer::Create(cfg, dir);
+  ASSERT_TRUE(tr.ok()) << tr.status();
+  ASSERT_TRUE((*tr)->Checkpoint().ok());
+  CarryEvalOptions o;
+  o.policy = dir + "/policy.pt";
+  o.episodes = 3;
+  o.base_time_s = 8;
+  o.max_dist_m = 2;
+  std::vector<CarryEpisode> alone, walked;
+  ASSERT_TRUE(RunCarryEval(o, &alone).ok());
+  o.approach_policy = kWalk;
+  auto s = RunCarryEval(o, &walked);
+  ASSERT_TRUE(s.ok()) << s.status();
+  EXPECT_EQ(CarrySummaryJson(*s, o)["approach_policy"], kWalk);
+  int fell_walking_up_alone = 0, past_the_approach = 0;
+  for (size_t i = 0; i < alone.size(); ++i) {
+    fell_walking_up_alone += alone[i].fell && alone[i].last_phase == "approach";
+    past_the_approach += walked[i].last_phase != "approach";
+  }
+  EXPECT_EQ(fell_walking_up_alone, 3);
+  EXPECT_GE(past_the_approach, 2);
+  o.approach_policy = o.policy;  // a carry policy
+  auto bad = RunCarryEval(o, nullptr);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("needs a 'walk' policy"), std::string::npos)
+      << bad.status();
+}
+
 }  // namespace
 }  // namespace simhuman::learn
