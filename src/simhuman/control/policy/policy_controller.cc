@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "simhuman/control/policy/policy_net.h"
+#include "simhuman/core/geometry.h"
 
 namespace simhuman::control {
 
@@ -24,6 +25,10 @@ struct WalkPolicyController::Impl {
   Eigen::Vector2d route_goal = Eigen::Vector2d::Constant(1e9);
   std::string route_error;
   bool final_turn = false;  ///< close enough to turn to the walk point's heading
+  // facing far from the route's way (a start facing elsewhere, a sharp corner): turn on the spot
+  // first, as a person does; walking off in a wide arc swung the hands into a table's edge
+  bool turning = false;
+  Eigen::Vector2d turn_spot = Eigen::Vector2d::Zero();
   // leaving a cramped start (stood up between a chair and a table): a short step, heading kept,
   // to the first point of the route with room to turn
   bool exiting = false;
@@ -99,10 +104,21 @@ void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
     }
     exiting = false;
     if (!carrot.final) {
-      state.target_xy = carrot.point;
-      state.target_yaw_rad = carrot.heading_rad;
+      Eigen::Vector3d pos;
+      double yaw;
+      PelvisPose(obs.data, ix, &pos, &yaw);
+      const Eigen::Vector2d way = carrot.point - here;
+      const double off = std::abs(core::WrapAngle(std::atan2(way.y(), way.x()) - yaw));
+      if (!turning && off > kTurnFirstRad) {
+        turning = true;
+        turn_spot = here;
+      }
+      if (turning && off < kTurnDoneRad) turning = false;
+      state.target_xy = turning ? turn_spot : carrot.point;
+      state.target_yaw_rad = turning ? std::atan2(way.y(), way.x()) : carrot.heading_rad;
       return;
     }
+    turning = false;
   }
   // the last stretch: walk forwards to the point and turn to the final heading only there (the
   // policy is poor at walking backwards, which a walk point "back to the seat" would ask for)
