@@ -124,6 +124,10 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
                  {"--grasp-attempts", "not in range 1 to 5"});
   ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--jobs", "0"}),
                  {"--jobs", "not in range 1 to 64"});
+  ExpectBadInput(Cli({"eval", "--suite", "sit", "--jobs", "2"}),
+                 {"--jobs applies to the tabletop suites", "mpirun"});
+  ExpectBadInput(Cli({"eval", "--suite", "walk", "--approach-policy", "x.pt"}),
+                 {"--approach-policy applies to --suite carry"});
   ExpectBadInput(Cli({"run", "--scene", "tabletop_demo", "--perception", "eyes", "--command",
                       "put the red box on the blue cylinder"}),
                  {"--perception"});

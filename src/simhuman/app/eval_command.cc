@@ -330,6 +330,19 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
                                                   flags.suite + "; valid: the walk suites and " +
                                                   core::JoinNames(eval::ScalableSuites())));
   }
+  if (flags.jobs > 1 && suite->controller != eval::SuiteController::kTabletop) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--jobs applies to the tabletop suites (tabletop, place, stack), not "
+                           "--suite " +
+                           flags.suite + "; the plan suites run in parallel with mpirun -n N"));
+  }
+  if (!flags.approach_policy.empty() && suite->controller != eval::SuiteController::kCarryPolicy) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError("--approach-policy applies to --suite carry, "
+                                                  "not --suite " +
+                                                  flags.suite));
+  }
   if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
   if (suite->controller == eval::SuiteController::kCarryPolicy) {
     return CarryEvalCommand(flags, out, err);
