@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 
 #include "simhuman/control/policy/policy_net.h"
@@ -12,6 +13,25 @@ namespace simhuman::learn {
 namespace {
 
 const std::string kWalk = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/walk.pt";
+
+// the policy file of a carry run checkpointed before any update, in the shipped walker's gait
+// (its weights from the walker with `from_walker`, untrained otherwise)
+core::StatusOr<std::string> FreshCarryPolicy(const std::string& name, bool from_walker) {
+  PpoConfig cfg;
+  cfg.task = "carry";
+  cfg.num_envs = 1;
+  cfg.threads = 1;
+  if (from_walker) {
+    cfg.hidden = {256, 128};
+    cfg.init_from = kWalk;
+  }
+  SH_ASSIGN_OR_RETURN(control::LoadedPolicy walker, control::LoadPolicyFile(kWalk));
+  cfg.walk_gait = walker.meta.variant;
+  const std::string dir = core::testing::UniqueTempPath(name);
+  SH_ASSIGN_OR_RETURN(std::unique_ptr<PpoTrainer> tr, PpoTrainer::Create(cfg, dir));
+  SH_RETURN_IF_ERROR(tr->Checkpoint());
+  return dir + "/policy.pt";
+}
 
 TEST(CarryEval, RefusesAPolicyOfAnotherTaskAndBadRanges) {
   CarryEvalOptions o;
@@ -61,21 +81,10 @@ TEST(CarryEval, GripIsRecordedInThePolicyFileIntegration) {
 // a carry policy fresh from the walking one: episodes run to an end, are drawn from the
 // protocol's ranges, reproducible by seed, and summarised per mass bin
 TEST(CarryEval, EpisodesFollowTheProtocolAndRepeatBySeed) {
-  PpoConfig cfg;
-  cfg.task = "carry";
-  cfg.num_envs = 1;
-  cfg.threads = 1;
-  cfg.hidden = {256, 128};
-  cfg.init_from = kWalk;
-  auto walker = control::LoadPolicyFile(kWalk);
-  ASSERT_TRUE(walker.ok()) << walker.status();
-  cfg.walk_gait = walker->meta.variant;
-  const std::string dir = core::testing::UniqueTempPath("carry_eval");
-  auto tr = PpoTrainer::Create(cfg, dir);
-  ASSERT_TRUE(tr.ok()) << tr.status();
-  ASSERT_TRUE((*tr)->Checkpoint().ok());
+  auto policy = FreshCarryPolicy("carry_eval", true);
+  ASSERT_TRUE(policy.ok()) << policy.status();
   CarryEvalOptions o;
-  o.policy = dir + "/policy.pt";
+  o.policy = *policy;
   o.episodes = 2;
   o.base_time_s = 3;  // short episodes: only the bookkeeping is under test
   o.max_dist_m = 2;
@@ -107,19 +116,10 @@ TEST(CarryEval, EpisodesFollowTheProtocolAndRepeatBySeed) {
 // walking up, the same episodes get past the approach. A policy of another task, or a walker of
 // another gait, is refused by name.
 TEST(CarryEval, AnApproachPolicyWalksUpToTheBoxIntegration) {
-  PpoConfig cfg;
-  cfg.task = "carry";
-  cfg.num_envs = 1;
-  cfg.threads = 1;
-  auto walker = control::LoadPolicyFile(kWalk);
-  ASSERT_TRUE(walker.ok()) << walker.status();
-  cfg.walk_gait = walker->meta.variant;
-  const std::string dir = core::testing::UniqueTempPath("carry_approach");
-  auto tr = PpoTrainer::Create(cfg, dir);
-  ASSERT_TRUE(tr.ok()) << tr.status();
-  ASSERT_TRUE((*tr)->Checkpoint().ok());
+  auto policy = FreshCarryPolicy("carry_approach", false);
+  ASSERT_TRUE(policy.ok()) << policy.status();
   CarryEvalOptions o;
-  o.policy = dir + "/policy.pt";
+  o.policy = *policy;
   o.episodes = 3;
   o.base_time_s = 8;
   o.max_dist_m = 2;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "simhuman/learn/carry_env.h"
@@ -54,15 +55,21 @@ void Pelvis(const CarryTask& t, Eigen::Vector2d* xy, double* yaw) {
   *xy = p.head<2>();
 }
 
+// a task whose env 0 starts holding the box (seed 3)
+core::StatusOr<std::unique_ptr<CarryTask>> HoldingTheBox() {
+  SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> t, CarryTask::Create(1));
+  t->set_held_start_fraction(1);
+  std::vector<float> obs(t->obs_dim());
+  t->Reset(0, 3, obs.data());
+  return t;
+}
+
 // a standing human holding the box 0.1 m from its carry stand point starts the put-down within
 // kPhaseChangeWithinS whatever its heading error; facing its way it starts at once; 0.3 m away
 // (outside the arrival radius) it keeps carrying
 TEST(CarryPhases, HoldingTheBoxAtTheStandPointStartsThePutDownWhateverTheHeading) {
-  auto t = CarryTask::Create(1);
+  core::StatusOr<std::unique_ptr<CarryTask>> t = HoldingTheBox();
   ASSERT_TRUE(t.ok()) << t.status();
-  (*t)->set_held_start_fraction(1);
-  std::vector<float> obs((*t)->obs_dim());
-  (*t)->Reset(0, 3, obs.data());
   ASSERT_EQ((*t)->state(0).phase, CarryPhase::kLift);  // held: the lift's last instant
   Eigen::Vector2d xy;
   double yaw;
@@ -100,12 +107,9 @@ TEST(CarryPhases, HoldingTheBoxAtTheStandPointStartsThePutDownWhateverTheHeading
 // the held box over the destination starts the put-down at once, wherever the pelvis is (here
 // 0.5 m from its stand point, outside the arrival radius); a box 0.25 m from it keeps carrying
 TEST(CarryPhases, TheHeldBoxOverTheDestinationStartsThePutDown) {
-  auto t = CarryTask::Create(1);
+  core::StatusOr<std::unique_ptr<CarryTask>> t = HoldingTheBox();
   ASSERT_TRUE(t.ok()) << t.status();
-  (*t)->set_held_start_fraction(1);
-  std::vector<float> obs((*t)->obs_dim());
-  (*t)->Reset(0, 3, obs.data());
-  ASSERT_EQ((*t)->state(0).phase, CarryPhase::kLift);
+  ASSERT_EQ((*t)->state(0).phase, CarryPhase::kLift);  // held: the lift's last instant
   Eigen::Vector2d xy;
   double yaw;
   Pelvis(**t, &xy, &yaw);
