@@ -55,39 +55,46 @@ void Pelvis(const CarryTask& t, Eigen::Vector2d* xy, double* yaw) {
   *xy = p.head<2>();
 }
 
-// a task whose env 0 starts holding the box (seed 3)
-core::StatusOr<std::unique_ptr<CarryTask>> HoldingTheBox() {
-  SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> t, CarryTask::Create(1));
-  t->set_held_start_fraction(1);
-  std::vector<float> obs(t->obs_dim());
-  t->Reset(0, 3, obs.data());
-  return t;
+// a task whose env 0 starts holding the box (seed 3), and its pelvis position and heading
+struct Holding {
+  std::unique_ptr<CarryTask> t;
+  Eigen::Vector2d xy;
+  double yaw = 0;
+};
+core::StatusOr<Holding> HoldingTheBox() {
+  Holding h;
+  SH_ASSIGN_OR_RETURN(h.t, CarryTask::Create(1));
+  h.t->set_held_start_fraction(1);
+  std::vector<float> obs(h.t->obs_dim());
+  h.t->Reset(0, 3, obs.data());
+  Pelvis(*h.t, &h.xy, &h.yaw);
+  return h;
 }
 
 // a standing human holding the box 0.1 m from its carry stand point starts the put-down within
 // kPhaseChangeWithinS whatever its heading error; facing its way it starts at once; 0.3 m away
 // (outside the arrival radius) it keeps carrying
 TEST(CarryPhases, HoldingTheBoxAtTheStandPointStartsThePutDownWhateverTheHeading) {
-  core::StatusOr<std::unique_ptr<CarryTask>> t = HoldingTheBox();
-  ASSERT_TRUE(t.ok()) << t.status();
-  ASSERT_EQ((*t)->state(0).phase, CarryPhase::kLift);  // held: the lift's last instant
-  Eigen::Vector2d xy;
-  double yaw;
-  Pelvis(**t, &xy, &yaw);
-  const double dwell_s = (*t)->params().arrive_dwell_s;
+  core::StatusOr<Holding> h = HoldingTheBox();
+  ASSERT_TRUE(h.ok()) << h.status();
+  CarryTask* t = h->t.get();
+  ASSERT_EQ(t->state(0).phase, CarryPhase::kLift);  // held: the lift's last instant
+  const Eigen::Vector2d xy = h->xy;
+  const double yaw = h->yaw;
+  const double dwell_s = t->params().arrive_dwell_s;
   for (double heading_err : {0.0, 0.5, M_PI / 2, M_PI}) {
     for (double off_m : {0.1, 0.3}) {
-      Frozen f(**t);
-      control::CarryState s = (*t)->state(0);
+      Frozen f(*t);
+      control::CarryState s = t->state(0);
       s.phase = CarryPhase::kCarry;
       s.phase_time_s = 1.0;
       s.near_stand_s = 0;
       s.stand_xy = xy + off_m * Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
       s.walk.target_xy = s.stand_xy;
       s.walk.target_yaw_rad = yaw + heading_err;
-      const int steps = f.StepsToLeave(**t, CarryPhase::kCarry, 3.0, &s);
+      const int steps = f.StepsToLeave(*t, CarryPhase::kCarry, 3.0, &s);
       SCOPED_TRACE(testing::Message() << "heading error " << heading_err << ", " << off_m << " m");
-      if (off_m > (*t)->params().arrive_radius_m) {
+      if (off_m > t->params().arrive_radius_m) {
         EXPECT_EQ(steps, -1);
         continue;
       }
@@ -95,7 +102,7 @@ TEST(CarryPhases, HoldingTheBoxAtTheStandPointStartsThePutDownWhateverTheHeading
       EXPECT_EQ(s.phase, CarryPhase::kPutDown);
       EXPECT_LE(steps * control::kWalkPolicyDt, kPhaseChangeWithinS);
       // strictly arrived only when facing its way; otherwise the dwell decides
-      if (heading_err > (*t)->params().arrive_yaw_rad) {
+      if (heading_err > t->params().arrive_yaw_rad) {
         EXPECT_GE(steps * control::kWalkPolicyDt, dwell_s - 1e-6);
       } else {
         EXPECT_EQ(steps, 1);
@@ -107,24 +114,24 @@ TEST(CarryPhases, HoldingTheBoxAtTheStandPointStartsThePutDownWhateverTheHeading
 // the held box over the destination starts the put-down at once, wherever the pelvis is (here
 // 0.5 m from its stand point, outside the arrival radius); a box 0.25 m from it keeps carrying
 TEST(CarryPhases, TheHeldBoxOverTheDestinationStartsThePutDown) {
-  core::StatusOr<std::unique_ptr<CarryTask>> t = HoldingTheBox();
-  ASSERT_TRUE(t.ok()) << t.status();
-  ASSERT_EQ((*t)->state(0).phase, CarryPhase::kLift);  // held: the lift's last instant
-  Eigen::Vector2d xy;
-  double yaw;
-  Pelvis(**t, &xy, &yaw);
+  core::StatusOr<Holding> h = HoldingTheBox();
+  ASSERT_TRUE(h.ok()) << h.status();
+  CarryTask* t = h->t.get();
+  ASSERT_EQ(t->state(0).phase, CarryPhase::kLift);  // held: the lift's last instant
+  const Eigen::Vector2d xy = h->xy;
+  const double yaw = h->yaw;
   for (double box_off_m : {0.1, 0.25}) {
-    Frozen f(**t);
-    const control::CarryBox box = control::ReadCarryBox(f.m, f.d, (*t)->box_geom());
-    control::CarryState s = (*t)->state(0);
+    Frozen f(*t);
+    const control::CarryBox box = control::ReadCarryBox(f.m, f.d, t->box_geom());
+    control::CarryState s = t->state(0);
     s.phase = CarryPhase::kCarry;
     s.phase_time_s = 1.0;
     s.stand_xy = xy + 0.5 * Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
     s.walk.target_xy = s.stand_xy;
     s.dest_xy = box.pos.head<2>() + box_off_m * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
-    const int steps = f.StepsToLeave(**t, CarryPhase::kCarry, 3.0, &s);
+    const int steps = f.StepsToLeave(*t, CarryPhase::kCarry, 3.0, &s);
     SCOPED_TRACE(testing::Message() << "box " << box_off_m << " m from the destination");
-    if (box_off_m > (*t)->params().put_down_box_radius_m) {
+    if (box_off_m > t->params().put_down_box_radius_m) {
       EXPECT_EQ(steps, -1);
     } else {
       EXPECT_EQ(steps, 1);
