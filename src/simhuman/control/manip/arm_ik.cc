@@ -94,6 +94,22 @@ core::StatusOr<ArmChain> MakeArmChain(const world::SimWorld& world, int agent, b
   return arm;
 }
 
+namespace {
+
+// `t` turned about the vertical line through t.yaw_free_about by the yaw that brings its
+// rotation nearest `hand` (the turn maximising trace(Rz(psi) t.rot hand^T))
+PalmPose TurnedNearest(const PalmPose& t, const Eigen::Matrix3d& hand) {
+  const Eigen::Matrix3d m = t.rot * hand.transpose();
+  const double psi = std::atan2(m(0, 1) - m(1, 0), m(0, 0) + m(1, 1));
+  const Eigen::Matrix3d rz = Eigen::AngleAxisd(psi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  PalmPose out;
+  out.rot = rz * t.rot;
+  out.pos = *t.yaw_free_about + rz * (t.pos - *t.yaw_free_about);
+  return out;
+}
+
+}  // namespace
+
 IkResult SolvePalmIk(const mjModel* m, mjData* d, const ArmChain& arm, const PalmPose& target,
                      const Eigen::VectorXd& q0, const Eigen::VectorXd& rest, const IkOptions& o) {
   constexpr int n = ArmChain::kDofs;
@@ -107,8 +123,10 @@ IkResult SolvePalmIk(const mjModel* m, mjData* d, const ArmChain& arm, const Pal
     mj_kinematics(m, d);
     mj_comPos(m, d);
     const Eigen::Vector3d p(d->site_xpos + 3 * arm.palm_site);
-    const Eigen::Vector3d ep = target.pos - p;
-    const Eigen::Vector3d er = RotVec(target.rot * BodyRot(d, arm.hand_body).transpose());
+    const Eigen::Matrix3d hand = BodyRot(d, arm.hand_body);
+    const PalmPose goal = target.yaw_free_about ? TurnedNearest(target, hand) : target;
+    const Eigen::Vector3d ep = goal.pos - p;
+    const Eigen::Vector3d er = RotVec(goal.rot * hand.transpose());
     const double score = ep.norm() + o.rot_weight_m * er.norm();
     if (score < best) {
       best = score;

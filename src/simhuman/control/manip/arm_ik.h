@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,10 @@ core::StatusOr<ArmChain> MakeArmChain(const world::SimWorld& world, int agent, b
 struct PalmPose {
   Eigen::Vector3d pos = Eigen::Vector3d::Zero();
   Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();
+  /// When set, the pose may turn as a whole about the vertical line through this point (an
+  /// upright object held in the hand, whose yaw on the table does not matter): SolvePalmIk
+  /// then reaches whichever turn of it the arm comes nearest.
+  std::optional<Eigen::Vector3d> yaw_free_about;
 };
 
 /// Options of SolvePalmIk.

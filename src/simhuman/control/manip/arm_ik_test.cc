@@ -103,6 +103,39 @@ TEST(ArmIkTest, ThePalmReachesASideGraspOfAnObjectOnTheTable) {
   mj_deleteData(d);
 }
 
+// an upright object's yaw in the hand does not matter: a pose the arm cannot reach at its own
+// turn is reached at another turn about the object's vertical, and only turned
+TEST(ArmIkTest, APoseFreeInYawIsReachedAtSomeTurnAboutItsVertical) {
+  Table t = SeatedAtTable();
+  ArmChain arm = *MakeArmChain(*t.world, 0, true);
+  const mjModel* m = t.world->model();
+  mjData* d = mj_makeData(m);
+  mju_copy(d->qpos, t.world->data()->qpos, m->nq);
+  const Eigen::VectorXd rest = arm.Get(d);
+  const Eigen::Vector3d centre(t.edge_x + 0.2, -0.2, t.top_z + 0.07);
+  int fixed_misses = 0;
+  for (int k = 0; k < 16; ++k) {
+    const double yaw = -M_PI + k * M_PI / 8;
+    PalmPose target = SideGraspPose(centre, 0.09, yaw, true);
+    if (SolvePalmIk(m, d, arm, target, rest, rest).converged) continue;
+    ++fixed_misses;
+    target.yaw_free_about = centre;
+    const IkResult r = SolvePalmIk(m, d, arm, target, rest, rest);
+    ASSERT_TRUE(r.converged) << "approach yaw " << yaw;
+    arm.Set(d, r.q);
+    mj_kinematics(m, d);
+    const Eigen::Vector3d palm(d->site_xpos + 3 * arm.palm_site);
+    EXPECT_NEAR(palm.z(), target.pos.z(), 0.006);
+    EXPECT_NEAR((palm - centre).head<2>().norm(), (target.pos - centre).head<2>().norm(), 0.006);
+    Eigen::Matrix3d hand;
+    for (int i = 0; i < 9; ++i) hand(i / 3, i % 3) = d->xmat[9 * arm.hand_body + i];
+    // the hand is the target's rotation turned about the vertical only
+    EXPECT_GT((hand * target.rot.transpose())(2, 2), std::cos(0.07)) << "approach yaw " << yaw;
+  }
+  EXPECT_GE(fixed_misses, 4) << "the test needs turns the arm cannot reach as given";
+  mj_deleteData(d);
+}
+
 TEST(ArmIkTest, ThePalmInsideTheTableIsAContact) {
   Table t = SeatedAtTable();
   ArmChain arm = *MakeArmChain(*t.world, 0, true);

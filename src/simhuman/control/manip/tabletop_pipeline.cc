@@ -73,6 +73,8 @@ class Run {
     s_.object_body = g_.object_body;
     s_.shape = g_.shape;
     s_.task_pos = g_.planned_pos;
+    const std::string spine = world::AgentPrefix(ix_.arm.agent) + "abdomen_y";
+    lean_act_ = mj_name2id(m_, mjOBJ_ACTUATOR, spine.c_str());
   }
   ~Run() { mj_deleteData(scratch_); }
 
@@ -177,6 +179,16 @@ class Run {
     r.plan_failure = plan;
     return r;
   }
+  // the trunk leans forward by o_.lean_deg[k] while the arm holds its angles
+  bool LeanTo(ArmTracker& tr, int k) {
+    d_->ctrl[lean_act_] = o_.lean_deg[k] * M_PI / 180;
+    lean_ = k;
+    const Eigen::VectorXd arm_now = ix_.arm.Get(d_);
+    for (int j = 0; j < 96; ++j) {
+      if (!Step([&] { tr.Hold(arm_now, d_); })) return false;
+    }
+    return true;
+  }
   std::optional<TabletopResult> Reach(ArmTracker& tr);
   std::optional<TabletopResult> Transport(ArmTracker& tr);
   std::optional<TabletopResult> GraspAndLift(ArmTracker& tr, const GraspPolicyFn& policy);
@@ -194,6 +206,8 @@ class Run {
   const StepHook& hook_;
   GraspState s_;
   int steps_ = 0;
+  int lean_act_ = -1;  // the trunk's forward lean actuator (abdomen_y), -1 without one
+  int lean_ = -1;      // the index into o_.lean_deg the trunk last leaned to, -1 upright
   std::string step_error_ = "unstable simulation";
 };
 
@@ -264,20 +278,12 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   };
   // a far object or target: the trunk leans forward first, as a seated person does, so that
   // the arm ends well inside its reach at both; then more while no arm pose reaches the object
-  const std::string spine = world::AgentPrefix(ix_.arm.agent) + "abdomen_y";
-  const int lean_act = mj_name2id(m_, mjOBJ_ACTUATOR, spine.c_str());
+  const int lean_act = lean_act_;
   const Eigen::Vector3d shoulder(d_->site_xpos + 3 * ix_.shoulder_site);
   const double far =
       std::max(std::hypot(centre.x() - shoulder.x(), centre.y() - shoulder.y()),
                std::hypot(g_.target.x() - shoulder.x(), g_.target.y() - shoulder.y()));
-  auto lean_to = [&](int k) {
-    d_->ctrl[lean_act] = o_.lean_deg[k] * M_PI / 180;
-    const Eigen::VectorXd arm_now = ix_.arm.Get(d_);
-    for (int j = 0; j < 96; ++j) {
-      if (!Step([&] { tr.Hold(arm_now, d_); })) return false;
-    }
-    return true;
-  };
+  auto lean_to = [&](int k) { return LeanTo(tr, k); };
   const int leans = lean_act >= 0 ? static_cast<int>(o_.lean_deg.size()) : 0;
   int lean = -1;  // upright
   if (leans > 0 && far > o_.comfort_reach_m) {
@@ -343,13 +349,37 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
     const double theta = -M_PI + 2 * M_PI * k / o_.approach_angles;
     const Eigen::Matrix3d r = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()) * upright * rh;
     const Eigen::Vector3d hand = base_goal - r * r_obj;
-    goals.push_back({hand + r * r_palm, r});
+    goals.push_back({hand + r * r_palm, r, std::nullopt});
   }
   ArmMotionOptions mo = o_.motion;
   mo.terminal_palm_speed_mps = 0;  // DASH: transport ends at rest over the target
   mo.ignore_bodies.push_back(g_.object_body);
   if (o_.transport_checks_object) mo.carried_body = g_.object_body;
-  core::StatusOr<ArmMotion> motion = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, {}, mo);
+  auto plan_failed = [](const core::StatusOr<ArmMotion>& r) {
+    return !r.ok() && (absl::IsFailedPrecondition(r.status()) || absl::IsNotFound(r.status()));
+  };
+  // the hand at the goals' turns first; when no pose or path reaches one, at whichever turn
+  // about the target's vertical the arm reaches (the object's yaw on the table is free)
+  auto plan = [&]() {
+    core::StatusOr<ArmMotion> r = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, {}, mo);
+    if (!plan_failed(r)) return r;
+    PalmPose any_turn = goals.front();
+    any_turn.yaw_free_about = base_goal;
+    ArmMotionOptions any_mo = mo;
+    any_mo.ik.tol_rot_rad = std::max(mo.ik.tol_rot_rad, o_.transport_tilt_tol_rad);
+    core::StatusOr<ArmMotion> turned =
+        PlanArmMotion(m_, d_, scratch_, ix_.arm, {any_turn}, {}, any_mo);
+    return turned.ok() ? turned : r;
+  };
+  core::StatusOr<ArmMotion> motion = plan();
+  // a target beyond the arm from the trunk's lean at the reach: the trunk leans further, the
+  // object held (the reach chose its lean for both, and a seated person leans on when short)
+  for (int lean = lean_ + 1;
+       lean_act_ >= 0 && lean < static_cast<int>(o_.lean_deg.size()) && plan_failed(motion);
+       ++lean) {
+    if (!LeanTo(tr, lean)) return Fail(TabletopStage::kTransport, StepError());
+    motion = plan();
+  }
   if (!motion.ok()) {
     return Fail(TabletopStage::kTransport, std::string(motion.status().message()), true);
   }

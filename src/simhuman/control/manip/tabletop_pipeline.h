@@ -102,6 +102,10 @@ struct TabletopOptions {
   /// The object's base this high over the target on arrival (at 3 cm an object that slipped
   /// down in the grip on the way struck the bottom object of a stack and tipped it)
   double carry_clearance_m = 0.06;
+  /// When no transport pose at the grasp's own turns is reachable, the hand may end at any turn
+  /// about the target's vertical, the object up to this far from upright (the alignment below
+  /// turns it upright before the descent)
+  double transport_tilt_tol_rad = 0.12;
   double lower_speed_mps = 0.06;  ///< placing descent
   /// Before the descent the hand turns the object upright and shifts its centre of mass over
   /// the target, reading the object's pose (it tilts and slips in the grip during transport;
