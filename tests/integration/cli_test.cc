@@ -336,6 +336,20 @@ TEST(CliIntegrationTest, TrainResumeAndCorruptCheckpoint) {
   Proc resumed = RunBin({"train", "--resume", dir, "--steps", "16k", "--quiet"});
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.out.find("resumed at"), std::string::npos) << resumed.out;
+  // a resumed run may change its schedule (--config with those keys), nothing else
+  const std::string changes = dir + "_changes.json", bad_changes = dir + "_bad_changes.json";
+  std::ofstream(changes) << R"({"lr": 0.0002, "curriculum_max_steps": 5000})";
+  std::ofstream(bad_changes) << R"({"hidden": [8]})";
+  Proc rescheduled =
+      RunBin({"train", "--resume", dir, "--config", changes, "--steps", "24k", "--quiet"});
+  ASSERT_EQ(rescheduled.exit_code, 0) << rescheduled.err;
+  const nlohmann::json run_config = nlohmann::json::parse(Slurp(dir + "/config.json"));
+  EXPECT_DOUBLE_EQ(run_config["lr"].get<double>(), 0.0002);
+  EXPECT_EQ(run_config["curriculum_max_steps"], 5000);
+  Proc refused = RunBin({"train", "--resume", dir, "--config", bad_changes});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("'hidden' cannot change in a resumed run"), std::string::npos)
+      << refused.err;
   Proc bad_steps = RunBin({"train", "--task", "reach", "--steps", "lots", "--out", dir + "x"});
   EXPECT_EQ(bad_steps.exit_code, 2);
   EXPECT_NE(bad_steps.err.find("--steps 'lots'"), std::string::npos) << bad_steps.err;

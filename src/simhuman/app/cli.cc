@@ -230,7 +230,9 @@ CLI::App* AddTrainCommand(CLI::App& app, TrainFlags* tf, CLI::Option** steps, CL
                ->capture_default_str();
   train_cmd->add_option("--out", tf->out, "Run folder of a new run");
   train_cmd->add_option("--resume", tf->resume, "Run folder to continue from its checkpoint");
-  train_cmd->add_option("--config", tf->config, "PPO settings JSON file (keys of PpoConfig)");
+  train_cmd->add_option(
+      "--config", tf->config,
+      "PPO settings JSON file (keys of PpoConfig); with --resume, the schedule keys to change");
   *seed = train_cmd->add_option("--seed", tf->seed, "Seed of the run")
               ->check(SeedValidator())
               ->capture_default_str();

@@ -13,6 +13,7 @@
 
 #include "simhuman/app/common.h"
 #include "simhuman/app/vision_command.h"
+#include "simhuman/core/json_io.h"
 #include "simhuman/core/version.h"
 #include "simhuman/learn/ppo.h"
 
@@ -79,6 +80,26 @@ absl::Status ParseStepCount(const std::string& text, int64_t* out) {
   return absl::OkStatus();
 }
 
+// `train --resume`: the run's own settings, with --config's schedule keys changed
+core::StatusOr<std::unique_ptr<learn::PpoTrainer>> ResumeTrainer(const TrainFlags& flags,
+                                                                 int64_t steps,
+                                                                 core::Communicator& comm) {
+  if (!flags.out.empty() || flags.seed_given || flags.envs || flags.threads ||
+      !flags.amp_clips.empty() || !flags.init_from.empty()) {
+    return absl::InvalidArgumentError(
+        "--resume continues a run with its own settings; only --steps and --config (its "
+        "schedule keys) may be given");
+  }
+  nlohmann::json changes = nlohmann::json::object();
+  if (!flags.config.empty()) {
+    SH_ASSIGN_OR_RETURN(changes, core::ReadJsonFile(flags.config));
+  }
+  auto trainer =
+      learn::PpoTrainer::Resume(flags.resume, flags.steps_given ? steps : 0, &comm, changes);
+  if (!trainer.ok() && !flags.config.empty()) return core::Annotate(trainer.status(), flags.config);
+  return trainer;
+}
+
 int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err,
                  core::Communicator& comm) {
   if (flags.task == "vision") return VisionTrainCommand(flags, out, err);
@@ -89,13 +110,7 @@ int TrainCommand(const TrainFlags& flags, std::ostream& out, std::ostream& err,
   }
   core::StatusOr<std::unique_ptr<learn::PpoTrainer>> trainer;
   if (!flags.resume.empty()) {
-    if (!flags.out.empty() || !flags.config.empty() || flags.seed_given || flags.envs ||
-        flags.threads || !flags.amp_clips.empty() || !flags.init_from.empty()) {
-      return ReportError(err, "train",
-                         absl::InvalidArgumentError("--resume continues a run with its own "
-                                                    "settings; only --steps may be given"));
-    }
-    trainer = learn::PpoTrainer::Resume(flags.resume, flags.steps_given ? steps : 0, &comm);
+    trainer = ResumeTrainer(flags, steps, comm);
   } else {
     if (flags.out.empty()) {
       return ReportError(err, "train",

@@ -391,7 +391,8 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::CreateWithTask(
 
 core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string& out_dir,
                                                                int64_t total_steps,
-                                                               core::Communicator* comm) {
+                                                               core::Communicator* comm,
+                                                               const nlohmann::json& changes) {
   std::string path = (fs::path(out_dir) / kCheckpointName).string();
   if (!std::ifstream(path).good()) {
     return absl::NotFoundError(path + ": no checkpoint to resume from");
@@ -408,7 +409,8 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
       return absl::DataLossError(path + ": not a training checkpoint (training state missing)");
     }
     nlohmann::json j = nlohmann::json::parse(cfg_json.toStringRef(), nullptr, false);
-    auto cfg = PpoConfig::FromCheckpointJson(j);
+    auto cfg = changes.empty() ? PpoConfig::FromCheckpointJson(j)
+                               : PpoConfig::WithResumeChanges(j, changes);
     if (!cfg.ok()) return core::Annotate(cfg.status(), path + ": config");
     impl->cfg = *cfg;
     if (total_steps > 0) impl->cfg.total_steps = total_steps;
@@ -430,6 +432,13 @@ core::StatusOr<std::unique_ptr<PpoTrainer>> PpoTrainer::Resume(const std::string
   }
   // iterations logged after the checkpoint were lost with the process: drop their lines
   if (impl->rank() == 0) TrimLogAfter(out_dir + "/log.jsonl", impl->progress.env_steps);
+  if (impl->rank() == 0 && !changes.empty()) {
+    // the run's settings from here on (the checkpoints store them too)
+    std::ofstream config_file(out_dir + "/config.json");
+    config_file << impl->cfg.ToJson().dump(2) << "\n";
+    config_file.flush();
+    if (!config_file) return absl::PermissionDeniedError(out_dir + "/config.json: cannot write");
+  }
   // new episodes after a resume get fresh seeds
   impl->env->ResetAll(static_cast<uint64_t>(impl->progress.iteration + 1) << 24);
   return std::unique_ptr<PpoTrainer>(new PpoTrainer(std::move(impl)));

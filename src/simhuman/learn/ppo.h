@@ -88,10 +88,12 @@ class PpoTrainer {
       const PpoConfig& config, const std::string& out_dir, std::unique_ptr<VecTask> task,
       core::Communicator* comm = nullptr);
   /// Continues the run in `out_dir` from its checkpoint. A missing checkpoint is NotFound and a
-  /// corrupt one DataLoss (never a silent restart). `total_steps` > 0 overrides the target.
-  static core::StatusOr<std::unique_ptr<PpoTrainer>> Resume(const std::string& out_dir,
-                                                            int64_t total_steps = 0,
-                                                            core::Communicator* comm = nullptr);
+  /// corrupt one DataLoss (never a silent restart). `total_steps` > 0 overrides the target;
+  /// `changes` (a JSON object, PpoConfig::WithResumeChanges) changes the run's schedule keys from
+  /// here on, and the next checkpoint stores them.
+  static core::StatusOr<std::unique_ptr<PpoTrainer>> Resume(
+      const std::string& out_dir, int64_t total_steps = 0, core::Communicator* comm = nullptr,
+      const nlohmann::json& changes = nlohmann::json::object());
   ~PpoTrainer();
 
   /// Collects one rollout and updates; collective with a communicator. Errors: too many

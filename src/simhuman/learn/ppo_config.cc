@@ -191,6 +191,36 @@ core::StatusOr<PpoConfig> PpoConfig::FromCheckpointJson(const nlohmann::json& j)
   return c;
 }
 
+const std::vector<std::string>& PpoConfig::ResumableKeys() {
+  static const std::vector<std::string> keys = {
+      "curriculum_max_steps",  "lr",
+      "lr_final_frac",         "target_kl",
+      "entropy_coef",          "checkpoint_every_s",
+      "carry_held_start_frac", "carry_put_down_start_frac",
+      "max_bad_updates"};
+  return keys;
+}
+
+core::StatusOr<PpoConfig> PpoConfig::WithResumeChanges(const nlohmann::json& stored,
+                                                       const nlohmann::json& changes) {
+  if (!changes.is_object()) {
+    return absl::InvalidArgumentError(
+        "training config changes for a resumed run: not a JSON object of config keys");
+  }
+  const std::vector<std::string>& ok = ResumableKeys();
+  nlohmann::json j = stored;
+  for (const auto& [key, value] : changes.items()) {
+    if (std::find(ok.begin(), ok.end(), key) == ok.end()) {
+      std::string valid;
+      for (const std::string& k : ok) valid += (valid.empty() ? "" : ", ") + k;
+      return absl::InvalidArgumentError("training config '" + key +
+                                        "' cannot change in a resumed run; valid: " + valid);
+    }
+    j[key] = value;
+  }
+  return FromCheckpointJson(j);
+}
+
 core::StatusOr<PpoConfig> PpoConfig::FromJson(const nlohmann::json& j) {
   PpoConfig c;
   SH_RETURN_IF_ERROR(Table().Read(j, "/", &c));

@@ -109,6 +109,14 @@ struct PpoConfig {
   /// written take the value that reproduces what that run built, not today's default: a
   /// config without `critic_hidden` (before session 7) had a critic as wide as `hidden`.
   static core::StatusOr<PpoConfig> FromCheckpointJson(const nlohmann::json& j);
+  /// The keys a resumed run may change (its schedule, budgets and episode starts; never the
+  /// task, the networks, the envs or the seed): ResumableKeys() lists them.
+  static const std::vector<std::string>& ResumableKeys();
+  /// `stored` (a checkpoint's config JSON) with `changes` applied: every key of `changes` must
+  /// be one of ResumableKeys(), and the result is read and checked as FromCheckpointJson does.
+  /// InvalidArgument names a key that may not change and lists those that may.
+  static core::StatusOr<PpoConfig> WithResumeChanges(const nlohmann::json& stored,
+                                                     const nlohmann::json& changes);
 };
 
 }  // namespace simhuman::learn

@@ -96,6 +96,30 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
   EXPECT_EQ(Error(json::array()), "/: expected a JSON object, got array");
 }
 
+TEST(PpoConfigTable, AResumedRunChangesOnlyItsScheduleKeys) {
+  PpoConfig stored;
+  stored.task = "carry";
+  stored.hidden = {256, 128};
+  const json j = stored.ToJson();
+  auto changed = PpoConfig::WithResumeChanges(j, json{{"curriculum_max_steps", 1500000}});
+  ASSERT_TRUE(changed.ok()) << changed.status();
+  EXPECT_EQ(changed->curriculum_max_steps, 1'500'000);
+  EXPECT_EQ(changed->hidden, stored.hidden);
+  EXPECT_EQ(changed->task, "carry");
+  // the networks, the task and the envs stay: the key is named with those that may change
+  for (const json& bad : {json{{"hidden", {64}}}, json{{"task", "walk"}}, json{{"num_envs", 8}}}) {
+    auto r = PpoConfig::WithResumeChanges(j, bad);
+    ASSERT_FALSE(r.ok()) << bad.dump();
+    EXPECT_THAT(std::string(r.status().message()), HasSubstr("cannot change in a resumed run"));
+    EXPECT_THAT(std::string(r.status().message()), HasSubstr("valid: curriculum_max_steps, lr"));
+  }
+  // a value out of range is the table's error
+  auto negative = PpoConfig::WithResumeChanges(j, json{{"lr", -1.0}});
+  ASSERT_FALSE(negative.ok());
+  EXPECT_THAT(std::string(negative.status().message()), HasSubstr("'lr' = -1 is invalid"));
+  EXPECT_FALSE(PpoConfig::WithResumeChanges(j, json::array({1})).ok());
+}
+
 TEST(PpoConfigTable, CrossFieldChecksFollowTheTable) {
   EXPECT_THAT(Error(json{{"num_envs", 4}, {"rollout_chunks", 5}}),
               HasSubstr("'rollout_chunks' = 5 is invalid; it must not exceed num_envs (4)"));
