@@ -46,6 +46,12 @@ const core::FieldTable<VisionTrainConfig>& Table() {
        F("position_noise_m", &VisionTrainConfig::position_noise_m,
          "placing gaze aimed at the destination moved by up to this (m)")
            .In(R::Closed(0, 0.2)),
+       F("held_tilt_share", &VisionTrainConfig::held_tilt_share,
+         "share of placing frames with the held object tilted in the hand")
+           .In(R::Closed(0, 1)),
+       F("held_tilt_max_deg", &VisionTrainConfig::held_tilt_max_deg,
+         "largest such tilt (degrees)")
+           .In(R::Closed(0, 90)),
        F("epochs", &VisionTrainConfig::epochs, "passes over the samples").In(R::Closed(1, 1000)),
        F("batch", &VisionTrainConfig::batch, "minibatch size").In(R::Closed(1, 65536)),
        F("lr", &VisionTrainConfig::lr, "Adam learning rate").In(R::AboveUpTo(0, 1)),
@@ -107,6 +113,8 @@ core::StatusOr<std::unique_ptr<perceive::VisionModel>> TrainVisionModel(
   fo.placing_near_m = c.placing_near_m;
   fo.gaze_jitter_m = c.gaze_jitter_m;
   fo.position_noise_m = c.position_noise_m;
+  fo.held_tilt_share = c.held_tilt_share;
+  fo.held_tilt_max_deg = c.held_tilt_max_deg;
   fo.seed = c.seed;
   fo.stream = 0;
   // pass 1 keeps the frames (small: 160x120) and learns the colour table from all of them

@@ -28,6 +28,10 @@ struct VisionTrainConfig {
   double placing_near_m = 1.0;
   double gaze_jitter_m = 0.05;
   double position_noise_m = 0.02;
+  /// VisionFrameOptions::held_tilt_share / held_tilt_max_deg (0: the held objects as the
+  /// scripted grasp leaves them)
+  double held_tilt_share = 0;
+  double held_tilt_max_deg = 30;
   int epochs = 25;
   int batch = 128;
   double lr = 1e-3;

@@ -1,6 +1,7 @@
 #include "simhuman/eval/vision_frames.h"
 
 #include <chrono>
+#include <cmath>
 #include <memory>
 
 #include "simhuman/control/manip/tabletop_pipeline.h"
@@ -39,6 +40,28 @@ core::Status Shoot(perceive::HeadCamera& cam, const Episode& e, const mjData* d,
   }
   on_frame(f);
   return absl::OkStatus();
+}
+
+// `out`: `d` with the free body `body` turned by `angle` about the horizontal axis at `heading`
+// through site `pivot` (the palm point: the object stays in the hand), its kinematics done
+void TiltHeldObject(const mjModel* m, const mjData* d, int body, int pivot, double angle,
+                    double heading, mjData* out) {
+  mj_copyData(out, m, d);
+  const int j = m->body_jntadr[body];
+  mjtNum* q = out->qpos + m->jnt_qposadr[j];
+  const Eigen::Vector3d axis(std::cos(heading), std::sin(heading), 0);
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(angle, axis));
+  const Eigen::Vector3d p(d->site_xpos + 3 * pivot);
+  const Eigen::Vector3d pos = p + turn * (Eigen::Vector3d(q[0], q[1], q[2]) - p);
+  const Eigen::Quaterniond rot = turn * Eigen::Quaterniond(q[3], q[4], q[5], q[6]);
+  q[0] = pos.x();
+  q[1] = pos.y();
+  q[2] = pos.z();
+  q[3] = rot.w();
+  q[4] = rot.x();
+  q[5] = rot.y();
+  q[6] = rot.z();
+  mj_kinematics(m, out);
 }
 
 // a renderer draws the model it was given: each scene's world is another model
@@ -85,6 +108,7 @@ core::Status CollectVisionFrames(const VisionFrameOptions& o,
         Eigen::Map<const Eigen::Vector3d>(e.world->data()->xpos + 3 * goal.object_body);
     int step = 0, shot = 0;
     core::Status status;
+    std::unique_ptr<mjData, void (*)(mjData*)> tilted(mj_makeData(e.world->model()), mj_deleteData);
     const int every = std::max(
         1, static_cast<int>(std::lround(o.placing_every_s / e.world->model()->opt.timestep)));
     auto hook = [&](const mjData* d) {
@@ -95,7 +119,15 @@ core::Status CollectVisionFrames(const VisionFrameOptions& o,
       const bool near = (p - goal.target).head<2>().norm() < o.placing_near_m;
       if (!lifted || !near) return;
       const Eigen::Vector3d gaze = aim + Jitter(rng, o.gaze_jitter_m);
-      status = Shoot(*cam, e, d, gaze, kind == "place" ? "placing" : "stacking", seed, on_frame);
+      const mjData* shown = d;
+      if (o.held_tilt_share > 0 && rng.Uniform() < o.held_tilt_share) {
+        TiltHeldObject(e.world->model(), d, goal.object_body, ix.arm.palm_site,
+                       rng.Uniform(0.0, o.held_tilt_max_deg * M_PI / 180),
+                       rng.Uniform(-M_PI, M_PI), tilted.get());
+        shown = tilted.get();
+      }
+      status =
+          Shoot(*cam, e, shown, gaze, kind == "place" ? "placing" : "stacking", seed, on_frame);
       ++shot;
     };
     control::manip::RunTabletop(*e.world, ix, goal, grasp, pipeline, hook);

@@ -45,6 +45,12 @@ struct VisionFrameOptions {
   /// DASH's 2 cm position noise: the gaze during placing aims at the destination moved by up to
   /// this much, as the estimate it is computed from would be
   double position_noise_m = 0.02;
+  /// A share of the placing/stacking frames show the held object turned in the hand by a
+  /// random tilt of up to held_tilt_max_deg (about a horizontal axis through the palm point):
+  /// objects tip in the grip by 3-30 degrees, and the up axis must be read from how they look
+  /// (the scripted grasps alone leave most of them near upright). 0: none.
+  double held_tilt_share = 0;
+  double held_tilt_max_deg = 30;
   uint64_t seed = 1;
   /// Seed stream: training and evaluation draw disjoint scenes
   uint64_t stream = 0;
