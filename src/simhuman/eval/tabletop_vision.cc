@@ -200,12 +200,6 @@ control::manip::ObjectView TabletopVision::View(const mjData* d, bool held) cons
     }
     c = o_.prior_weight * *prior_c_ + (1 - o_.prior_weight) * c;
     if (up.norm() > 1e-6) up.normalize();
-    if (std::getenv("SH_DBG_VIS")) {
-      const Eigen::Matrix3d r0 =
-          Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * hand_body_);
-      const Eigen::Vector3d pw = r0 * *prior_up_, fw = r0 * up;
-      std::fprintf(stderr, "DBGV prior_up (%.3f %.3f %.3f) frames_up (%.3f %.3f %.3f) n=%zu planned_up (%.3f %.3f %.3f)\n", pw.x(), pw.y(), pw.z(), fw.x(), fw.y(), fw.z(), use.size(), planned_.up.x(), planned_.up.y(), planned_.up.z());
-    }
     up = o_.prior_up_weight * *prior_up_ + (1 - o_.prior_up_weight) * up;
     if (!anchor_) anchor_ = c;
     const Eigen::Matrix3d r =

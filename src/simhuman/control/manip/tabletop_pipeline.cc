@@ -518,12 +518,6 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
             ? Eigen::Matrix3d::Identity()
             : Eigen::Quaterniond::FromTwoVectors(seen.up, Eigen::Vector3d::UnitZ())
                   .toRotationMatrix();
-    {
-      const Eigen::Matrix3d rt = Rot(d_, g_.object_body);
-      const Eigen::Vector3d tc(d_->xipos + 3 * g_.object_body);
-      std::fprintf(stderr, "DBG true_up (%.3f %.3f %.3f)\n", rt(0, 2), rt(1, 2), rt(2, 2));
-      std::fprintf(stderr, "DBG align %d est_c (%.3f %.3f %.3f) true_c (%.3f %.3f %.3f) est_up_err %.1f deg, target (%.3f %.3f %.3f)\n", k, c.x(), c.y(), c.z(), tc.x(), tc.y(), tc.z(), std::acos(std::clamp(seen.up.dot(rt.col(2)), -1.0, 1.0)) * 57.3, g_.target.x(), g_.target.y(), g_.target.z());
-    }
     if (err.norm() < o_.align_tol_m && Eigen::AngleAxisd(turn).angle() < o_.align_tilt_rad) break;
     const Eigen::Vector3d p(d_->site_xpos + 3 * ix_.arm.palm_site);
     if (!MovePalm(tr, c + turn * (p - c) - p + err, o_.align_s, {}, &turn)) {
