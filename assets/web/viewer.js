@@ -28,8 +28,8 @@
   var container = $('view');
   var renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
   // Adaptive resolution: a software renderer (Chromium's SwiftShader) is bound by the pixels it
-  // fills, so below 30 fps the page draws fewer of them (the canvas is scaled up to the
-  // window) and above 45 fps it draws more again, between 0.5 and 1 (the device's own ratio,
+  // fills, so when the browser's animation callbacks fall below 30 per second the page draws
+  // fewer of them (the canvas is scaled up to the window) and above 45 more again, between 0.5 and 1 (the device's own ratio,
   // at most 1). ?resolution=full keeps full resolution.
   var fullRatio = Math.min(1, window.devicePixelRatio || 1);
   var adaptive = params.get('resolution') !== 'full';
@@ -49,10 +49,18 @@
   var sun = new THREE.DirectionalLight(0xffffff, 0.6);
   sun.position.set(3, -4, 8);
   scene.add(sun);
+  // The page draws only when what it shows changed (a new pose, targets, the camera, the
+  // window): a software renderer then spends its core on the frames the simulation streams
+  // (30 Hz) and none on redrawing the same picture, and leaves the rest to the simulation
+  // sharing the machine.
+  var dirty = true;
+  function redraw() { dirty = true; }
+  controls.addEventListener('change', redraw);
   window.addEventListener('resize', function () {
     camera.aspect = window.innerWidth / window.innerHeight;
     camera.updateProjectionMatrix();
     renderer.setSize(window.innerWidth, window.innerHeight);
+    redraw();
   });
 
   var hideHumans = params.get('hide') === 'humans';
@@ -125,6 +133,7 @@
       camera.position.set(followBody.position.x + 3.2, followBody.position.y - 3.2, 2.4);
       controls.update();
     }
+    redraw();
   }
 
   // contact targets: a red ball at each target, a line from the body point to it
@@ -156,10 +165,12 @@
     }
     lineGeom.setDrawRange(0, 2 * count);
     lineGeom.attributes.position.needsUpdate = true;
+    redraw();
   }
 
   var lastFollow = null;
   function applyPoses(arr, start) {
+    redraw();
     for (var k = 0; k < movingGroups.length; k++) {
       var o = start + 7 * k, g = movingGroups[k];
       g.position.set(arr[o], arr[o + 1], arr[o + 2]);
@@ -209,30 +220,39 @@
 
   // ---- the render loop and its fps --------------------------------------------------------
   var playing = params.get('pause') !== '1';
-  var fpsCount = 0, fpsT0 = performance.now();
+  // fps: frames drawn per second (new content only); ticks: the browser's animation callbacks
+  // per second, which fall below 30 when the drawing cannot keep up
+  var fpsCount = 0, tickCount = 0, fpsT0 = performance.now();
   var onTick = function () {};
   function loop(now) {
     onTick(now);
     controls.update();
-    renderer.render(scene, camera);
-    fpsCount += 1;
+    tickCount += 1;
+    if (dirty) {
+      dirty = false;
+      renderer.render(scene, camera);
+      fpsCount += 1;
+    }
     if (now - fpsT0 >= 1000) {
       var fps = fpsCount * 1000 / (now - fpsT0);
+      var ticks = tickCount * 1000 / (now - fpsT0);
       statusEl.dataset.fps = fps.toFixed(1);
+      statusEl.dataset.ticks = ticks.toFixed(1);
       $('fps').textContent = fps.toFixed(0) + ' fps' +
           (pixelRatio < fullRatio ? ' at ' + Math.round(100 * pixelRatio / fullRatio) + ' %' : '');
       if (adaptive) {
         var next = pixelRatio;
-        if (fps < 30 && pixelRatio > 0.5 * fullRatio) next = Math.max(0.5 * fullRatio, pixelRatio - 0.125);
-        if (fps > 45 && pixelRatio < fullRatio) next = Math.min(fullRatio, pixelRatio + 0.125);
+        if (ticks < 30 && pixelRatio > 0.5 * fullRatio) next = Math.max(0.5 * fullRatio, pixelRatio - 0.125);
+        if (ticks > 45 && pixelRatio < fullRatio) next = Math.min(fullRatio, pixelRatio + 0.125);
         if (next !== pixelRatio) {
           pixelRatio = next;
           renderer.setPixelRatio(pixelRatio);
           renderer.setSize(window.innerWidth, window.innerHeight);
+          redraw();
         }
         statusEl.dataset.pixelRatio = pixelRatio.toFixed(3);
       }
-      fpsCount = 0; fpsT0 = now;
+      fpsCount = 0; tickCount = 0; fpsT0 = now;
     }
     requestAnimationFrame(loop);
   }
