@@ -208,6 +208,47 @@ TEST(EvalRunnerTest, SuccessNeedsThePlanThenTheHoldThenTheExtraCheck) {
   EXPECT_DOUBLE_EQ(kEvalSettleS, 3.0);
 }
 
+// the hold check's posture for stand-up and walk-to steps (ours, beside UniHSI's position rule)
+TEST(EvalRunnerTest, AGetCloseStepHoldsOnlyWithTheHumanOnItsFeet) {
+  using J = core::BodyJoint;
+  auto body = [](double hip_z, Eigen::Vector3d knee, Eigen::Vector3d foot, Eigen::Vector3d head) {
+    plan::BodyPoints b;
+    for (double side : {-0.1, 0.1}) {
+      const Eigen::Vector3d y(0, side, 0);
+      b.at(side < 0 ? J::kRightHip : J::kLeftHip) = Eigen::Vector3d(0, side, hip_z);
+      b.at(side < 0 ? J::kRightKnee : J::kLeftKnee) = knee + y;
+      b.at(side < 0 ? J::kRightFoot : J::kLeftFoot) = foot + y;
+    }
+    b.at(J::kHead) = head;
+    return b;
+  };
+  const plan::BodyPoints standing = body(0.92, {0.02, 0, 0.5}, {0, 0, 0.08}, {0, 0, 1.6});
+  const plan::BodyPoints seated = body(0.5, {0.45, 0, 0.52}, {0.45, 0, 0.08}, {-0.05, 0, 1.15});
+  const plan::BodyPoints slumped = body(0.15, {0.4, 0, 0.25}, {0.8, 0, 0.08}, {-0.2, 0, 0.6});
+  const plan::BodyPoints lying = body(0.6, {0.42, 0, 0.6}, {0.84, 0, 0.6}, {-0.62, 0, 0.62});
+  const plan::BodyPoints bent = body(0.9, {0.02, 0, 0.5}, {0, 0, 0.08}, {0.7, 0, 1.0});
+  EXPECT_TRUE(StandsOnItsFeet(standing));
+  EXPECT_FALSE(StandsOnItsFeet(seated));
+  EXPECT_FALSE(StandsOnItsFeet(slumped));  // beside a bed, the pelvis at its stand point
+  EXPECT_FALSE(StandsOnItsFeet(lying));
+  EXPECT_FALSE(StandsOnItsFeet(bent));  // the trunk folded forward past 45 degrees
+  plan::ContactStep stand_up;
+  plan::ContactPair get_close;
+  get_close.part = "none";
+  get_close.agent = 1;
+  ASSERT_TRUE(get_close.IsGetClose());
+  stand_up.pairs = {get_close};
+  EXPECT_TRUE(GetCloseHumansStand(stand_up, {slumped, standing}));
+  EXPECT_FALSE(GetCloseHumansStand(stand_up, {standing, slumped}));
+  EXPECT_FALSE(GetCloseHumansStand(stand_up, {standing}));  // no such human
+  // a step without get-close pairs is not judged by posture
+  plan::ContactPair sit;
+  sit.joint = J::kPelvis;
+  sit.part = "seat surface";
+  ASSERT_FALSE(sit.IsGetClose());
+  EXPECT_TRUE(GetCloseHumansStand(plan::ContactStep{{sit}, std::nullopt, "", ""}, {lying}));
+}
+
 TEST(EvalRunnerTest, SummaryByHand) {
   std::vector<EpisodeRecord> recs = {
       Record(true, true, 0.02, false, 2, 10, 5), Record(true, false, 0.04, false, 2, 10, 5),

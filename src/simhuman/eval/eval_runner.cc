@@ -21,6 +21,30 @@ nlohmann::ordered_json NumberOrNull(double v) {
 
 }  // namespace
 
+bool StandsOnItsFeet(const plan::BodyPoints& body) {
+  using J = core::BodyJoint;
+  auto leg = [&](J hip, J knee, J foot) {
+    return (body.at(hip) - body.at(knee)).norm() + (body.at(knee) - body.at(foot)).norm();
+  };
+  const double length = 0.5 * (leg(J::kLeftHip, J::kLeftKnee, J::kLeftFoot) +
+                               leg(J::kRightHip, J::kRightKnee, J::kRightFoot));
+  const Eigen::Vector3d hips = 0.5 * (body.at(J::kLeftHip) + body.at(J::kRightHip));
+  const double foot_z = std::min(body.at(J::kLeftFoot).z(), body.at(J::kRightFoot).z());
+  const Eigen::Vector3d up = body.at(J::kHead) - hips;
+  return length > 0 && hips.z() - foot_z >= 0.7 * length && up.norm() > 0 &&
+         up.z() >= std::cos(M_PI / 4) * up.norm();
+}
+
+bool GetCloseHumansStand(const plan::ContactStep& last,
+                         const std::vector<plan::BodyPoints>& agents) {
+  for (const plan::ContactPair& p : last.pairs) {
+    if (!p.IsGetClose()) continue;
+    if (p.agent < 0 || p.agent >= static_cast<int>(agents.size())) return false;
+    if (!StandsOnItsFeet(agents[p.agent])) return false;
+  }
+  return true;
+}
+
 void JudgeEpisode(bool last_step_holds, EpisodeRecord* record) {
   record->held = record->result.success && last_step_holds && !record->result.fell;
   record->success = record->result.success && record->held && record->extra.pass;
@@ -211,9 +235,9 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   // the last step's pairs at the end of the settle time
   core::SceneCatalog now = (*sim)->catalog();
   (*sim)->SyncCatalog((*sim)->data(), &now);
-  plan::StepEval last = plan::EvaluateStep(chain->steps.back(), now,
-                                           control::AllBodyPoints(**sim, (*sim)->data()), run.pair);
-  JudgeEpisode(last.complete, &rec);
+  const std::vector<plan::BodyPoints> bodies = control::AllBodyPoints(**sim, (*sim)->data());
+  plan::StepEval last = plan::EvaluateStep(chain->steps.back(), now, bodies, run.pair);
+  JudgeEpisode(last.complete && GetCloseHumansStand(chain->steps.back(), bodies), &rec);
   rec.motion = TrajectoryMotionMetrics(**sim, spec->agent, trajectory.time_s, trajectory.qpos);
   rec.scene = world::SceneToJson(spec->scene);
   rec.plan = spec->plan;

@@ -41,6 +41,18 @@ struct EpisodeRecord {
   std::optional<MotionMetrics> motion;
 };
 
+/// Whether a human stands on its feet at `body`: its hips at least 0.7 of its leg length (hip to
+/// knee to foot, from the same points) above its lower foot, and its head above its hips within
+/// 45 degrees of vertical. A seated human has its hips about half its leg length up, one slumped
+/// on the floor or against a bed almost none.
+bool StandsOnItsFeet(const plan::BodyPoints& body);
+
+/// Our convention beside UniHSI's position-only get-close rule, for the hold check: every
+/// get-close pair of `last` (a stand-up or walk-to step) also needs its human standing
+/// (StandsOnItsFeet of `agents[pair.agent]`). True for a step without get-close pairs.
+bool GetCloseHumansStand(const plan::ContactStep& last,
+                         const std::vector<plan::BodyPoints>& agents);
+
 /// The final success rule of every plan suite, on a record whose `result` and `extra` are set:
 /// the plan succeeded (every step completed in order within its budget), then its last step
 /// still holds `kEvalSettleS` later (`last_step_holds`, evaluated at the end of the episode)
