@@ -8,9 +8,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "simhuman/control/runner.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/eval/eval_runner.h"
 #include "simhuman/world/humanoid.h"
+#include "simhuman/world/sim_world.h"
 
 namespace simhuman::eval {
 namespace {
@@ -209,7 +211,7 @@ TEST(EvalRunnerTest, SuccessNeedsThePlanThenTheHoldThenTheExtraCheck) {
 }
 
 // the hold check's posture for stand-up and walk-to steps (ours, beside UniHSI's position rule)
-TEST(EvalRunnerTest, AGetCloseStepHoldsOnlyWithTheHumanOnItsFeet) {
+TEST(EvalRunnerTest, AGetCloseStepHoldsOnlyWithTheHumanOnItsFeetIntegration) {
   using J = core::BodyJoint;
   auto body = [](double hip_z, Eigen::Vector3d knee, Eigen::Vector3d foot, Eigen::Vector3d head) {
     plan::BodyPoints b;
@@ -247,6 +249,15 @@ TEST(EvalRunnerTest, AGetCloseStepHoldsOnlyWithTheHumanOnItsFeet) {
   sit.part = "seat surface";
   ASSERT_FALSE(sit.IsGetClose());
   EXPECT_TRUE(GetCloseHumansStand(plan::ContactStep{{sit}, std::nullopt, "", ""}, {lying}));
+  // our humanoid as it starts, standing, and at a child's and a tall adult's scale
+  for (double scale : {0.6, 1.0, 1.2}) {
+    world::AgentSpec human;
+    human.scale = scale;
+    auto w = world::SimWorld::Create(core::SceneCatalog{}, {human});
+    ASSERT_TRUE(w.ok()) << w.status();
+    mj_forward((*w)->model(), (*w)->data());
+    EXPECT_TRUE(StandsOnItsFeet(control::AllBodyPoints(**w, (*w)->data())[0])) << scale;
+  }
 }
 
 TEST(EvalRunnerTest, SummaryByHand) {
