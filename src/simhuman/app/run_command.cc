@@ -9,7 +9,9 @@
 #include "simhuman/app/common.h"
 #include "simhuman/app/plan_command.h"
 #include "simhuman/app/vision_command.h"
+#include "simhuman/control/runner.h"
 #include "simhuman/eval/episode.h"
+#include "simhuman/eval/eval_runner.h"
 #include "simhuman/eval/motion_metrics.h"
 #include "simhuman/eval/reachability.h"
 #include "simhuman/eval/replay.h"
@@ -112,6 +114,28 @@ namespace {
 std::string VisionModelFor(const RunFlags& f) {
   if (f.perception != "vision") return "";
   return f.vision_model.empty() ? DefaultVisionModel() : f.vision_model;
+}
+
+// the run's one-line summary and its warnings
+void PrintRunResult(const control::EpisodeResult& result, bool stands_at_end,
+                    const std::string& result_path, std::ostream& out, std::ostream& err) {
+  out << "success: " << (result.success ? "yes" : "no") << ", steps " << result.steps_completed
+      << "/" << result.steps_total << ", contact error "
+      << (result.contact_error_m >= 0 ? Fixed(result.contact_error_m, 3) + " m" : "n/a")
+      << ", fell: " << (result.fell ? "yes" : "no") << ", end: " << result.end_reason << ", sim "
+      << Fixed(result.sim_time_s, 2) << " s, wall " << Fixed(result.wall_time_s, 2) << " s ("
+      << (result.sim_time_s > 0 ? Fixed(result.wall_time_s / result.sim_time_s, 2) : "n/a")
+      << " wall/sim); results in " << result_path << std::endl;
+  if (result.success && !stands_at_end) {
+    err << "simhuman run: warning: the plan's last step asks the human to stand, and it is not "
+           "standing at the end (the success above follows UniHSI's rule: the pelvis's position "
+           "only; the eval suites count this as a failure)"
+        << std::endl;
+  }
+  if (result.end_reason.rfind("unstable", 0) == 0 ||
+      result.end_reason.rfind("controller", 0) == 0) {
+    err << "simhuman run: warning: the episode ended early: " << result.end_reason << std::endl;
+  }
 }
 }  // namespace
 
@@ -226,6 +250,11 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   j["carry_policy"] = carry_policy;
   if (!grasp_policy.empty()) j["grasp_policy"] = grasp_policy;
   j["motion"] = MotionJson(**sim, trajectory);
+  // a last stand-up or walk-to step: whether its human stands at the end (UniHSI's rule, which
+  // `success` follows, reads the pelvis's position only; the eval suites also need this)
+  const bool stands_at_end =
+      eval::GetCloseHumansStand(chain->steps.back(), control::AllBodyPoints(**sim, (*sim)->data()));
+  j["standing_at_end"] = stands_at_end;
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) j[key] = value;
   absl::Status st = eval::WriteJsonFile(Join(out_dir, "scene.json"), world::SceneToJson(*scene));
@@ -236,17 +265,7 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   if (st.ok()) st = eval::WriteJsonFile(Join(out_dir, "result.json"), j);
   if (!st.ok()) return ReportError(err, kCommand, absl::InternalError(st.message()));
 
-  out << "success: " << (result.success ? "yes" : "no") << ", steps " << result.steps_completed
-      << "/" << result.steps_total << ", contact error "
-      << (result.contact_error_m >= 0 ? Fixed(result.contact_error_m, 3) + " m" : "n/a")
-      << ", fell: " << (result.fell ? "yes" : "no") << ", end: " << result.end_reason << ", sim "
-      << Fixed(result.sim_time_s, 2) << " s, wall " << Fixed(result.wall_time_s, 2) << " s ("
-      << (result.sim_time_s > 0 ? Fixed(result.wall_time_s / result.sim_time_s, 2) : "n/a")
-      << " wall/sim); results in " << Join(out_dir, "result.json") << std::endl;
-  if (result.end_reason.rfind("unstable", 0) == 0 ||
-      result.end_reason.rfind("controller", 0) == 0) {
-    err << "simhuman run: warning: the episode ended early: " << result.end_reason << std::endl;
-  }
+  PrintRunResult(result, stands_at_end, Join(out_dir, "result.json"), out, err);
 
   if (flags.html && !WriteRunPage(flags, scene->name, **sim, *chain, trajectory, j, out, err)) {
     return kExitInternal;
