@@ -49,8 +49,7 @@ const core::FieldTable<VisionTrainConfig>& Table() {
        F("held_tilt_share", &VisionTrainConfig::held_tilt_share,
          "share of placing frames with the held object tilted in the hand")
            .In(R::Closed(0, 1)),
-       F("held_tilt_max_deg", &VisionTrainConfig::held_tilt_max_deg,
-         "largest such tilt (degrees)")
+       F("held_tilt_max_deg", &VisionTrainConfig::held_tilt_max_deg, "largest such tilt (degrees)")
            .In(R::Closed(0, 90)),
        F("epochs", &VisionTrainConfig::epochs, "passes over the samples").In(R::Closed(1, 1000)),
        F("batch", &VisionTrainConfig::batch, "minibatch size").In(R::Closed(1, 65536)),

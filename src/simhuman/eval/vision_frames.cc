@@ -122,8 +122,8 @@ core::Status CollectVisionFrames(const VisionFrameOptions& o,
       const mjData* shown = d;
       if (o.held_tilt_share > 0 && rng.Uniform() < o.held_tilt_share) {
         TiltHeldObject(e.world->model(), d, goal.object_body, ix.arm.palm_site,
-                       rng.Uniform(0.0, o.held_tilt_max_deg * M_PI / 180),
-                       rng.Uniform(-M_PI, M_PI), tilted.get());
+                       rng.Uniform(0.0, o.held_tilt_max_deg * M_PI / 180), rng.Uniform(-M_PI, M_PI),
+                       tilted.get());
         shown = tilted.get();
       }
       status =

@@ -69,14 +69,29 @@ TEST(ArmIkTest, TheArmChainIsSevenHingesFromShoulderToWrist) {
   EXPECT_NE(left.status().message().find("no dexterous left hand"), std::string::npos);
 }
 
-TEST(ArmIkTest, ThePalmReachesASideGraspOfAnObjectOnTheTable) {
+// the seated human's right arm, a scratch mjData at the world's start and the arm's angles
+// there, and a grasp centre on the table
+struct ArmAtTable {
   Table t = SeatedAtTable();
   ArmChain arm = *MakeArmChain(*t.world, 0, true);
   const mjModel* m = t.world->model();
   mjData* d = mj_makeData(m);
-  mju_copy(d->qpos, t.world->data()->qpos, m->nq);
-  const Eigen::VectorXd rest = arm.Get(d);
-  const Eigen::Vector3d centre(t.edge_x + 0.2, -0.2, t.top_z + 0.07);
+  Eigen::VectorXd rest;
+  Eigen::Vector3d centre{t.edge_x + 0.2, -0.2, t.top_z + 0.07};
+  ArmAtTable() {
+    mju_copy(d->qpos, t.world->data()->qpos, m->nq);
+    rest = arm.Get(d);
+  }
+  ~ArmAtTable() { mj_deleteData(d); }
+};
+
+TEST(ArmIkTest, ThePalmReachesASideGraspOfAnObjectOnTheTable) {
+  ArmAtTable at;
+  const ArmChain& arm = at.arm;
+  const mjModel* m = at.m;
+  mjData* d = at.d;
+  const Eigen::VectorXd& rest = at.rest;
+  const Eigen::Vector3d& centre = at.centre;
   int solved = 0, free = 0;
   for (int k = 0; k < 8; ++k) {
     const double yaw = -M_PI / 2 + k * M_PI / 8;  // approaches from the right and the front
@@ -100,19 +115,17 @@ TEST(ArmIkTest, ThePalmReachesASideGraspOfAnObjectOnTheTable) {
       SolvePalmIk(m, d, arm, SideGraspPose({1.8, -0.2, 0.8}, 0.04, 0, true), rest, rest);
   EXPECT_FALSE(far.converged);
   EXPECT_GT(far.pos_err_m, 0.5);
-  mj_deleteData(d);
 }
 
 // an upright object's yaw in the hand does not matter: a pose the arm cannot reach at its own
 // turn is reached at another turn about the object's vertical, and only turned
 TEST(ArmIkTest, APoseFreeInYawIsReachedAtSomeTurnAboutItsVertical) {
-  Table t = SeatedAtTable();
-  ArmChain arm = *MakeArmChain(*t.world, 0, true);
-  const mjModel* m = t.world->model();
-  mjData* d = mj_makeData(m);
-  mju_copy(d->qpos, t.world->data()->qpos, m->nq);
-  const Eigen::VectorXd rest = arm.Get(d);
-  const Eigen::Vector3d centre(t.edge_x + 0.2, -0.2, t.top_z + 0.07);
+  ArmAtTable at;
+  const ArmChain& arm = at.arm;
+  const mjModel* m = at.m;
+  mjData* d = at.d;
+  const Eigen::VectorXd& rest = at.rest;
+  const Eigen::Vector3d& centre = at.centre;
   int fixed_misses = 0;
   for (int k = 0; k < 16; ++k) {
     const double yaw = -M_PI + k * M_PI / 8;
@@ -133,22 +146,15 @@ TEST(ArmIkTest, APoseFreeInYawIsReachedAtSomeTurnAboutItsVertical) {
     EXPECT_GT((hand * target.rot.transpose())(2, 2), std::cos(0.07)) << "approach yaw " << yaw;
   }
   EXPECT_GE(fixed_misses, 4) << "the test needs turns the arm cannot reach as given";
-  mj_deleteData(d);
 }
 
 TEST(ArmIkTest, ThePalmInsideTheTableIsAContact) {
-  Table t = SeatedAtTable();
-  ArmChain arm = *MakeArmChain(*t.world, 0, true);
-  const mjModel* m = t.world->model();
-  mjData* d = mj_makeData(m);
-  mju_copy(d->qpos, t.world->data()->qpos, m->nq);
-  const Eigen::VectorXd rest = arm.Get(d);
-  EXPECT_EQ(ArmContacts(m, d, arm, rest), 0) << "the seated rest pose is free";
+  ArmAtTable at;
+  EXPECT_EQ(ArmContacts(at.m, at.d, at.arm, at.rest), 0) << "the seated rest pose is free";
   const PalmPose sunk =
-      SideGraspPose({t.edge_x + 0.25, 0.1, t.top_z - 0.03}, 0.04, -M_PI / 4, true);
-  const IkResult r = SolvePalmIk(m, d, arm, sunk, rest, rest);
-  EXPECT_GT(ArmContacts(m, d, arm, r.q), 0);
-  mj_deleteData(d);
+      SideGraspPose({at.t.edge_x + 0.25, 0.1, at.t.top_z - 0.03}, 0.04, -M_PI / 4, true);
+  const IkResult r = SolvePalmIk(at.m, at.d, at.arm, sunk, at.rest, at.rest);
+  EXPECT_GT(ArmContacts(at.m, at.d, at.arm, r.q), 0);
 }
 
 TEST(ArmIkTest, ATopGraspPoseHasThePalmDownOverTheTopAndTheFingersAlongTheYaw) {
