@@ -55,7 +55,8 @@ void Pelvis(const CarryTask& t, Eigen::Vector2d* xy, double* yaw) {
   *xy = p.head<2>();
 }
 
-// a task whose env 0 starts holding the box (seed 3), and its pelvis position and heading
+// a task whose env 0 starts holding the box (seed 3: held at the lift's last instant), and its
+// pelvis position and heading
 struct Holding {
   std::unique_ptr<CarryTask> t;
   Eigen::Vector2d xy;
@@ -68,6 +69,9 @@ core::StatusOr<Holding> HoldingTheBox() {
   std::vector<float> obs(h.t->obs_dim());
   h.t->Reset(0, 3, obs.data());
   Pelvis(*h.t, &h.xy, &h.yaw);
+  if (h.t->state(0).phase != CarryPhase::kLift) {
+    return absl::FailedPreconditionError("a held start is not at the lift's last instant");
+  }
   return h;
 }
 
@@ -77,10 +81,8 @@ core::StatusOr<Holding> HoldingTheBox() {
 TEST(CarryPhases, HoldingTheBoxAtTheStandPointStartsThePutDownWhateverTheHeading) {
   core::StatusOr<Holding> h = HoldingTheBox();
   ASSERT_TRUE(h.ok()) << h.status();
-  CarryTask* t = h->t.get();
-  ASSERT_EQ(t->state(0).phase, CarryPhase::kLift);  // held: the lift's last instant
-  const Eigen::Vector2d xy = h->xy;
-  const double yaw = h->yaw;
+  const auto& [task, xy, yaw] = *h;
+  CarryTask* t = task.get();
   const double dwell_s = t->params().arrive_dwell_s;
   for (double heading_err : {0.0, 0.5, M_PI / 2, M_PI}) {
     for (double off_m : {0.1, 0.3}) {
@@ -116,10 +118,8 @@ TEST(CarryPhases, HoldingTheBoxAtTheStandPointStartsThePutDownWhateverTheHeading
 TEST(CarryPhases, TheHeldBoxOverTheDestinationStartsThePutDown) {
   core::StatusOr<Holding> h = HoldingTheBox();
   ASSERT_TRUE(h.ok()) << h.status();
-  CarryTask* t = h->t.get();
-  ASSERT_EQ(t->state(0).phase, CarryPhase::kLift);  // held: the lift's last instant
-  const Eigen::Vector2d xy = h->xy;
-  const double yaw = h->yaw;
+  const auto& [task, xy, yaw] = *h;
+  CarryTask* t = task.get();
   for (double box_off_m : {0.1, 0.25}) {
     Frozen f(*t);
     const control::CarryBox box = control::ReadCarryBox(f.m, f.d, t->box_geom());

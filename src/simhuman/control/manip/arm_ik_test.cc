@@ -87,11 +87,7 @@ struct ArmAtTable {
 
 TEST(ArmIkTest, ThePalmReachesASideGraspOfAnObjectOnTheTable) {
   ArmAtTable at;
-  const ArmChain& arm = at.arm;
-  const mjModel* m = at.m;
-  mjData* d = at.d;
-  const Eigen::VectorXd& rest = at.rest;
-  const Eigen::Vector3d& centre = at.centre;
+  auto& [t, arm, m, d, rest, centre] = at;
   int solved = 0, free = 0;
   for (int k = 0; k < 8; ++k) {
     const double yaw = -M_PI / 2 + k * M_PI / 8;  // approaches from the right and the front
@@ -121,11 +117,7 @@ TEST(ArmIkTest, ThePalmReachesASideGraspOfAnObjectOnTheTable) {
 // turn is reached at another turn about the object's vertical, and only turned
 TEST(ArmIkTest, APoseFreeInYawIsReachedAtSomeTurnAboutItsVertical) {
   ArmAtTable at;
-  const ArmChain& arm = at.arm;
-  const mjModel* m = at.m;
-  mjData* d = at.d;
-  const Eigen::VectorXd& rest = at.rest;
-  const Eigen::Vector3d& centre = at.centre;
+  auto& [t, arm, m, d, rest, centre] = at;
   int fixed_misses = 0;
   for (int k = 0; k < 16; ++k) {
     const double yaw = -M_PI + k * M_PI / 8;
