@@ -407,6 +407,26 @@ TEST(OfflinePlannerTest, ImpliedGetCloseAndStandUp) {
             "laptop001|keyboard|right hand|contact|none");
 }
 
+// a seat within reach is sat on from where the human stands unless another part of the seat
+// (a chair's back, a sofa's arm) lies on the straight way to it: then the walk round to its
+// front comes first
+TEST(OfflinePlannerTest, ASeatWhoseBackIsInTheWayIsWalkedRoundToItsFront) {
+  Fixture f = Load("sit_demo");
+  const std::string sit = "chair000|seat surface|pelvis|contact|up";
+  const std::string walk = "chair000|none|none|none|front / " + sit;
+  struct Start {
+    double x, y;
+    std::string want;
+  };
+  for (const Start& s : {Start{0.6, 0.0, sit}, Start{-0.6, 0.0, walk}, Start{-0.5, 0.15, walk},
+                         Start{0.0, 0.7, sit}, Start{0.3, 0.6, sit}}) {
+    f.context.agents[0] = {s.x, s.y, 0.0, "stand"};
+    core::StatusOr<PlanResult> r = OfflinePlanner().Plan("sit on the chair", f.context);
+    ASSERT_TRUE(r.ok()) << r.status();
+    EXPECT_EQ(Compact(r->chain), s.want) << "start " << s.x << ", " << s.y;
+  }
+}
+
 TEST(OfflinePlannerTest, Pronouns) {
   EXPECT_EQ(PlanText("living_room", "walk to the sofa and sit on it"),
             "sofa005|none|none|none|front / sofa005|seat surface|pelvis|contact|up");

@@ -28,7 +28,6 @@ struct WalkPolicyController::Impl {
   // facing far from the route's way (a start facing elsewhere, a sharp corner): turn on the spot
   // first, as a person does; walking off in a wide arc swung the hands into a table's edge
   bool turning = false;
-  Eigen::Vector2d turn_spot = Eigen::Vector2d::Zero();
   // leaving a cramped start (stood up between a chair and a table): a short step, heading kept,
   // to the first point of the route with room to turn
   bool exiting = false;
@@ -109,13 +108,13 @@ void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
       PelvisPose(obs.data, ix, &pos, &yaw);
       const Eigen::Vector2d way = carrot.point - here;
       const double off = std::abs(core::WrapAngle(std::atan2(way.y(), way.x()) - yaw));
-      if (!turning && off > kTurnFirstRad) {
-        turning = true;
-        turn_spot = here;
-      }
+      if (!turning && off > kTurnFirstRad) turning = true;
       if (turning && off < kTurnDoneRad) turning = false;
-      state.target_xy = turning ? turn_spot : carrot.point;
-      state.target_yaw_rad = turning ? std::atan2(way.y(), way.x()) : carrot.heading_rad;
+      // face the carrot (not the route's heading there: a walk that starts within the short
+      // step range keeps its heading, and would walk sideways into furniture beside the route);
+      // turning, the target is the walker's own place, wherever the turn has moved it
+      state.target_xy = turning ? here : carrot.point;
+      state.target_yaw_rad = std::atan2(way.y(), way.x());
       return;
     }
     turning = false;

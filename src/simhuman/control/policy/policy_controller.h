@@ -58,8 +58,8 @@ class WalkPolicyController : public Controller {
   /// walk point's heading within kFinalTurnM of it (until pushed 2 x kFinalTurnM away).
   static constexpr double kFinalTurnM = 0.35;
   static constexpr double kRouteLookaheadM = 1.2;
-  /// Facing more than this away from the route's carrot, the walker turns on the spot until
-  /// within kTurnDoneRad of it, then walks
+  /// Facing more than this away from the route's carrot, the walker turns on the spot (target:
+  /// where it stands now) until within kTurnDoneRad of it, then walks facing the carrot
   static constexpr double kTurnFirstRad = 1.0;
   static constexpr double kTurnDoneRad = 0.35;
   static constexpr double kReplanOffRouteM = 0.8;

@@ -17,6 +17,28 @@ double CentreDistance(const CatalogObject& a, const CatalogObject& b) {
   return std::hypot(a.pose.pos.x() - b.pose.pos.x(), a.pose.pos.y() - b.pose.pos.y());
 }
 
+bool PartBlocksTheWay(const CatalogObject& o, const std::string& to, Point2 p) {
+  const core::CatalogPart* target = o.FindPart(to);
+  if (target == nullptr) return false;
+  const Eigen::Vector3d goal = o.pose.Apply(target->shapes.front().pose.pos);
+  const Eigen::Vector2d from(p.x, p.y);
+  const double len = (goal.head<2>() - from).norm();
+  const int n = std::max(1, static_cast<int>(std::ceil(len / 0.02)));
+  for (const core::CatalogPart& part : o.parts) {
+    if (&part == target) continue;
+    for (const core::Shape& shape : part.shapes) {
+      // the way at the height of this shape's centre
+      const double z = o.pose.Apply(shape.pose.pos).z();
+      for (int k = 0; k <= n; ++k) {
+        const Eigen::Vector2d q = from + (goal.head<2>() - from) * (static_cast<double>(k) / n);
+        const Eigen::Vector3d w(q.x(), q.y(), z);
+        if ((core::NearestPointOnShape(shape, o.pose, w) - w).norm() < 1e-9) return true;
+      }
+    }
+  }
+  return false;
+}
+
 double Volume(const CatalogObject& o) {
   if (o.shapes.empty()) return 0.0;
   const auto [lo, hi] = o.LocalBounds();

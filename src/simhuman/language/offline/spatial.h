@@ -27,6 +27,10 @@ struct Point2 {
 double FootprintDistance(const CatalogObject& o, Point2 p);
 /// Horizontal distance (m) between the origins of `a` and `b`.
 double CentreDistance(const CatalogObject& a, const CatalogObject& b);
+/// Whether the straight way (horizontal) from `p` to the centre of the object's part `to`
+/// passes through another named part of it (a sofa's arm or a chair's back between the human
+/// and the seat). False when the object has no part `to`.
+bool PartBlocksTheWay(const CatalogObject& o, const std::string& to, Point2 p);
 /// Volume (m^3) of the object's local bounding box; 0 without shapes.
 double Volume(const CatalogObject& o);
 /// Height (m) of the object's local bounding box; 0 without shapes.

@@ -82,7 +82,10 @@ void Session::EnsureFree(const CatalogObject* target) {
 void Session::EnsureNear(const CatalogObject& target) {
   if (posture_ != Posture::kStand) return;
   // moving from one object to another always walks to the next one (even a near one)
-  if (!left_seat_ && FootprintDistance(target, pos_) <= kNearEnoughM) return;
+  if (!left_seat_ && FootprintDistance(target, pos_) <= kNearEnoughM &&
+      !PartBlocksTheWay(target, "seat surface", pos_)) {
+    return;
+  }
   AddGetClose(target, Direction::kFront, "get close to " + Describe(target) + " (front)");
 }
 
