@@ -172,7 +172,10 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
         d->time, tilt(g.object_body), tilt(g.support_body), turned, slip,
         d->xipos[3 * g.object_body], d->xipos[3 * g.object_body + 1],
         d->xipos[3 * g.object_body + 2], f_hand.x(), f_hand.y(), f_hand.z(), n_hand);
-    if (a.trace_contacts) std::printf("    palm z %.3f\n", d->site_xpos[3 * ix.arm.palm_site + 2]);
+    if (a.trace_contacts) {
+      const mjtNum* palm = d->site_xpos + 3 * ix.arm.palm_site;
+      std::printf("    palm (%.3f %.3f %.3f)\n", palm[0], palm[1], palm[2]);
+    }
     if (a.trace_arm) {
       std::printf("     arm q");
       for (int j = 0; j < 7; ++j) std::printf(" %6.2f", d->qpos[ix.arm.qpos[j]]);
@@ -228,6 +231,7 @@ int main(int argc, char** argv) {
     if (a.rot_weight > 0) so.ik_rot_weight_m = a.rot_weight;
     const sh::control::manip::GraspPolicyFactory grasp =
         [&](const sh::control::manip::TabletopGoal& at) {
+          if (a.trace_from >= 0) std::printf("  grasp begins at t %.2f\n", (*w)->data()->time);
           return sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, at, pipeline, so);
         };
     std::unique_ptr<sh::render::OffscreenRenderer> r;
