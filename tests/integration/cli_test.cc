@@ -200,6 +200,23 @@ TEST(CliIntegrationTest, AHumanBesideTheSofasArmWalksRoundToItsFrontAndSits) {
   EXPECT_TRUE(r["success"].get<bool>()) << p.out;
 }
 
+// standing up from the living room's armchair: the rise ends 0.3 m from the stand point, the
+// walker finishes the step facing away from the armchair. Before: the walker's exit step
+// stopped 0.15 m from its point, inside the policy's start radius, and stood there until the
+// time-out; with that fixed, the walker turned round towards the armchair and fell back into it
+TEST(CliIntegrationTest, GettingUpFromTheArmchairStepsForwardAwayFromIt) {
+  std::string out = TempDir("armchair_stand");
+  Proc p =
+      RunBin({"run", "--scene", "living_room", "--command", "sit on the armchair, then stand up",
+              "--preset", "fast", "--settle", "0", "--out", out});
+  ASSERT_EQ(p.exit_code, 0) << p.err;
+  std::ifstream in(out + "/result.json");
+  nlohmann::json r = nlohmann::json::parse(in);
+  EXPECT_FALSE(r["fell"].get<bool>()) << p.out;
+  EXPECT_TRUE(r["success"].get<bool>()) << p.out;
+  EXPECT_TRUE(r["standing_at_end"].get<bool>()) << p.out;
+}
+
 // the demo's getting up (issue 21): it completes, without sinking back onto the seat on the
 // way up (a staggered rise) and without extra steps
 TEST(CliIntegrationTest, DemoGetsUpFromTheChairWithoutStaggeringSlow) {

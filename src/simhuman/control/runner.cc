@@ -146,6 +146,10 @@ class EpisodeLoop {
         StepTask next = BuildStepTask(chain_.steps[step + 1], catalog_, a, scale, options_.pair);
         RefineApproach(next, scale, &tasks_[a]);
       }
+      if (tasks_[a].get_close && step > 0) {
+        RefineLeaving(BuildStepTask(chain_.steps[step - 1], catalog_, a, scale, options_.pair),
+                      &tasks_[a]);
+      }
       if (tasks_[a].get_close) {
         // a stand point inside furniture (a chair pushed under a table): stand in the gap
         const StepTask& t = tasks_[a];

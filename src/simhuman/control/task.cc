@@ -132,6 +132,14 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
   return task;
 }
 
+void RefineLeaving(const StepTask& prev, StepTask* gc) {
+  if (!gc->get_close || gc->focus == nullptr || prev.focus != gc->focus ||
+      prev.posture == Posture::kStand || gc->side != plan::Direction::kFront) {
+    return;
+  }
+  gc->walk_yaw_rad = std::remainder(gc->stand_yaw_rad + M_PI, 2.0 * M_PI);
+}
+
 void RefineApproach(const StepTask& next, double scale, StepTask* gc) {
   if (!gc->get_close || gc->focus == nullptr || next.focus != gc->focus) return;
   const core::CatalogObject& obj = *gc->focus;

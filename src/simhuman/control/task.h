@@ -70,6 +70,11 @@ struct StepTask {
 /// moves (at most kReachMaxShiftM) so that the part's point is kReachAheadM ahead and
 /// kReachAcrossM to that hand's side, still facing the object. No-op otherwise.
 void RefineApproach(const StepTask& next, double scale, StepTask* get_close);
+/// Adapts a get-close step that leaves the seat or bed `prev` rests on (standing up from it, the
+/// stand point in front of it): the walk heading faces away from the object, as the human faces
+/// when it rises, so a walker finishing the step does not turn round towards the seat it left
+/// (the plan's get-close test is position only by default). No-op otherwise.
+void RefineLeaving(const StepTask& prev, StepTask* get_close);
 inline constexpr double kSitStartM = 0.36;
 inline constexpr double kLieStartFromPillowM = 0.65;
 inline constexpr double kReachAheadM = 0.45;

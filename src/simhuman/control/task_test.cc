@@ -116,5 +116,30 @@ TEST(RefineApproach, LeavesOtherStepsAlone) {
   EXPECT_EQ(gc.walk_yaw_rad, gc.stand_yaw_rad);
 }
 
+// standing up from a seat or bed: the walk heading faces away from it (the way the human faces
+// when it rises), the walk point stays; other steps before a get-close step change nothing
+TEST(RefineLeaving, StandingUpFromASeatFacesAwayFromIt) {
+  const core::CatalogObject chair = Built("chair", 1, 2, 30);
+  const core::CatalogObject sofa = Built("sofa", 4, 0, 0);
+  for (Posture p : {Posture::kSit, Posture::kLieBack}) {
+    StepTask gc = GetCloseFront(chair);
+    StepTask seated;
+    seated.focus = &chair;
+    seated.posture = p;
+    RefineLeaving(seated, &gc);
+    EXPECT_NEAR(AngleDiff(gc.walk_yaw_rad, gc.stand_yaw_rad), M_PI, 1e-9);
+    EXPECT_EQ(gc.walk_point, gc.stand_point);
+  }
+  StepTask gc = GetCloseFront(chair);
+  StepTask standing;
+  standing.focus = &chair;
+  RefineLeaving(standing, &gc);
+  StepTask on_sofa;
+  on_sofa.focus = &sofa;
+  on_sofa.posture = Posture::kSit;
+  RefineLeaving(on_sofa, &gc);
+  EXPECT_EQ(gc.walk_yaw_rad, gc.stand_yaw_rad);
+}
+
 }  // namespace
 }  // namespace simhuman::control

@@ -79,7 +79,11 @@ struct MotionMetrics {
   // seat-off, the last frame before that within 2 cm x scale of the seated minimum (an attempt
   // that sinks back to seated height is sitting again: only the rise after it counts)
   int rises = 0;
-  double rise_s = NAN;            ///< mean seat-off to standing time
+  double rise_s = NAN;  ///< mean seat-off to standing time
+  /// Mean time from the start of the trunk's forward lean before seat-off (the last frame within
+  /// kLeanOnsetRad of the least lean in the kLeanLookBackS before seat-off) to standing: the
+  /// whole stand-up, as sit-to-stand durations are timed
+  double sit_to_stand_s = NAN;
   double rise_extra_steps = NAN;  ///< mean foot strikes during a rise
   int rises_staggered = 0;        ///< rises where the pelvis sank back 5 cm x scale on the way
   int rises_clean = 0;            ///< rises with no step and no sinking back

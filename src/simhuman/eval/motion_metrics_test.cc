@@ -97,7 +97,8 @@ TEST(MotionMetricsTest, NormsJudgeAChildAfterFroudeScaling) {
 }
 
 // seated (pelvis 0.55 m) for 1 s, then up to 0.93 m in `rise` s (sinking back about 10 cm near
-// the top when `sink`, not down to seated height), then standing; feet planted
+// the top when `sink`, not down to seated height), then standing; feet planted; the trunk leans
+// forward from 0.6 s (0.5 rad by 1.2 s) and straightens as the pelvis rises
 std::vector<MotionSample> SitToStand(double rise, bool sink) {
   std::vector<MotionSample> frames;
   for (int i = 0; i < 150; ++i) {
@@ -107,6 +108,7 @@ std::vector<MotionSample> SitToStand(double rise, bool sink) {
     double z = 0.55 + 0.38 * u;
     if (sink && u > 0.75 && u < 0.95) z -= 0.14 * std::sin(M_PI * (u - 0.75) / 0.2);
     s.pelvis = Eigen::Vector3d(0, 0, z);
+    s.trunk_pitch_rad = 0.5 * std::clamp((s.time_s - 0.6) / 0.6, 0.0, 1.0) * (1.0 - u);
     for (int side = 0; side < 2; ++side) s.foot[side] = Eigen::Vector3d(0.2, 0.1 - 0.2 * side, 0);
     frames.push_back(s);
   }
@@ -118,13 +120,20 @@ TEST(MotionMetricsTest, GettingUpIsTimedFromSeatOffAndSinkingBackIsCounted) {
   EXPECT_EQ(m.rises, 1);
   // 0.88 m is reached 1.30 s after the rise starts; seat-off (2 cm up) 0.08 s after it
   EXPECT_NEAR(m.rise_s, 1.30 - 0.08, 0.05);
+  // the whole stand-up from the lean's start (3 degrees past the seated lean, at 0.66 s) to
+  // standing (2.30 s)
+  EXPECT_NEAR(m.sit_to_stand_s, 2.30 - 0.66, 0.05);
   EXPECT_EQ(m.rise_extra_steps, 0);
   EXPECT_EQ(m.rises_clean, 1);
   const MotionMetrics s = ComputeMotionMetrics(SitToStand(2.0, true), 1.0);
   EXPECT_EQ(s.rises, 1);
   EXPECT_EQ(s.rises_staggered, 1);
   EXPECT_EQ(s.rises_clean, 0);
-  EXPECT_TRUE(MotionMetricsJson(m)["norms"]["rise_s"]["ok"].get<bool>());
+  EXPECT_TRUE(MotionMetricsJson(m)["norms"]["sit_to_stand_s"]["ok"].get<bool>());
+  // a quick stand-up is below the norm
+  EXPECT_FALSE(MotionMetricsJson(ComputeMotionMetrics(SitToStand(0.5, false),
+                                                      1.0))["norms"]["sit_to_stand_s"]["ok"]
+                   .get<bool>());
   // standing all along is no rise
   EXPECT_EQ(ComputeMotionMetrics(SyntheticWalk(0.0, 1.0, 5.0, 0.0), 1.0).rises, 0);
 }

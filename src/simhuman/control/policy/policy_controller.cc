@@ -96,7 +96,10 @@ void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
         carrot.final = true;
       }
     }
-    if (exiting && (here - exit_point).norm() > kExitDoneM) {
+    // the exit step ends within kExitDoneM of its point, or standing within the policy's start
+    // radius of it (the policy takes no step for that: it would stand there for good)
+    const double to_exit = (here - exit_point).norm();
+    if (exiting && to_exit > kExitDoneM && (state.stepping || to_exit > params.start_radius_m)) {
       state.target_xy = exit_point;
       state.target_yaw_rad = exit_yaw_rad;
       return;
