@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <queue>
 
@@ -345,6 +346,12 @@ Eigen::Vector2d RouteFollower::PointAt(double s, double* heading) const {
   return p[k] + u * d;
 }
 
+Eigen::Vector2d RouteFollower::PointAhead(double ahead_m) const {
+  if (empty()) return Eigen::Vector2d::Zero();
+  double heading;
+  return PointAt(std::min(progress_m_ + ahead_m, cum_.back()), &heading);
+}
+
 RouteFollower::Carrot RouteFollower::Update(const Eigen::Vector2d& w) {
   Carrot out;
   if (empty()) return out;
@@ -388,6 +395,34 @@ RouteFollower::Carrot RouteFollower::Update(const Eigen::Vector2d& w) {
   }
   out.point = PointAt(s, &out.heading_rad);
   return out;
+}
+
+double WayClearance(const core::SceneCatalog& scene, const NavConfig& config,
+                    const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const double len = (b - a).norm();
+  double least = std::numeric_limits<double>::infinity();
+  for (double t = kCarrotSkipM; t <= len; t += kCarrotProbeM) {
+    least = std::min(least, PointClearance(scene, a + (b - a) * (t / len), config));
+  }
+  return least;
+}
+
+Eigen::Vector2d ClearCarrot(const core::SceneCatalog& scene, const NavConfig& config,
+                            const RouteFollower& follower, const Eigen::Vector2d& here,
+                            const Eigen::Vector2d& carrot, double lookahead_m) {
+  if (follower.empty()) return carrot;
+  // as much room as the route itself has there, up to kCarrotClearM
+  double route_room = kCarrotClearM;
+  for (double s = 0; s <= lookahead_m; s += kCarrotProbeM) {
+    route_room = std::min(route_room, PointClearance(scene, follower.PointAhead(s), config));
+  }
+  const double need = route_room - kCarrotSlackM;
+  if (WayClearance(scene, config, here, carrot) >= need) return carrot;
+  for (double ahead : kCarrotFallbackM) {
+    const Eigen::Vector2d p = follower.PointAhead(ahead);
+    if (WayClearance(scene, config, here, p) >= need) return p;
+  }
+  return follower.PointAhead(kCarrotFallbackM[std::size(kCarrotFallbackM) - 1]);
 }
 
 }  // namespace simhuman::control

@@ -117,6 +117,8 @@ class RouteFollower {
   };
   /// Updates the progress with the walker at `p` and returns the carrot.
   Carrot Update(const Eigen::Vector2d& p);
+  /// The route's point `ahead_m` beyond the walker's progress (at most its end), after Update().
+  Eigen::Vector2d PointAhead(double ahead_m) const;
 
  private:
   Eigen::Vector2d PointAt(double s, double* heading) const;
@@ -125,5 +127,27 @@ class RouteFollower {
   double lookahead_m_ = 1.2;
   double progress_m_ = 0;
 };
+
+/// The carrot is pulled back along the route (to kCarrotFallbackM ahead of the walker's
+/// progress, the first with room) when the straight way to it has less clearance than the
+/// route's next `lookahead` (up to kCarrotClearM), less kCarrotSlackM; the way is probed every
+/// kCarrotProbeM from kCarrotSkipM past the walker (whose own spot may be near furniture).
+inline constexpr double kCarrotClearM = 0.3;
+inline constexpr double kCarrotSlackM = 0.03;
+inline constexpr double kCarrotProbeM = 0.1;
+inline constexpr double kCarrotSkipM = 0.2;
+inline constexpr double kCarrotFallbackM[] = {0.9, 0.6, 0.4};
+
+/// The least clearance (PointClearance) along the straight way from `a` to `b`, probed every
+/// kCarrotProbeM from kCarrotSkipM past `a`; infinity for a way shorter than that.
+double WayClearance(const core::SceneCatalog& scene, const NavConfig& config,
+                    const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+
+/// `carrot` (from `follower`'s last Update() at `here`), or a nearer point of its route when
+/// the straight way to the carrot has less room than the route itself: pure pursuit cuts
+/// corners, and round a stool or a bed's corner it cuts through them.
+Eigen::Vector2d ClearCarrot(const core::SceneCatalog& scene, const NavConfig& config,
+                            const RouteFollower& follower, const Eigen::Vector2d& here,
+                            const Eigen::Vector2d& carrot, double lookahead_m = 1.2);
 
 }  // namespace simhuman::control

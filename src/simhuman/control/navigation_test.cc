@@ -181,5 +181,26 @@ TEST(Navigation, NearTheEndTheFollowerAimsAtTheLastCornerNotThroughIt) {
   EXPECT_NEAR((c.point - Eigen::Vector2d(1, 0.2)).norm(), 0, 1e-9);
 }
 
+// pure pursuit cuts corners: where the straight way to the carrot passes a block inside the
+// turn closer than the route does, the carrot comes back along the route to a point the walker
+// can head for in a straight line; in the open it stays
+TEST(Navigation, TheCarrotComesBackWhenTheWayToItCutsACornerThroughABlock) {
+  NavPath path;
+  path.points = {{0, 0}, {2, 0}, {2, 2}};
+  core::SceneCatalog scene;
+  scene.objects.push_back(Block("stool000", 1.5, 0.6, 0.2, 0.2));
+  NavConfig cfg;
+  RouteFollower f(path, 1.2);
+  const Eigen::Vector2d here(1.2, 0);
+  const auto c = f.Update(here);
+  EXPECT_NEAR((c.point - Eigen::Vector2d(2, 0.4)).norm(), 0, 1e-9);
+  EXPECT_LT(WayClearance(scene, cfg, here, c.point), 0.25);
+  const Eigen::Vector2d p = ClearCarrot(scene, cfg, f, here, c.point, 1.2);
+  EXPECT_NEAR((p - f.PointAhead(0.9)).norm(), 0, 1e-9);
+  EXPECT_GE(WayClearance(scene, cfg, here, p), kCarrotClearM - kCarrotSlackM);
+  // nothing in the way: the carrot stays
+  EXPECT_EQ(ClearCarrot(core::SceneCatalog(), cfg, f, here, c.point, 1.2), c.point);
+}
+
 }  // namespace
 }  // namespace simhuman::control

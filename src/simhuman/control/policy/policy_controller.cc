@@ -106,6 +106,8 @@ void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
     }
     exiting = false;
     if (!carrot.final) {
+      carrot.point =
+          ClearCarrot(obs.world->catalog(), nav, follower, here, carrot.point, kRouteLookaheadM);
       Eigen::Vector3d pos;
       double yaw;
       PelvisPose(obs.data, ix, &pos, &yaw);

@@ -63,6 +63,8 @@ class WalkPolicyController : public Controller {
   static constexpr double kTurnFirstRad = 1.0;
   static constexpr double kTurnDoneRad = 0.35;
   static constexpr double kReplanOffRouteM = 0.8;
+  // the carrot is pulled back where the straight way to it has less room than the route
+  // (navigation.h ClearCarrot)
   /// A route that starts with less than kExitRoomM of room (PointClearance: stood up between a
   /// chair and a table) begins with a short step, heading kept (sideways or back), to its first
   /// point with that room, searched every kExitProbeM within kMaxExitM; the step ends within
