@@ -411,13 +411,16 @@ Eigen::Vector2d ClearCarrot(const core::SceneCatalog& scene, const NavConfig& co
                             const RouteFollower& follower, const Eigen::Vector2d& here,
                             const Eigen::Vector2d& carrot, double lookahead_m) {
   if (follower.empty()) return carrot;
+  // a way with kCarrotClearM of room needs no look at the route (the open floor, most ticks)
+  const double way_room = WayClearance(scene, config, here, carrot);
+  if (way_room >= kCarrotClearM - kCarrotSlackM) return carrot;
   // as much room as the route itself has there, up to kCarrotClearM
   double route_room = kCarrotClearM;
   for (double s = 0; s <= lookahead_m; s += kCarrotProbeM) {
     route_room = std::min(route_room, PointClearance(scene, follower.PointAhead(s), config));
   }
   const double need = route_room - kCarrotSlackM;
-  if (WayClearance(scene, config, here, carrot) >= need) return carrot;
+  if (way_room >= need) return carrot;
   for (double ahead : kCarrotFallbackM) {
     const Eigen::Vector2d p = follower.PointAhead(ahead);
     if (WayClearance(scene, config, here, p) >= need) return p;

@@ -57,14 +57,14 @@ class WalkPolicyController : public Controller {
   /// On the last stretch the policy walks forwards, facing the walk point, and turns to the
   /// walk point's heading within kFinalTurnM of it (until pushed 2 x kFinalTurnM away).
   static constexpr double kFinalTurnM = 0.35;
+  /// The carrot's lead on the route; nearer where the straight way to it has less room than the
+  /// route (navigation.h ClearCarrot)
   static constexpr double kRouteLookaheadM = 1.2;
   /// Facing more than this away from the route's carrot, the walker turns on the spot (target:
   /// where it stands now) until within kTurnDoneRad of it, then walks facing the carrot
   static constexpr double kTurnFirstRad = 1.0;
   static constexpr double kTurnDoneRad = 0.35;
   static constexpr double kReplanOffRouteM = 0.8;
-  // the carrot is pulled back where the straight way to it has less room than the route
-  // (navigation.h ClearCarrot)
   /// A route that starts with less than kExitRoomM of room (PointClearance: stood up between a
   /// chair and a table) begins with a short step, heading kept (sideways or back), to its first
   /// point with that room, searched every kExitProbeM within kMaxExitM; the step ends within
