@@ -171,7 +171,7 @@ TEST(CliIntegrationTest, SitDemoEndToEnd) {
 
 // the README's first command: the walk to the sofa passes a table and a chair. The walker used
 // to set off from facing 90 degrees away in a wide arc, hit the table's edge with its right hand
-// and fall at 3.9 s; it now turns on the spot first (WalkPolicyController::kTurnFirstRad)
+// and fall at 3.9 s; it now turns on the spot first (route_steer.h kTurnFirstRad)
 TEST(CliIntegrationTest, ReadmeCommandWalksPastTheTableAndSitsOnTheSofa) {
   std::string out = TempDir("readme_sofa");
   Proc p = RunBin({"run", "--scene", "living_room", "--command", "sit on the sofa", "--preset",

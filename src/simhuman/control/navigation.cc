@@ -428,4 +428,19 @@ Eigen::Vector2d ClearCarrot(const core::SceneCatalog& scene, const NavConfig& co
   return follower.PointAhead(kCarrotFallbackM[std::size(kCarrotFallbackM) - 1]);
 }
 
+Eigen::Vector2d SlowForTurn(const RouteFollower& follower, const Eigen::Vector2d& here,
+                            const Eigen::Vector2d& carrot, double lookahead_m) {
+  if (follower.empty()) return carrot;
+  const Eigen::Vector2d way = carrot - here;
+  const Eigen::Vector2d beyond = follower.PointAhead(lookahead_m + kTurnSlowLookM) - carrot;
+  const double dist = way.norm();
+  if (dist <= kTurnSlowMinM || beyond.norm() < 1e-3) return carrot;
+  const double bend = std::acos(std::clamp(way.normalized().dot(beyond.normalized()), -1.0, 1.0));
+  if (bend <= kTurnSlowFromRad) return carrot;
+  // from the full lead at kTurnSlowFromRad down to kTurnSlowMinM at a right angle
+  const double f =
+      std::clamp(1.0 - (bend - kTurnSlowFromRad) / (0.5 * M_PI - kTurnSlowFromRad), 0.0, 1.0);
+  return here + way * ((kTurnSlowMinM + f * (dist - kTurnSlowMinM)) / dist);
+}
+
 }  // namespace simhuman::control

@@ -150,4 +150,17 @@ Eigen::Vector2d ClearCarrot(const core::SceneCatalog& scene, const NavConfig& co
                             const RouteFollower& follower, const Eigen::Vector2d& here,
                             const Eigen::Vector2d& carrot, double lookahead_m = 1.2);
 
+/// People slow down for a turn. Where the route bends more than kTurnSlowFromRad between the
+/// way to the carrot and the next kTurnSlowLookM of route beyond it, the carrot comes nearer
+/// along the way to it (the walker's speed command falls with the distance to its target), down
+/// to kTurnSlowMinM ahead at a right angle or more.
+inline constexpr double kTurnSlowFromRad = 0.4;
+inline constexpr double kTurnSlowLookM = 1.0;
+inline constexpr double kTurnSlowMinM = 0.6;
+
+/// `carrot` (after `follower`'s last Update() at `here`, `lookahead_m` ahead on the route), or
+/// a nearer point on the way to it before a bend of the route (kTurnSlowFromRad).
+Eigen::Vector2d SlowForTurn(const RouteFollower& follower, const Eigen::Vector2d& here,
+                            const Eigen::Vector2d& carrot, double lookahead_m = 1.2);
+
 }  // namespace simhuman::control

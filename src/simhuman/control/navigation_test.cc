@@ -202,5 +202,37 @@ TEST(Navigation, TheCarrotComesBackWhenTheWayToItCutsACornerThroughABlock) {
   EXPECT_EQ(ClearCarrot(core::SceneCatalog(), cfg, f, here, c.point, 1.2), c.point);
 }
 
+// on a straight route the carrot keeps its lead; before a right-angle corner it comes to
+// kTurnSlowMinM ahead on the way to it (the walker slows for the turn); a gentle bend in between
+TEST(Navigation, TheCarrotComesNearerBeforeATurn) {
+  NavPath straight;
+  straight.points = {{0, 0}, {6, 0}};
+  RouteFollower s(straight, 1.2);
+  const Eigen::Vector2d here(1, 0);
+  const auto cs = s.Update(here);
+  EXPECT_EQ(SlowForTurn(s, here, cs.point, 1.2), cs.point);
+  NavPath corner;
+  corner.points = {{0, 0}, {2.5, 0}, {2.5, 3}};
+  RouteFollower c(corner, 1.2);
+  const Eigen::Vector2d at(1.3, 0);
+  const auto cc = c.Update(at);
+  ASSERT_NEAR((cc.point - Eigen::Vector2d(2.5, 0)).norm(), 0, 1e-9);
+  const Eigen::Vector2d slow = SlowForTurn(c, at, cc.point, 1.2);
+  EXPECT_NEAR((slow - at).norm(), kTurnSlowMinM, 1e-9);
+  EXPECT_NEAR(slow.y(), 0, 1e-9);  // on the way to the carrot
+  NavPath bend;
+  bend.points = {{0, 0}, {2.5, 0}, {4.5, 0.6}};  // about 17 degrees: below kTurnSlowFromRad
+  RouteFollower b(bend, 1.2);
+  const auto cb = b.Update(at);
+  EXPECT_EQ(SlowForTurn(b, at, cb.point, 1.2), cb.point);
+  NavPath wide;
+  wide.points = {{0, 0}, {2.5, 0}, {3.5, 1.5}};  // about 56 degrees: part of the lead
+  RouteFollower w(wide, 1.2);
+  const auto cw = w.Update(at);
+  const double lead = (SlowForTurn(w, at, cw.point, 1.2) - at).norm();
+  EXPECT_GT(lead, kTurnSlowMinM + 0.05);
+  EXPECT_LT(lead, 1.2 - 0.05);
+}
+
 }  // namespace
 }  // namespace simhuman::control

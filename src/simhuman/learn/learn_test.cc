@@ -136,6 +136,44 @@ TEST(WalkTask, ObservationsFiniteRewardPositiveFallDetectedIntegration) {
   EXPECT_TRUE(fell);
 }
 
+// with routes, the target is steered along a random route as the walking controller steers in
+// scenes: at a carrot up to kRouteLookaheadM ahead facing it, or (turning first) where the human
+// stands; without, every target is straight
+TEST(WalkTask, RouteTargetsAreSteeredAsInScenesIntegration) {
+  auto task = WalkTask::Create(1);
+  ASSERT_TRUE(task.ok()) << task.status();
+  WalkTask& t = **task;
+  std::vector<float> obs(control::kWalkObsDim), act(control::kWalkActDim, 0.f);
+  t.Reset(0, 3, obs.data());
+  EXPECT_FALSE(t.on_route(0));
+  t.set_route_share(1.0);
+  int turning = 0, walking = 0;
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    t.Reset(0, seed, obs.data());
+    ASSERT_TRUE(t.on_route(0));
+    // the human's root body (its pelvis) is the first after the world's
+    const mjtNum* pelvis = t.data(0)->xpos + 3 * t.model()->jnt_bodyid[0];
+    const Eigen::Vector2d here(pelvis[0], pelvis[1]);
+    const double to_target = (t.state(0).target_xy - here).norm();
+    if (to_target < 0.1) {
+      ++turning;
+    } else {
+      ++walking;
+      // the carrot's lead, or nearer before a turn (control::SlowForTurn)
+      EXPECT_LE(to_target, control::kRouteLookaheadM + 0.05);
+      EXPECT_GE(to_target, control::kTurnSlowMinM - 0.05);
+      const Eigen::Vector2d way = t.state(0).target_xy - here;
+      EXPECT_NEAR(t.state(0).target_yaw_rad, std::atan2(way.y(), way.x()), 1e-9);
+    }
+    StepInfo info;
+    for (int k = 0; k < 5; ++k) t.Step(0, act.data(), obs.data(), &info);
+    EXPECT_TRUE(t.on_route(0));
+  }
+  // first legs point anywhere: some start by turning on the spot, some walk off at once
+  EXPECT_GT(turning, 0);
+  EXPECT_GT(walking, 0);
+}
+
 // the reward weights reach the task: a narrower gait term scores the same state lower, and a
 // zero weight leaves it out of the total
 TEST(WalkTask, RewardWeightsShapeTheGaitTermIntegration) {

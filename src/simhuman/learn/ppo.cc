@@ -45,6 +45,7 @@ TaskOptions OptionsOf(const PpoConfig& c) {
   o.walk_gait_weight = c.walk_gait_weight;
   o.walk_gait_width = c.walk_gait_width;
   o.walk_foot_slip_weight = c.walk_foot_slip_weight;
+  o.walk_route_share = c.walk_route_share;
   return o;
 }
 

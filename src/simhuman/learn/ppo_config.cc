@@ -56,6 +56,9 @@ const core::FieldTable<PpoConfig>& Table() {
        F("walk_foot_slip_weight", &PpoConfig::walk_foot_slip_weight,
          "walk task: weight of the penalty on feet sliding while on the ground")
            .In(kAtLeast0),
+       F("walk_route_share", &PpoConfig::walk_route_share,
+         "walk task: share of new targets at the end of a random route, steered as in scenes")
+           .In(NumberRange::Closed(0, 1)),
        F("seed", &PpoConfig::seed, "run seed"),
        F("rollout_steps", &PpoConfig::rollout_steps, "steps per env per iteration").In(kAtLeast1),
        F("epochs", &PpoConfig::epochs, "PPO epochs per iteration").In(kAtLeast1),
@@ -153,10 +156,11 @@ absl::Status PpoConfig::Validate() const {
   }
   if (!TaskHasBodyScales(task) && (walk_gait_weight != defaults.walk_gait_weight ||
                                    walk_gait_width != defaults.walk_gait_width ||
-                                   walk_foot_slip_weight != defaults.walk_foot_slip_weight)) {
+                                   walk_foot_slip_weight != defaults.walk_foot_slip_weight ||
+                                   walk_route_share != defaults.walk_route_share)) {
     return absl::InvalidArgumentError(
-        "training config: walk_gait_weight, walk_gait_width and walk_foot_slip_weight apply to "
-        "the walk task only; task is '" +
+        "training config: walk_gait_weight, walk_gait_width, walk_foot_slip_weight and "
+        "walk_route_share apply to the walk task only; task is '" +
         task + "'");
   }
   if (static_cast<int>(body_scales.size()) > num_envs) {
@@ -197,7 +201,7 @@ const std::vector<std::string>& PpoConfig::ResumableKeys() {
       "lr_final_frac",         "target_kl",
       "entropy_coef",          "checkpoint_every_s",
       "carry_held_start_frac", "carry_put_down_start_frac",
-      "max_bad_updates"};
+      "max_bad_updates",       "walk_route_share"};
   return keys;
 }
 

@@ -51,6 +51,7 @@ struct PpoConfig {
   double walk_gait_weight = 1.0;
   double walk_gait_width = 0.5;
   double walk_foot_slip_weight = 0.5;
+  double walk_route_share = 0.0;  ///< walk: share of targets at the end of a random route
   uint64_t seed = 1;
   int rollout_steps = 32;  ///< per env per iteration
   int epochs = 3;

@@ -20,8 +20,8 @@ TEST(PpoConfigTable, DefaultsRoundTripThroughToJsonWithEveryKey) {
   const PpoConfig defaults;
   json j = defaults.ToJson();
   // every key (38 before the table, + target_kl, body_scales, walk_gait, the walk reward's 3,
-  // carry_grip, carry_held_start_frac, carry_put_down_start_frac)
-  EXPECT_EQ(j.size(), 47u);
+  // carry_grip, carry_held_start_frac, carry_put_down_start_frac, walk_route_share)
+  EXPECT_EQ(j.size(), 48u);
   EXPECT_EQ(j["walk_gait"], "");
   EXPECT_EQ(j["carry_grip"], false);
   EXPECT_EQ(j["walk_gait_weight"], 1.0);
@@ -70,6 +70,11 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
               HasSubstr("training config 'walk_gait_width' = 0 is invalid; valid range is (0"));
   EXPECT_THAT(Error(json{{"task", "grasp"}, {"walk_foot_slip_weight", 2}}),
               HasSubstr("apply to the walk task only; task is 'grasp'"));
+  EXPECT_THAT(Error(json{{"task", "carry"}, {"walk_route_share", 0.5}}),
+              HasSubstr("walk_route_share apply to the walk task only; task is 'carry'"));
+  EXPECT_EQ(Error(json{{"walk_route_share", 1.5}}),
+            "training config 'walk_route_share' = 1.5 is invalid; valid range is [0, 1]");
+  EXPECT_TRUE(Error(json{{"task", "walk"}, {"walk_route_share", 0.5}}).empty());
   EXPECT_THAT(Error(json{{"body_scales", {1, "big"}}}), HasSubstr("/body_scales/1"));
   EXPECT_THAT(Error(json{{"body_scales", {0.8, 1.0}}, {"amp_clips", {"a.bvh"}}}),
               HasSubstr("body_scales other than [1] cannot be combined with amp_clips"));

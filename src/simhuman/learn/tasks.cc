@@ -20,6 +20,7 @@ const std::vector<TaskDef>& Tasks() {
              WalkTask::Create(
                  envs, o.solver != "newton" ? WalkPhysicsSolver::kPgs : WalkPhysicsSolver::kNewton,
                  o.body_scales, o.walk_gait, w));
+         t->set_route_share(o.walk_route_share);
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "", true},

@@ -24,6 +24,7 @@ struct TaskOptions {
   /// walk: reward weights of the leg gait term and foot slip, and the leg term's width (rad^2);
   /// the defaults are WalkRewardWeights'
   double walk_gait_weight = 1.0, walk_gait_width = 0.5, walk_foot_slip_weight = 0.5;
+  double walk_route_share = 0.0;  ///< walk: WalkTask::set_route_share
 };
 
 struct TaskDef {

@@ -76,6 +76,12 @@ void WalkTask::DrawTarget(Env& e) {
   double yaw;
   control::PelvisPose(e.d, ix, &pos, &yaw);
   double a = (45.0 + 135.0 * std::clamp(curriculum_, 0.0, 1.0)) * kDeg;
+  e.route = control::RouteFollower();
+  e.route_final = false;
+  if (route_share_ > 0 && e.rng.Uniform() < route_share_) {
+    DrawRoute(e, pos.head<2>(), yaw);
+    return;
+  }
   if (e.rng.Uniform() < 0.2) {
     // a short step in any direction keeping the heading (steps back and sideways)
     double dist = e.rng.Uniform(0.3, std::max(0.5, params_.short_step_m));
@@ -94,10 +100,46 @@ void WalkTask::DrawTarget(Env& e) {
   e.hold = 0;
 }
 
+void WalkTask::DrawRoute(Env& e, const Eigen::Vector2d& from, double yaw) {
+  const double L = control::WalkScaleOf(ixs_[e.w]).length;
+  control::NavPath path;
+  path.points.push_back(from);
+  double heading = yaw + e.rng.Uniform(-M_PI, M_PI);
+  const int legs = e.rng.UniformInt(2, 3);
+  for (int k = 0; k < legs; ++k) {
+    const double len = L * e.rng.Uniform(1.0, 3.0);
+    path.points.push_back(path.points.back() +
+                          len * Eigen::Vector2d(std::cos(heading), std::sin(heading)));
+    path.length_m += len;
+    heading += e.rng.Uniform(-125.0, 125.0) * kDeg;
+  }
+  e.goal = path.points.back();
+  e.goal_yaw = core::WrapAngle(e.rng.Uniform(-M_PI, M_PI));
+  e.route = control::RouteFollower(std::move(path), control::kRouteLookaheadM);
+  e.steer = control::RouteSteer();
+  e.hold = 0;
+  SteerRoute(e);
+}
+
+void WalkTask::SteerRoute(Env& e) {
+  if (e.route.empty()) return;
+  Eigen::Vector3d pos;
+  double yaw;
+  control::PelvisPose(e.d, ixs_[e.w], &pos, &yaw);
+  control::RouteFollower::Carrot carrot = e.route.Update(pos.head<2>());
+  if (!carrot.final) {
+    carrot.point =
+        control::SlowForTurn(e.route, pos.head<2>(), carrot.point, control::kRouteLookaheadM);
+  }
+  e.route_final = carrot.final;
+  e.steer.Steer(pos.head<2>(), yaw, carrot, e.goal, e.goal_yaw, &e.s);
+}
+
 void WalkTask::SetTarget(int i, double x, double y, double yaw_rad) {
   envs_[i].s.target_xy = Eigen::Vector2d(x, y);
   envs_[i].s.target_yaw_rad = yaw_rad;
   envs_[i].hold = 0;
+  envs_[i].route = control::RouteFollower();
 }
 
 void WalkTask::Reset(int i, uint64_t seed, float* obs) {
@@ -248,7 +290,9 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   double dist = (e.s.target_xy - pos.head<2>()).norm();
   double yaw_err = core::WrapAngle(e.s.target_yaw_rad - yaw);
   double speed2 = vx * vx + vy * vy;
-  bool inside = dist < kSuccessRadius && std::abs(yaw_err) < kSuccessYaw;
+  // on a route, only its goal counts (not a carrot on the way)
+  bool inside = dist < kSuccessRadius && std::abs(yaw_err) < kSuccessYaw &&
+                (e.route.empty() || e.route_final);
   t.at_target = inside ? std::exp(-speed2 / 0.1) : 0.0;
   // action rate over the used entries (the ignored arm entries are pure exploration noise)
   double rate = 0;
@@ -282,6 +326,7 @@ void WalkTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   if (e.hold >= kNextTargetHold) DrawTarget(e);
 
   bool fell = Fallen(i);
+  SteerRoute(e);
   control::UpdateWalkCommand(params_, d, ix, &e.s);
   control::WalkObservation(params_, d, ix, e.s, obs);
   info->reward = static_cast<float>(t.total);

@@ -16,6 +16,7 @@
 #include <memory>
 #include <vector>
 
+#include "simhuman/control/policy/route_steer.h"
 #include "simhuman/control/policy/walk_task.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/learn/vec_env.h"
@@ -86,6 +87,12 @@ class WalkTask : public VecTask {
   void SetTarget(int i, double x, double y, double yaw_rad);
   /// Whether env i has fallen (the termination test).
   bool Fallen(int i) const;
+  /// Share of new targets that end a random route of 2-3 legs (turns up to 125 degrees), walked
+  /// as the walking controller walks routes in scenes (control/policy/route_steer.h: a carrot
+  /// ahead, turns on the spot, the final heading near the goal); 0: every target is straight.
+  void set_route_share(double share) { route_share_ = share; }
+  /// Whether env i is on a route (tests).
+  bool on_route(int i) const { return !envs_[i].route.empty(); }
 
   static constexpr int kMaxSteps = 600;  ///< 20 s at 30 Hz
 
@@ -98,9 +105,19 @@ class WalkTask : public VecTask {
     int steps = 0, hold = 0;
     bool success = false;
     WalkRewardTerms terms;
+    // a route to the target (empty: straight at it)
+    control::RouteFollower route;
+    control::RouteSteer steer;
+    Eigen::Vector2d goal = Eigen::Vector2d::Zero();
+    double goal_yaw = 0;
+    bool route_final = false;
   };
   WalkTask() = default;
   void DrawTarget(Env& e);
+  // a route of random legs from where env e stands; its target is steered along it
+  void DrawRoute(Env& e, const Eigen::Vector2d& from, double yaw);
+  // the policy's target this step: the route's carrot, turn or goal (no route: unchanged)
+  void SteerRoute(Env& e);
   std::vector<std::unique_ptr<world::SimWorld>> worlds_;  // one per body scale
   std::vector<control::WalkIndex> ixs_;                   // per world
   control::WalkParams params_;
@@ -108,6 +125,7 @@ class WalkTask : public VecTask {
   std::vector<Env> envs_;
   std::vector<char> foot_body_;  // per body id: 1 for feet
   double curriculum_ = 0;
+  double route_share_ = 0;
 };
 
 using control::LowestBoxCornerZ;  // (control/policy/walk_task.h)

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "simhuman/control/policy/policy_net.h"
+#include "simhuman/control/policy/route_steer.h"
 #include "simhuman/core/geometry.h"
 
 namespace simhuman::control {
@@ -24,10 +25,10 @@ struct WalkPolicyController::Impl {
   RouteFollower follower;
   Eigen::Vector2d route_goal = Eigen::Vector2d::Constant(1e9);
   std::string route_error;
-  bool final_turn = false;  ///< close enough to turn to the walk point's heading
   // facing far from the route's way (a start facing elsewhere, a sharp corner): turn on the spot
-  // first, as a person does; walking off in a wide arc swung the hands into a table's edge
-  bool turning = false;
+  // first, as a person does (walking off in a wide arc swung the hands into a table's edge);
+  // turn to the walk point's heading close to it
+  RouteSteer steer;
   // leaving a cramped start (stood up between a chair and a table): a short step, heading kept,
   // to the first point of the route with room to turn
   bool exiting = false;
@@ -71,12 +72,15 @@ void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
   has_target = true;
   if ((goal - route_goal).norm() > 0.05) {
     follower = RouteFollower();
-    final_turn = false;
+    steer.final_turn = false;
   }
   route_goal = goal;
+  // without navigation (or a route): straight at the walk point
+  RouteFollower::Carrot carrot;
+  carrot.final = true;
   if (navigate) {
+    carrot.final = false;
     bool replan = follower.empty();
-    RouteFollower::Carrot carrot;
     if (!replan) {
       carrot = follower.Update(here);
       // pushed off the route: plan again from here
@@ -108,30 +112,13 @@ void WalkPolicyController::Impl::SteerTo(const Observation& obs) {
     if (!carrot.final) {
       carrot.point =
           ClearCarrot(obs.world->catalog(), nav, follower, here, carrot.point, kRouteLookaheadM);
-      Eigen::Vector3d pos;
-      double yaw;
-      PelvisPose(obs.data, ix, &pos, &yaw);
-      const Eigen::Vector2d way = carrot.point - here;
-      const double off = std::abs(core::WrapAngle(std::atan2(way.y(), way.x()) - yaw));
-      if (!turning && off > kTurnFirstRad) turning = true;
-      if (turning && off < kTurnDoneRad) turning = false;
-      // face the carrot (not the route's heading there: a walk that starts within the short
-      // step range keeps its heading, and would walk sideways into furniture beside the route);
-      // turning, the target is the walker's own place, wherever the turn has moved it
-      state.target_xy = turning ? here : carrot.point;
-      state.target_yaw_rad = std::atan2(way.y(), way.x());
-      return;
+      carrot.point = SlowForTurn(follower, here, carrot.point, kRouteLookaheadM);
     }
-    turning = false;
   }
-  // the last stretch: walk forwards to the point and turn to the final heading only there (the
-  // policy is poor at walking backwards, which a walk point "back to the seat" would ask for)
-  const Eigen::Vector2d to = goal - here;
-  const double dist = to.norm();
-  if (dist < kFinalTurnM) final_turn = true;
-  if (dist > 2.0 * kFinalTurnM) final_turn = false;
-  state.target_xy = goal;
-  state.target_yaw_rad = final_turn ? goal_yaw : std::atan2(to.y(), to.x());
+  Eigen::Vector3d pos;
+  double yaw;
+  PelvisPose(obs.data, ix, &pos, &yaw);
+  steer.Steer(here, yaw, carrot, goal, goal_yaw, &state);
 }
 
 WalkPolicyController::WalkPolicyController(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -174,7 +161,7 @@ void WalkPolicyController::Restart() {
   impl_->started = false;
   impl_->follower = RouteFollower();
   impl_->route_goal = Eigen::Vector2d::Constant(1e9);
-  impl_->final_turn = false;
+  impl_->steer.final_turn = false;
   impl_->exiting = false;
 }
 

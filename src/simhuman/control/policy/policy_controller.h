@@ -11,6 +11,7 @@
 
 #include "simhuman/control/controller.h"
 #include "simhuman/control/navigation.h"
+#include "simhuman/control/policy/route_steer.h"
 #include "simhuman/control/policy/walk_task.h"
 
 namespace simhuman::control {
@@ -54,16 +55,7 @@ class WalkPolicyController : public Controller {
   void set_navigation(bool on);
   /// The route being followed (nullptr when none).
   const NavPath* route() const;
-  /// On the last stretch the policy walks forwards, facing the walk point, and turns to the
-  /// walk point's heading within kFinalTurnM of it (until pushed 2 x kFinalTurnM away).
-  static constexpr double kFinalTurnM = 0.35;
-  /// The carrot's lead on the route; nearer where the straight way to it has less room than the
-  /// route (navigation.h ClearCarrot)
-  static constexpr double kRouteLookaheadM = 1.2;
-  /// Facing more than this away from the route's carrot, the walker turns on the spot (target:
-  /// where it stands now) until within kTurnDoneRad of it, then walks facing the carrot
-  static constexpr double kTurnFirstRad = 1.0;
-  static constexpr double kTurnDoneRad = 0.35;
+  // the route's carrot, the turn on the spot and the final turn: route_steer.h
   static constexpr double kReplanOffRouteM = 0.8;
   /// A route that starts with less than kExitRoomM of room (PointClearance: stood up between a
   /// chair and a table) begins with a short step, heading kept (sideways or back), to its first

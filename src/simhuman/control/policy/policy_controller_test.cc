@@ -188,7 +188,7 @@ TEST(WalkPolicyController, WalksAroundATableOnTheWayToTheStandPoint) {
   // the policy steers to a point on the route 1.2 m ahead, beside the table, not through it
   const Eigen::Vector2d carrot = (*c)->state().target_xy;
   EXPECT_GT(std::abs(carrot.y()), 0.3);
-  EXPECT_NEAR(carrot.norm(), WalkPolicyController::kRouteLookaheadM, 0.15);
+  EXPECT_NEAR(carrot.norm(), kRouteLookaheadM, 0.15);
   // without navigation it steers straight at the walk point
   (*c)->Restart();
   (*c)->set_navigation(false);
