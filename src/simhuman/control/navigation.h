@@ -128,6 +128,10 @@ class RouteFollower {
   double progress_m_ = 0;
 };
 
+/// The walker's carrot leads it by this much on its route (nearer where the way to it has less
+/// room, ClearCarrot, or before a turn, SlowForTurn).
+inline constexpr double kRouteLookaheadM = 1.2;
+
 /// The carrot is pulled back along the route (to kCarrotFallbackM ahead of the walker's
 /// progress, the first with room) when the straight way to it has less clearance than the
 /// route's next `lookahead` (up to kCarrotClearM), less kCarrotSlackM; the way is probed every
@@ -148,7 +152,7 @@ double WayClearance(const core::SceneCatalog& scene, const NavConfig& config,
 /// corners, and round a stool or a bed's corner it cuts through them.
 Eigen::Vector2d ClearCarrot(const core::SceneCatalog& scene, const NavConfig& config,
                             const RouteFollower& follower, const Eigen::Vector2d& here,
-                            const Eigen::Vector2d& carrot, double lookahead_m = 1.2);
+                            const Eigen::Vector2d& carrot, double lookahead_m = kRouteLookaheadM);
 
 /// People slow down for a turn. Where the route bends more than kTurnSlowFromRad between the
 /// way to the carrot and the next kTurnSlowLookM of route beyond it, the carrot comes nearer
@@ -161,6 +165,6 @@ inline constexpr double kTurnSlowMinM = 0.6;
 /// `carrot` (after `follower`'s last Update() at `here`, `lookahead_m` ahead on the route), or
 /// a nearer point on the way to it before a bend of the route (kTurnSlowFromRad).
 Eigen::Vector2d SlowForTurn(const RouteFollower& follower, const Eigen::Vector2d& here,
-                            const Eigen::Vector2d& carrot, double lookahead_m = 1.2);
+                            const Eigen::Vector2d& carrot, double lookahead_m = kRouteLookaheadM);
 
 }  // namespace simhuman::control

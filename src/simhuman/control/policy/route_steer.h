@@ -11,8 +11,6 @@
 
 namespace simhuman::control {
 
-/// The carrot's lead on the route (nearer where the way to it has less room: ClearCarrot).
-inline constexpr double kRouteLookaheadM = 1.2;
 /// On the last stretch the walker faces the goal and turns to its heading within this of it
 /// (until pushed twice as far away).
 inline constexpr double kFinalTurnM = 0.35;
