@@ -78,12 +78,15 @@ void PrintEpisode(std::ostream& out, const eval::EpisodeRecord& r) {
 
 void PrintSummary(std::ostream& out, const eval::Summary& s) {
   out << "\nsummary\n";
-  out << Row("%-18s %8s %8s %10s %10s %10s %8s %8s %8s", "suite", "episodes", "success", "err_cm",
-             "err_jc_cm", "succ_steps", "falls", "extra", "w/sim")
+  out << Row("%-18s %8s %8s %8s %10s %10s %10s %8s %8s %8s", "suite", "episodes", "success",
+             "succ_jc", "err_cm", "err_jc_cm", "succ_steps", "falls", "extra", "w/sim")
       << "\n";
   std::string eps = std::to_string(s.episodes) + "/" + std::to_string(s.episodes_requested);
-  out << Row("%-18s %8s %7.1f%% %10s %10s %6.2f/%-3.2g %7.1f%% %7.1f%% %8.2f", s.suite.c_str(),
-             eps.c_str(), 100 * s.success_rate,
+  std::string succ_jc = s.success_rate_unihsi_points
+                            ? Row("%.1f%%", 100 * *s.success_rate_unihsi_points)
+                            : std::string("-");
+  out << Row("%-18s %8s %7.1f%% %8s %10s %10s %6.2f/%-3.2g %7.1f%% %7.1f%% %8.2f", s.suite.c_str(),
+             eps.c_str(), 100 * s.success_rate, succ_jc.c_str(),
              s.contact_error_m ? Cm(*s.contact_error_m).c_str() : "-",
              s.contact_error_joint_centre_m ? Cm(*s.contact_error_joint_centre_m).c_str() : "-",
              s.success_steps, s.steps_total, 100 * s.fall_rate, 100 * s.extra_pass_rate,

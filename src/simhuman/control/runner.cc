@@ -67,6 +67,7 @@ class EpisodeLoop {
         catalog_(world.catalog()),
         tracker_(chain, options.tracker),
         tracker_joint_centre_(chain, options.tracker),
+        unihsi_met_(chain.steps.size(), false),
         n_agents_(world.num_agents()),
         tasks_(n_agents_),
         next_act_(n_agents_, 0.0),
@@ -113,6 +114,8 @@ class EpisodeLoop {
     res_.contact_error_m = ce ? *ce : -1;
     auto cj = tracker_joint_centre_.contact_error_m();
     res_.contact_error_joint_centre_m = cj ? *cj : -1;
+    res_.success_unihsi_points = res_.success;
+    for (bool met : unihsi_met_) res_.success_unihsi_points = res_.success_unihsi_points && met;
     res_.step_completion_s = tracker_.completion_times_s();
     for (const plan::StepRecord& s : tracker_.records()) res_.pair_errors_m.push_back(s.errors_m);
     res_.sim_time_s = d_->time - t_start_;
@@ -221,7 +224,10 @@ class EpisodeLoop {
       // the same completions, errors measured from UniHSI's pelvis point
       std::vector<plan::BodyPoints> jc = pts;
       for (plan::BodyPoints& p : jc) p.pos_world = JointCentrePelvis(std::move(p.pos_world));
-      plan::StepEval ev_jc = plan::EvaluateStep(chain_.steps[step], catalog_, jc, options_.pair);
+      plan::PairParams unihsi = options_.pair;
+      unihsi.hand_on_pelvis_at_belly = false;
+      plan::StepEval ev_jc = plan::EvaluateStep(chain_.steps[step], catalog_, jc, unihsi);
+      if (ev_jc.complete) unihsi_met_[step] = true;
       ev_jc.complete = ev.complete;
       tracker_joint_centre_.Update(t, ev_jc);
     }
@@ -299,6 +305,7 @@ class EpisodeLoop {
   core::SceneCatalog catalog_;  // movable poses synced each tick
   plan::StepTracker tracker_;
   plan::StepTracker tracker_joint_centre_;  // contact error with the joint-centre pelvis
+  std::vector<bool> unihsi_met_;            // per step: its pairs met once on UniHSI's body points
   const int n_agents_;
   std::vector<StepTask> tasks_;
   std::vector<double> next_act_;

@@ -89,6 +89,11 @@ struct EpisodeResult {
   /// Eq. 10 with UniHSI's pelvis point, the joint centre between the hips (JointCentrePelvis),
   /// in place of ours at the sitting bones, at the same step completions; -1 as above
   double contact_error_joint_centre_m = -1;
+  /// The plan's success on UniHSI's body points: `success`, and every step's pairs also met at
+  /// some tick while that step ran with the joint-centre pelvis point and a hand on the pelvis
+  /// measured to that point (plan::PairParams::hand_on_pelvis_at_belly false), not our belly
+  /// point. Steps still complete by our points; this column only reads them the paper's way.
+  bool success_unihsi_points = false;
   bool fell = false;
   /// "completed", "timeout", "fell", "interrupted" (on_frame), "unstable: ...", "controller: ..."
   std::string end_reason;

@@ -45,8 +45,21 @@ double BodyPointClearance(core::BodyJoint j) {
 
 Eigen::Vector3d ContactTerm::Nearest(const Eigen::Vector3d& p,
                                      core::Span<const Eigen::Vector3d> pts) const {
+  if (at_belly) return plan::BellyPoint(pts).pos;
   if (target_joint) return pts[static_cast<int>(*target_joint)];
   return core::NearestPointOnShapes(part->shapes, object->pose, p);
+}
+
+Eigen::Vector3d ContactTerm::Touch(const Eigen::Vector3d& p,
+                                   core::Span<const Eigen::Vector3d> pts) const {
+  const Eigen::Vector3d np = Nearest(p, pts);
+  Eigen::Vector3d d = dir;
+  if (d.squaredNorm() < 0.5 && at_belly) d = plan::BellyPoint(pts).normal;
+  if (d.squaredNorm() < 0.5) {
+    const Eigen::Vector3d away = p - np;
+    d = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
+  }
+  return np + d * clearance_m;
 }
 
 namespace {
@@ -92,7 +105,11 @@ StepTask BuildStepTask(const plan::ContactStep& step, const core::SceneCatalog& 
     if (!pair.part_joint) t.part = obj->FindPart(pair.part);
     t.dir = plan::DirectionVector(pair.direction, obj->pose);
     t.clearance_m = scale * BodyPointClearance(t.joint);
-    if (t.target_joint) t.clearance_m += scale * BodyPointClearance(*t.target_joint) * 0.5;
+    t.at_belly = plan::TouchesBelly(pair, params);
+    // a body point has some flesh round it; the belly point is on the skin already
+    if (t.target_joint && !t.at_belly) {
+      t.clearance_m += scale * BodyPointClearance(*t.target_joint) * 0.5;
+    }
     // a marker is a point to reach, not a surface to rest on
     if (!t.target_joint && obj && !obj->collides) t.clearance_m = 0.0;
     task.terms.push_back(t);

@@ -28,7 +28,10 @@ struct ContactTerm {
   plan::ContactType type = plan::ContactType::kContact;
   const core::CatalogObject* object = nullptr;  ///< null when the target is a body joint
   const core::CatalogPart* part = nullptr;
-  std::optional<core::BodyJoint> target_joint;    ///< "right foot on left knee"
+  std::optional<core::BodyJoint> target_joint;  ///< "right foot on left knee"
+  /// A hand on its own pelvis touched at the belly (plan::TouchesBelly): the target is
+  /// plan::BellyPoint(), approached along its normal.
+  bool at_belly = false;
   Eigen::Vector3d dir = Eigen::Vector3d::Zero();  ///< unit vector, zero for "none"
   double clearance_m = 0.05;  ///< joint-centre to surface distance when touching
   /// Added to the touching position when solving a reference pose: a controller's correction
@@ -38,6 +41,9 @@ struct ContactTerm {
   /// Nearest point of the target to `p` (part surface or the target joint's position).
   /// `pts`: the agent's body points by id (at least the target joint's).
   Eigen::Vector3d Nearest(const Eigen::Vector3d& p, core::Span<const Eigen::Vector3d> pts) const;
+  /// Where joint point `p` touches: Nearest() backed off by clearance_m along `dir`, else along
+  /// the belly's normal (at_belly), else straight away from the target.
+  Eigen::Vector3d Touch(const Eigen::Vector3d& p, core::Span<const Eigen::Vector3d> pts) const;
 };
 
 /// A step in controller terms.

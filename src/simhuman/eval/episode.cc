@@ -172,6 +172,7 @@ nlohmann::ordered_json EpisodeResultJson(const control::EpisodeResult& r) {
   j["contact_error_joint_centre_m"] = r.contact_error_joint_centre_m >= 0
                                           ? nlohmann::ordered_json(r.contact_error_joint_centre_m)
                                           : nlohmann::ordered_json();
+  j["success_unihsi_points"] = r.success_unihsi_points;
   j["fell"] = r.fell;
   j["end_reason"] = r.end_reason;
   j["sim_time_s"] = r.sim_time_s;

@@ -276,16 +276,35 @@ TEST(EvalRunnerTest, SummaryByHand) {
   EXPECT_DOUBLE_EQ(s.extra_pass_rate, 0.75);
   EXPECT_DOUBLE_EQ(s.wall_per_sim, 30.0 / 40.0);
 
+  // UniHSI's body points: only the succeeding episode that also met them counts, and
+  // journals without the field (before session 31) are left out
+  ASSERT_TRUE(s.success_rate_unihsi_points.has_value());
+  EXPECT_DOUBLE_EQ(*s.success_rate_unihsi_points, 0.0);
+  recs[0].result.success_unihsi_points = true;
+  recs[1].result.success_unihsi_points = true;  // its episode failed the hold: no success
+  recs[2].unihsi_recorded = false;
+  EXPECT_DOUBLE_EQ(*Summarize("lie", recs, 10).success_rate_unihsi_points, 1.0 / 3.0);
+  auto reread = EpisodeRecordFromJson(EpisodeRecordJson(recs[0]));
+  ASSERT_TRUE(reread.ok()) << reread.status();
+  EXPECT_TRUE(reread->unihsi_recorded && reread->result.success_unihsi_points);
+  nlohmann::json old_line = EpisodeRecordJson(recs[0]);
+  old_line.erase("success_unihsi_points");
+  reread = EpisodeRecordFromJson(old_line);
+  ASSERT_TRUE(reread.ok()) << reread.status();
+  EXPECT_FALSE(reread->unihsi_recorded);
+
   Summary empty = Summarize("sit", {}, 3);
   EXPECT_EQ(empty.episodes, 0);
   EXPECT_FALSE(empty.contact_error_m.has_value());
+  EXPECT_FALSE(empty.success_rate_unihsi_points.has_value());
 
   EvalOptions options;
   options.seed = 9;
   nlohmann::ordered_json j = SummaryJson(s, options);
-  for (const char* key : {"suite", "episodes", "episodes_requested", "success_rate",
-                          "contact_error_m", "success_steps", "fall_rate", "wall_per_sim", "seed",
-                          "preset", "config", "git_revision", "mujoco_version"}) {
+  for (const char* key :
+       {"suite", "episodes", "episodes_requested", "success_rate", "success_rate_unihsi_points",
+        "contact_error_m", "success_steps", "fall_rate", "wall_per_sim", "seed", "preset", "config",
+        "git_revision", "mujoco_version"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_TRUE(SummaryJson(empty, options)["contact_error_m"].is_null());

@@ -58,9 +58,14 @@ Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& reco
   s.episodes_requested = episodes_requested;
   if (records.empty()) return s;
   int successes = 0, falls = 0, extra_pass = 0, n_error = 0, n_error_jc = 0;
+  int n_unihsi = 0, successes_unihsi = 0;
   double steps = 0, steps_total = 0, error_sum = 0, error_jc_sum = 0;
   for (const EpisodeRecord& r : records) {
     successes += r.success;
+    if (r.unihsi_recorded) {
+      ++n_unihsi;
+      successes_unihsi += r.success && r.result.success_unihsi_points;
+    }
     falls += r.result.fell;
     extra_pass += r.extra.pass;
     steps += r.result.steps_completed;
@@ -84,6 +89,7 @@ Summary Summarize(std::string_view suite, const std::vector<EpisodeRecord>& reco
   s.steps_total = steps_total / n;
   if (n_error > 0) s.contact_error_m = error_sum / n_error;
   if (n_error_jc > 0) s.contact_error_joint_centre_m = error_jc_sum / n_error_jc;
+  if (n_unihsi > 0) s.success_rate_unihsi_points = successes_unihsi / static_cast<double>(n_unihsi);
   std::vector<MotionMetrics> motion;
   for (const EpisodeRecord& r : records) {
     if (r.motion) motion.push_back(*r.motion);
@@ -140,6 +146,9 @@ core::StatusOr<EpisodeRecord> EpisodeRecordFromJson(const nlohmann::json& j) {
     // absent in journals written before session 13
     const nlohmann::json jc = j.value("contact_error_joint_centre_m", nlohmann::json());
     res.contact_error_joint_centre_m = jc.is_null() ? -1.0 : jc.get<double>();
+    // absent in journals written before session 31
+    r.unihsi_recorded = j.contains("success_unihsi_points");
+    res.success_unihsi_points = j.value("success_unihsi_points", false);
     res.fell = j.at("fell").get<bool>();
     res.end_reason = j.at("end_reason").get<std::string>();
     res.sim_time_s = j.at("sim_time_s").get<double>();
@@ -169,6 +178,9 @@ nlohmann::ordered_json SummaryJson(const Summary& s, const EvalOptions& options)
   j["episodes"] = s.episodes;
   j["episodes_requested"] = s.episodes_requested;
   j["success_rate"] = s.success_rate;
+  j["success_rate_unihsi_points"] = s.success_rate_unihsi_points
+                                        ? nlohmann::ordered_json(*s.success_rate_unihsi_points)
+                                        : nlohmann::ordered_json();
   j["contact_error_m"] =
       s.contact_error_m ? nlohmann::ordered_json(*s.contact_error_m) : nlohmann::ordered_json();
   j["contact_error_joint_centre_m"] = s.contact_error_joint_centre_m

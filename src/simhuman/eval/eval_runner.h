@@ -31,7 +31,9 @@ struct EpisodeRecord {
   ExtraResult extra;
   /// The last step's pairs still hold kEvalSettleS after the plan completed, without a fall.
   bool held = false;
-  bool success = false;      ///< plan success, held, and the extra check
+  bool success = false;  ///< plan success, held, and the extra check
+  /// result.success_unihsi_points was measured (false for journals before session 31)
+  bool unihsi_recorded = true;
   std::string sheet_path;    ///< contact sheet written for this episode, if any
   std::string render_error;  ///< why the contact sheet could not be written, if it failed
   nlohmann::json scene;      ///< world::SceneToJson of the episode's scene
@@ -68,6 +70,9 @@ struct Summary {
   std::optional<double> contact_error_m;  ///< mean over episodes that recorded one
   /// the same with UniHSI's joint-centre pelvis point (EpisodeResult)
   std::optional<double> contact_error_joint_centre_m;
+  /// share of the episodes that recorded it with `success` and success_unihsi_points
+  /// (EpisodeResult); nullopt when none did (journals before session 31)
+  std::optional<double> success_rate_unihsi_points;
   double success_steps = 0;  ///< mean steps completed
   double steps_total = 0;    ///< mean steps of the plans
   double fall_rate = 0;

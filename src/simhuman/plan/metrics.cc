@@ -210,6 +210,32 @@ double StandFacingYaw(const core::CatalogObject& object, Direction side) {
   return std::atan2(want.y(), want.x());
 }
 
+BellyTouch BellyPoint(core::Span<const Eigen::Vector3d> pts) {
+  SH_CHECK(pts.size() >= core::kNumBodyJoints, "BellyPoint needs the 15 standard body points");
+  auto at = [&](core::BodyJoint j) -> const Eigen::Vector3d& { return pts[static_cast<int>(j)]; };
+  const Eigen::Vector3d hips =
+      0.5 * (at(core::BodyJoint::kLeftHip) + at(core::BodyJoint::kRightHip));
+  Eigen::Vector3d left = at(core::BodyJoint::kLeftHip) - at(core::BodyJoint::kRightHip);
+  const double spacing = left.norm();
+  BellyTouch out;
+  out.pos = hips;
+  if (spacing < 1e-9) return out;
+  left /= spacing;
+  Eigen::Vector3d up = hips - at(core::BodyJoint::kPelvis);
+  up -= up.dot(left) * left;
+  if (up.norm() < 1e-9) return out;
+  up.normalize();
+  const double s = spacing / 0.17;
+  out.normal = left.cross(up);
+  out.pos = hips + s * (0.085 * out.normal + 0.18 * up);
+  return out;
+}
+
+bool TouchesBelly(const ContactPair& pair, const PairParams& params) {
+  return params.hand_on_pelvis_at_belly && pair.part_joint == core::BodyJoint::kPelvis &&
+         (pair.joint == core::BodyJoint::kLeftHand || pair.joint == core::BodyJoint::kRightHand);
+}
+
 PairEval EvaluatePair(const ContactPair& pair, const core::SceneCatalog& scene,
                       const std::vector<BodyPoints>& agents, const PairParams& params) {
   SH_CHECK(pair.agent >= 0 && pair.agent < static_cast<int>(agents.size()),
@@ -223,7 +249,9 @@ PairEval EvaluatePair(const ContactPair& pair, const core::SceneCatalog& scene,
 
   PairEval e;
   const Eigen::Vector3d& v_j = body.at(*pair.joint);
-  if (pair.part_joint) {
+  if (TouchesBelly(pair, params)) {
+    e.target_world = BellyPoint(body.pos_world).pos;
+  } else if (pair.part_joint) {
     e.target_world = body.at(*pair.part_joint);
   } else {
     // grounding leaves the canonical name; FindPart covers chains built in code

@@ -30,6 +30,7 @@
 #include "simhuman/core/body_joint.h"
 #include "simhuman/core/geometry.h"
 #include "simhuman/core/scene_catalog.h"
+#include "simhuman/core/span.h"
 #include "simhuman/core/status.h"
 #include "simhuman/plan/contact_chain.h"
 
@@ -39,6 +40,18 @@ namespace simhuman::plan {
 inline std::vector<Eigen::Vector3d> ZeroBodyPoints() {
   return std::vector<Eigen::Vector3d>(core::kNumBodyJoints, Eigen::Vector3d::Zero());
 }
+
+/// Where a hand rests on its own belly, from the 15 standard body points (BodyJoint order, at
+/// least 15): a point on the front of the lower trunk and the outward normal there. The pelvis
+/// frame is rebuilt from points rigid in the pelvis: left/right from the hips, up from our pelvis
+/// point (the sitting bones, 4 cm below the hips' middle) to the hips' middle; the point lies
+/// 0.085 forward and 0.18 up from the hips' middle (the front of world/humanoid.cc's waist
+/// capsule), scaled by the hips' spacing (0.17 m at scale 1).
+struct BellyTouch {
+  Eigen::Vector3d pos = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();
+};
+BellyTouch BellyPoint(core::Span<const Eigen::Vector3d> pts);
 
 /// The body points of one agent (its catalog's, at least the 15 standard ones), and its
 /// heading. One per agent, indexed by ContactPair::agent.
@@ -70,6 +83,11 @@ struct PairParams {
   double get_close_facing_tol_rad = 3.141592653589793;
   double stand_off_m = 0.45;          // stand point distance beyond the object's bounds
   double adaptive_weight_eps = 1e-3;  // Eq. 9: e
+  /// A hand's pair with its own pelvis (UniHSI's "hand on stomach", {X, pelvis, hand}) targets
+  /// BellyPoint() when true (our convention), the pelvis point itself when false (UniHSI's).
+  /// With this body no hand resting on the belly comes within 0.1 m of either pelvis point
+  /// (docs/BENCHMARKS.md, session 23); runs report success with both (EpisodeResult).
+  bool hand_on_pelvis_at_belly = true;
 
   /// All values finite; thresholds, weights and radii >= 0 (w_dk, epsilon of Eq. 9 > 0);
   /// direction_dot_min in [-1, 1]; facing tolerance in [0, pi]. The message names the field.
@@ -120,10 +138,13 @@ struct PairEval {
   double error_m = 0.0;
 };
 
+/// True when `pair` is a hand on its own pelvis and `params` put that touch on the belly.
+bool TouchesBelly(const ContactPair& pair, const PairParams& params);
+
 /// Evaluates one pair:
 /// - target v_np: the nearest point of the part's shapes at the object's current pose
 ///   (core::NearestPointOnShapes; the joint itself when inside), or the body point part_joint of
-///   the same agent;
+///   the same agent (BellyPoint() when TouchesBelly());
 /// - contact:     satisfied iff ||d|| < contact_threshold_m and dot > direction_dot_min;
 ///                R = clamp(w_dis exp(-w_dk ||d||) + w_dir min(dot, 0), 0, 1);
 /// - not contact: satisfied iff ||d|| > contact_threshold_m; R = 1 - exp(-w_dk ||d||);

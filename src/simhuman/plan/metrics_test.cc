@@ -212,6 +212,48 @@ TEST(PlanMetricsTest, PartJointTargetsTheSameAgentsBodyPoint) {
   EXPECT_NEAR(e.reward, 0.7788007830714049, kTol);
 }
 
+// a seated pelvis turned 90 degrees (facing world +y): sitting bones at (1, 2, 0.5), the hips
+// 4 cm above them, 0.17 m apart
+std::vector<BodyPoints> SeatedFacingY(double scale) {
+  return Agent({{BodyJoint::kPelvis, {1, 2, 0.5}},
+                {BodyJoint::kLeftHip, {1 - 0.085 * scale, 2, 0.5 + 0.04 * scale}},
+                {BodyJoint::kRightHip, {1 + 0.085 * scale, 2, 0.5 + 0.04 * scale}}},
+               Eigen::Vector3d::UnitY());
+}
+
+TEST(PlanMetricsTest, TheBellyPointIsInFrontOfTheLowerTrunk) {
+  for (double scale : {1.0, 0.7}) {
+    const BellyTouch b = BellyPoint(SeatedFacingY(scale)[0].pos_world);
+    ExpectVec(b.normal, {0, 1, 0});
+    ExpectVec(b.pos, {1, 2 + 0.085 * scale, 0.5 + 0.04 * scale + 0.18 * scale});
+  }
+}
+
+TEST(PlanMetricsTest, AHandOnThePelvisTouchesTheBellyInOurConventionOnly) {
+  const core::SceneCatalog scene = MakeTestScene();
+  ContactPair pair =
+      Pair("chair000", "pelvis", BodyJoint::kRightHand, ContactType::kContact, Direction::kNone);
+  pair.part_joint = BodyJoint::kPelvis;
+  std::vector<BodyPoints> body = SeatedFacingY(1.0);
+  // the hand's centre resting on the belly, its 0.045 m radius in front of the skin
+  body[0].at(BodyJoint::kRightHand) = {1, 2 + 0.085 + 0.045, 0.72};
+  PairParams ours;
+  EXPECT_TRUE(TouchesBelly(pair, ours));
+  PairEval e = EvaluatePair(pair, scene, body, ours);
+  EXPECT_NEAR(e.distance_m, 0.045, kTol);
+  EXPECT_TRUE(e.satisfied);
+  // UniHSI's reading: the pelvis point itself, 0.27 m below and behind the hand
+  PairParams unihsi;
+  unihsi.hand_on_pelvis_at_belly = false;
+  EXPECT_FALSE(TouchesBelly(pair, unihsi));
+  e = EvaluatePair(pair, scene, body, unihsi);
+  ExpectVec(e.target_world, {1, 2, 0.5});
+  EXPECT_FALSE(e.satisfied);
+  // only hands: a foot on the pelvis (not a plan anyone writes) keeps the point
+  pair.joint = BodyJoint::kRightFoot;
+  EXPECT_FALSE(TouchesBelly(pair, ours));
+}
+
 TEST(PlanMetricsTest, RotatedObjectSides) {
   // bed001 at (3, 0, 0) turned 90 degrees: mattress spans x in [2.5, 3.5], y in [-1, 1], top
   // z = 0.45; its "right" (-y local) is world +x

@@ -32,19 +32,6 @@ constexpr std::array<double, core::kNumBodyJoints> kTrackWeight = {
     0.6, 1.0, 1.0,  // right hip, knee, foot
 };
 
-// Where joint `p` of a contact term touches: the target's nearest point, backed off by the
-// term's clearance along its direction (or straight away from the target if it has none).
-Eigen::Vector3d TouchPoint(const ContactTerm& term, const Eigen::Vector3d& p,
-                           core::Span<const Eigen::Vector3d> pts) {
-  Eigen::Vector3d np = term.Nearest(p, pts);
-  Eigen::Vector3d dir = term.dir;
-  if (dir.squaredNorm() < 0.5) {
-    Eigen::Vector3d away = p - np;
-    dir = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
-  }
-  return np + dir * term.clearance_m;
-}
-
 bool IsHand(core::BodyJoint j) {
   return j == core::BodyJoint::kLeftHand || j == core::BodyJoint::kRightHand;
 }
@@ -282,7 +269,7 @@ double MpcController::Rollout(int thread, const Knots& knots, double t0,
       // follows the reference instead of diving at the target
       double w = config_.w_contact * (0.3 + term_weights_[k]) * (0.25 + 0.75 * progress);
       if (term.type == plan::ContactType::kContact) {
-        c += w * SmoothL1((p - TouchPoint(term, p, pts)).norm(), 0.03);
+        c += w * SmoothL1((p - term.Touch(p, pts)).norm(), 0.03);
       } else {
         c += w * std::max(0.0, 0.18 * scale - (p - term.Nearest(p, pts)).norm());
       }
@@ -482,7 +469,7 @@ void MpcController::CorrectAim(const Observation& obs) {
   for (ContactTerm& t : task_.terms) {
     if (t.type != plan::ContactType::kContact || !IsHand(t.joint)) continue;
     const Eigen::Vector3d& p = obs.body_points[static_cast<int>(t.joint)];
-    Eigen::Vector3d miss = TouchPoint(t, p, obs.body_points) - p;
+    Eigen::Vector3d miss = t.Touch(p, obs.body_points) - p;
     // a miss this large is not a steady sag but a reach still under way (or out of range)
     if (miss.norm() < 0.01 * scale || miss.norm() > 0.15 * scale) continue;
     t.aim_offset += config_.aim_gain * miss;
@@ -511,7 +498,7 @@ void MpcController::ServoHands(const Observation& obs) {
     for (const ContactTerm& t : task_.terms) {
       if (t.type != plan::ContactType::kContact || !IsHand(t.joint)) continue;
       const Eigen::Vector3d& p = obs.body_points[static_cast<int>(t.joint)];
-      Eigen::Vector3d miss = TouchPoint(t, p, obs.body_points) - p;
+      Eigen::Vector3d miss = t.Touch(p, obs.body_points) - p;
       // a miss this large is a reach still under way (or out of range): the MPC's job
       if (miss.norm() > 0.15 * a.scale) continue;
       const int side = t.joint == core::BodyJoint::kRightHand ? 0 : 1;

@@ -391,5 +391,68 @@ TEST(MpcControllerTest, HandServoHoldsTheHandOnItsTargetIntegration) {
   EXPECT_LT(with + 0.01, without);
 }
 
+// UniHSI's "sit on X, hands on stomach" ({X, pelvis, left/right hand, contact, none}) after
+// sitting on sit_demo's chair: our convention touches the belly (plan::BellyPoint)
+struct StomachScene {
+  Fixture s;
+  plan::ContactChain chain;  // sit, then sit with both hands on the stomach
+};
+
+StomachScene SitWithHandsOnStomach() {
+  StomachScene out;
+  out.s = SitDemo();
+  const std::string id = out.s.catalog.objects[0].id;
+  const std::string seat = "[\"" + id + "\", \"seat surface\", \"pelvis\", \"contact\", \"up\"]";
+  auto chain =
+      plan::ParseAndGround("[[" + seat + "], [" + seat + ", [\"" + id +
+                               "\", \"pelvis\", \"left hand\", \"contact\", \"none\"], "
+                               "[\"" +
+                               id + "\", \"pelvis\", \"right hand\", \"contact\", \"none\"]]]",
+                           "<test>", out.s.catalog);
+  EXPECT_TRUE(chain.ok()) << chain.status();
+  out.chain = *chain;
+  return out;
+}
+
+TEST(ReferencePoseTest, HandsOnTheStomachRestOnTheBellyIntegration) {
+  StomachScene st = SitWithHandsOnStomach();
+  StepTask task = BuildStepTask(st.chain.steps[1], st.s.catalog, 0, 1.0, plan::PairParams());
+  ASSERT_EQ(task.terms.size(), 3u);
+  EXPECT_TRUE(task.terms[1].at_belly && task.terms[2].at_belly);
+  const world::SimWorld& w = *st.s.world;
+  mjData* scratch = mj_makeData(w.model());
+  ReferencePose ref = SolveReferencePose(w, 0, task, w.data(), scratch);
+  SetAgentPose(w.agent(0), ref, scratch);
+  mj_kinematics(w.model(), scratch);
+  const auto pts = w.BodyPoints(scratch, 0);
+  const plan::BellyTouch belly = plan::BellyPoint(pts);
+  for (int k : {1, 2}) {
+    const Eigen::Vector3d p = pts[static_cast<int>(task.terms[k].joint)];
+    EXPECT_NEAR((p - belly.pos).norm(), BodyPointClearance(task.terms[k].joint), 0.02) << k;
+    EXPECT_GT((p - belly.pos).dot(belly.normal), 0.03) << k << ": in front of the belly";
+  }
+  mj_deleteData(scratch);
+}
+
+// the MPC puts both hands on the belly and keeps them there: the plan completes and holds 3 s
+// later; UniHSI's reading of the same pairs (to the pelvis point) is not met by this body
+TEST(MpcControllerTest, SitsWithBothHandsOnTheStomachIntegration) {
+  StomachScene st = SitWithHandsOnStomach();
+  auto ctl = MpcController::Create(st.s.world.get(), 0, *MpcConfig::Preset("fast"), 1);
+  ASSERT_TRUE(ctl.ok()) << ctl.status();
+  RunOptions ro;
+  ro.record = false;
+  ro.settle_s = 3.0;
+  EpisodeResult r = RunEpisode(*st.s.world, st.chain, {ctl->get()}, ro, nullptr);
+  EXPECT_TRUE(r.success) << r.end_reason;
+  EXPECT_FALSE(r.success_unihsi_points);
+  EXPECT_FALSE(r.fell);
+  const auto pts = st.s.world->BodyPoints(st.s.world->data(), 0);
+  const plan::BellyTouch belly = plan::BellyPoint(pts);
+  for (core::BodyJoint hand : {core::BodyJoint::kLeftHand, core::BodyJoint::kRightHand}) {
+    EXPECT_LT((pts[static_cast<int>(hand)] - belly.pos).norm(), 0.1);
+  }
+}
+
 }  // namespace
 }  // namespace simhuman::control

@@ -104,17 +104,11 @@ std::vector<double> Residual(const Problem& pr, const Vars& v) {
   }
   for (const ContactTerm& t : pr.task->terms) {
     const Eigen::Vector3d& p = pts[static_cast<int>(t.joint)];
-    Eigen::Vector3d np = t.Nearest(p, pts);
     if (t.type == plan::ContactType::kContact) {
-      Eigen::Vector3d dir = t.dir;
-      if (dir.squaredNorm() < 0.5) {
-        Eigen::Vector3d away = p - np;
-        dir = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
-      }
-      Eigen::Vector3d goal = np + dir * t.clearance_m + t.aim_offset;
+      Eigen::Vector3d goal = t.Touch(p, pts) + t.aim_offset;
       for (int k = 0; k < 3; ++k) r.push_back(o.w_contact * (p[k] - goal[k]));
     } else {
-      double dist = (p - np).norm();
+      double dist = (p - t.Nearest(p, pts)).norm();
       r.push_back(o.w_not_contact * std::max(0.0, 0.18 * pr.scale - dist));
     }
   }
