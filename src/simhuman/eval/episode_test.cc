@@ -108,6 +108,17 @@ TEST(EpisodeTest, StandingAndSeatedStarts) {
   p = AgentSpecs(spec);
   ASSERT_FALSE(p.ok());
   EXPECT_THAT(p.status().message(), HasSubstr("/humans/0/posture: 'sit' needs a seat"));
+  // a bed's mattress seats too: on the front edge of bedroom's bed (x 1.75-3.25, top 0.5 m)
+  world::SceneSpec bedroom = *world::BuiltinScene("bedroom");
+  bedroom.humans[0].posture = "sit";
+  bedroom.humans[0].pos_xy = Eigen::Vector2d(1.93, 0.1);
+  p = AgentSpecs(bedroom);
+  ASSERT_TRUE(p.ok()) << p.status();
+  EXPECT_NEAR((*p)[0].seated_pelvis_z,
+              world::DefaultSizes("bed").at("mattress_height") + world::SeatedPelvisAboveSeat(1.0),
+              1e-9);
+  bedroom.humans[0].pos_xy = Eigen::Vector2d(1.7, 0.1);  // just off the edge
+  EXPECT_FALSE(AgentSpecs(bedroom).ok());
 }
 
 TEST(EpisodeTest, ControllerSeedsAreDistinctAndStable) {

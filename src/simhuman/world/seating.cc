@@ -9,18 +9,20 @@ namespace simhuman::world {
 std::optional<double> SeatTopUnder(const core::SceneCatalog& scene, const Eigen::Vector2d& xy) {
   std::optional<double> top;
   for (const core::CatalogObject& o : scene.objects) {
-    const core::CatalogPart* seat = o.FindPart("seat surface");
-    if (!seat) continue;
     // the point in the object's frame, against each seat solid's box bounds
     const Eigen::Vector3d local =
         o.pose.quat.conjugate() * (Eigen::Vector3d(xy.x(), xy.y(), 0) - o.pose.pos);
-    for (const core::Shape& s : seat->shapes) {
-      const auto [lo, hi] = core::ShapesBounds({s});
-      if (local.x() < lo.x() || local.x() > hi.x() || local.y() < lo.y() || local.y() > hi.y()) {
-        continue;
+    for (const char* name : {"seat surface", "mattress"}) {  // a bed's edge seats too
+      const core::CatalogPart* seat = o.FindPart(name);
+      if (!seat) continue;
+      for (const core::Shape& s : seat->shapes) {
+        const auto [lo, hi] = core::ShapesBounds({s});
+        if (local.x() < lo.x() || local.x() > hi.x() || local.y() < lo.y() || local.y() > hi.y()) {
+          continue;
+        }
+        const double z = o.pose.pos.z() + hi.z();
+        if (!top || z > *top) top = z;
       }
-      const double z = o.pose.pos.z() + hi.z();
-      if (!top || z > *top) top = z;
     }
   }
   return top;
@@ -46,7 +48,8 @@ core::StatusOr<AgentSpec> AgentFromHuman(const HumanSpec& human, int index,
     return absl::InvalidArgumentError(
         where + "/posture: 'sit' needs a seat under the human's position (" +
         std::to_string(human.pos_xy.x()) + ", " + std::to_string(human.pos_xy.y()) +
-        "); place it on an object with a seat surface (chair, armchair, sofa, stool)");
+        "); place it on an object with a seat surface (chair, armchair, sofa, stool) or a "
+        "mattress (bed)");
   }
   p.seated_pelvis_z = *seat + SeatedPelvisAboveSeat(human.scale);
   SH_ASSIGN_OR_RETURN(const Embodiment* kind, FindEmbodiment(human.kind));
