@@ -152,6 +152,10 @@ class EpisodeLoop {
       if (tasks_[a].get_close && step > 0) {
         RefineLeaving(BuildStepTask(chain_.steps[step - 1], catalog_, a, scale, options_.pair),
                       &tasks_[a]);
+      } else if (tasks_[a].get_close) {
+        // a scene may start the human seated on the object the first step stands up from
+        RefineLeavingFromStart(Eigen::Vector3d(d_->qpos + world_.agent(a).root_qpos), scale,
+                               &tasks_[a]);
       }
       if (tasks_[a].get_close) {
         // a stand point inside furniture (a chair pushed under a table): stand in the gap

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "simhuman/world/humanoid.h"
+
 namespace simhuman::control {
 
 const char* PostureName(Posture p) {
@@ -155,6 +157,17 @@ void RefineLeaving(const StepTask& prev, StepTask* gc) {
     return;
   }
   gc->walk_yaw_rad = std::remainder(gc->stand_yaw_rad + M_PI, 2.0 * M_PI);
+}
+
+void RefineLeavingFromStart(const Eigen::Vector3d& pelvis, double scale, StepTask* gc) {
+  if (!gc->focus || pelvis.z() > 0.75 * world::kPelvisStandHeight * scale) return;
+  const Eigen::Vector3d local = gc->focus->pose.quat.conjugate() * (pelvis - gc->focus->pose.pos);
+  const auto [lo, hi] = gc->focus->LocalBounds();
+  if (local.x() < lo.x() || local.x() > hi.x() || local.y() < lo.y() || local.y() > hi.y()) return;
+  StepTask seated;
+  seated.focus = gc->focus;
+  seated.posture = Posture::kSit;
+  RefineLeaving(seated, gc);
 }
 
 void RefineApproach(const StepTask& next, double scale, StepTask* gc) {

@@ -81,6 +81,10 @@ void RefineApproach(const StepTask& next, double scale, StepTask* get_close);
 /// when it rises, so a walker finishing the step does not turn round towards the seat it left
 /// (the plan's get-close test is position only by default). No-op otherwise.
 void RefineLeaving(const StepTask& prev, StepTask* get_close);
+/// The same for the plan's first step, from where the human starts: when its pelvis (root
+/// position, world) is low (below 3/4 of standing height at `scale`) and over the get-close
+/// step's object, as a scene that starts it seated there has it, the step leaves that seat.
+void RefineLeavingFromStart(const Eigen::Vector3d& pelvis, double scale, StepTask* get_close);
 inline constexpr double kSitStartM = 0.36;
 inline constexpr double kLieStartFromPillowM = 0.65;
 inline constexpr double kReachAheadM = 0.45;

@@ -118,6 +118,21 @@ TEST(RefineApproach, LeavesOtherStepsAlone) {
 
 // standing up from a seat or bed: the walk heading faces away from it (the way the human faces
 // when it rises), the walk point stays; other steps before a get-close step change nothing
+// a scene that starts the human seated on the chair: the first step's stand-up faces away from
+// it; standing beside it, or seated elsewhere, changes nothing
+TEST(RefineLeaving, AFirstStandUpFromWhereTheSceneSeatsTheHumanFacesAway) {
+  const core::CatalogObject chair = Built("chair", 1, 2, 30);
+  StepTask gc = GetCloseFront(chair);
+  RefineLeavingFromStart(Eigen::Vector3d(1.0, 2.0, 0.55), 1.0, &gc);
+  EXPECT_NEAR(AngleDiff(gc.walk_yaw_rad, gc.stand_yaw_rad), M_PI, 1e-9);
+  for (const Eigen::Vector3d& pelvis : {Eigen::Vector3d(1.0, 2.0, 0.95),     // standing on it
+                                        Eigen::Vector3d(3.0, 2.0, 0.55)}) {  // seated elsewhere
+    StepTask other = GetCloseFront(chair);
+    RefineLeavingFromStart(pelvis, 1.0, &other);
+    EXPECT_EQ(other.walk_yaw_rad, other.stand_yaw_rad) << pelvis.transpose();
+  }
+}
+
 TEST(RefineLeaving, StandingUpFromASeatFacesAwayFromIt) {
   const core::CatalogObject chair = Built("chair", 1, 2, 30);
   const core::CatalogObject sofa = Built("sofa", 4, 0, 0);
