@@ -42,6 +42,11 @@ constexpr double kReachHeightLoM = 0.7, kReachHeightHiM = 1.5;
 constexpr double kApproachLoM = 0.55, kApproachHiM = 0.85;
 constexpr double kApproachLateralM = 0.25;
 constexpr double kApproachYawJitterDeg = 20.0;
+// stand-up: the seated pelvis this far behind the seat's front edge (at most half the seat's
+// depth), sideways on a sofa or bed within these
+constexpr double kStandUpDepthM = 0.22;
+constexpr double kStandUpSofaLateralM = 0.4, kStandUpBedLateralM = 0.3;
+constexpr double kStandUpYawJitterDeg = 5.0;
 // sit-far: distance from the seat's front face and bearing off its front direction
 constexpr double kSitFarLoM = 1.0, kSitFarHiM = 6.0, kSitFarBearingDeg = 60.0;
 
@@ -219,6 +224,36 @@ core::Status MakeSitFar(core::Rng& rng, EpisodeSpec* out) {
   return absl::OkStatus();
 }
 
+// stand-up: the human starts seated (scene posture "sit") on a seat one sits on with the feet on
+// the floor (the sit suite's types but the high stool, whose seated start would leave the feet
+// hanging) or on a bed's front edge, facing out; the plan is UniHSI's "stand up", a get-close
+// step to the object's front
+core::Status MakeStandUp(core::Rng& rng, EpisodeSpec* out) {
+  static const char* const kTypes[] = {"chair", "armchair", "sofa", "stool", "bed"};
+  const std::string type = kTypes[rng.UniformInt(0, 4)];
+  world::ObjectSpec o;
+  core::CatalogObject built;
+  SH_RETURN_IF_ERROR(RandomObject(type, rng, &o, &built));
+  const core::CatalogPart* seat = built.FindPart(type == "bed" ? "mattress" : "seat surface");
+  if (seat == nullptr) return absl::InternalError("eval suite stand-up: a " + type + " to sit on");
+  auto [lo, hi] = core::ShapesBounds(seat->shapes);
+  const double depth = std::min(kStandUpDepthM, 0.5 * (hi.x() - lo.x()));
+  const double lateral_m =
+      type == "bed" ? kStandUpBedLateralM : (type == "sofa" ? kStandUpSofaLateralM : 0.0);
+  const double lateral = 0.5 * (lo.y() + hi.y()) + rng.Uniform(-lateral_m, lateral_m);
+  world::HumanSpec h;
+  h.pos_xy = LocalToWorld(o.pos, o.yaw_rad, hi.x() - depth, lateral);
+  h.yaw_rad = core::WrapAngle(o.yaw_rad +
+                              rng.Uniform(-kStandUpYawJitterDeg, kStandUpYawJitterDeg) * kDegToRad);
+  h.posture = "sit";
+  out->variant = type;
+  out->object_id = o.id;
+  out->scene.objects = {o};
+  out->scene.humans = {h};
+  out->plan = PlanOf({PlanStep("stand up from " + o.id, {PlanGetClose(o.id, "front")})});
+  return absl::OkStatus();
+}
+
 // lie-far: as sit-far, for a bed: [get close (front)], [sit on the edge], [lie]
 core::Status MakeLieFar(core::Rng& rng, EpisodeSpec* out) {
   world::ObjectSpec o;
@@ -281,6 +316,8 @@ const std::vector<SuiteDef>& Suites() {
       {"sit-far", C::kMpc, X::kNone, MakeSitFar, "walk 1-6 m to a seat, then sit"},
       {"lie-far", C::kMpc, X::kLieAlongBed, MakeLieFar, "walk 1-6 m to a bed, then lie"},
       {"reach-far", C::kMpc, X::kHandAtPoint, MakeReachFar, "walk 1-6 m, then touch a point"},
+      {"stand-up", C::kMpc, X::kNone, MakeStandUp,
+       "seated on a chair, armchair, sofa, stool or a bed's edge: stand up"},
       {"walk", C::kWalkPolicy, X::kNone, nullptr, "the walking policy: walk to a goal"},
       {"walk-step", C::kWalkPolicy, X::kNone, nullptr,
        "the walking policy: short steps back and sideways"},

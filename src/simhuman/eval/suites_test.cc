@@ -123,6 +123,35 @@ TEST(SuitesTest, SitProtocolRanges) {
   EXPECT_EQ(types, (std::set<std::string>{"chair", "armchair", "sofa", "stool", "high_stool"}));
 }
 
+// stand-up: seated (posture "sit") on the seat or a bed's mattress, within 0.22 m of its front
+// edge, facing out; one get-close step to the front; the scene seats the human
+TEST(SuitesTest, StandUpStartsSeatedFacingOutAndGetsCloseToTheFront) {
+  std::set<std::string> types;
+  for (int i = 0; i < kSamples; ++i) {
+    EpisodeSpec s = Make("stand-up", core::DeriveSeed(1, i));
+    ASSERT_EQ(s.scene.objects.size(), 1u);
+    ASSERT_EQ(s.scene.humans.size(), 1u);
+    const world::ObjectSpec& o = s.scene.objects[0];
+    types.insert(o.type);
+    EXPECT_EQ(s.variant, o.type);
+    EXPECT_EQ(s.scene.humans[0].posture, "sit");
+    const core::CatalogObject built = Built(s);
+    const core::CatalogPart* seat = built.FindPart(o.type == "bed" ? "mattress" : "seat surface");
+    ASSERT_NE(seat, nullptr) << o.type;
+    auto [lo, hi] = core::ShapesBounds(seat->shapes);
+    const Eigen::Vector2d local = HumanInObjectFrame(s);
+    EXPECT_LE(hi.x() - local.x(), 0.22 + kTol) << o.type;
+    EXPECT_GT(hi.x() - local.x(), 0.0) << o.type;
+    EXPECT_LE(std::abs(core::WrapAngle(s.scene.humans[0].yaw_rad - o.yaw_rad)),
+              5 * kDegToRad + kTol);
+    ASSERT_EQ(s.plan["steps"].size(), 1u);
+    EXPECT_EQ(s.plan["steps"][0]["pairs"][0]["part"], "none");
+    EXPECT_EQ(s.plan["steps"][0]["pairs"][0]["direction"], "front");
+    ExpectRunnable(s);
+  }
+  EXPECT_EQ(types, (std::set<std::string>{"chair", "armchair", "sofa", "stool", "bed"}));
+}
+
 TEST(SuitesTest, LieProtocolRanges) {
   for (int i = 0; i < kSamples; ++i) {
     EpisodeSpec s = Make("lie", core::DeriveSeed(2, i));

@@ -220,10 +220,22 @@ bool WalkPolicyController::Arrived(const mjData* d, const WalkTolerance& tol) co
          std::abs(yaw_err) < tol.yaw_rad && speed < tol.speed_mps;
 }
 
+bool ThighsDown(core::Span<const Eigen::Vector3d> pts, double scale) {
+  if (pts.size() < core::kNumBodyJoints) return true;  // no body points: judge by height alone
+  auto drop = [&](core::BodyJoint hip, core::BodyJoint knee) {
+    return pts[static_cast<int>(hip)].z() - pts[static_cast<int>(knee)].z();
+  };
+  const double mean = 0.5 * (drop(core::BodyJoint::kLeftHip, core::BodyJoint::kLeftKnee) +
+                             drop(core::BodyJoint::kRightHip, core::BodyJoint::kRightKnee));
+  return mean > kThighsDownM * scale;
+}
+
 absl::Status WalkThenContactController::Act(const Observation& obs) {
   const world::AgentIndex& agent = obs.world->agent(obs.agent);
   const mjtNum* pelvis = obs.data->xpos + 3 * agent.pelvis_body;
-  const bool standing = pelvis[2] > 0.8 * agent.scale;
+  // standing: the pelvis high and the thighs hanging down from the hips (on a high stool the
+  // pelvis is as high, with the thighs near level)
+  const bool standing = pelvis[2] > 0.8 * agent.scale && ThighsDown(obs.body_points, agent.scale);
   // stood up: pelvis near standing height, trunk upright, not moving (a human half-way out of
   // a seat, leaning forward, is not the walker's to take)
   const mjtNum* v = obs.data->qvel + agent.root_qvel;

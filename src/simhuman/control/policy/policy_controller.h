@@ -77,6 +77,12 @@ class WalkPolicyController : public Controller {
 /// every other step. When the plan leaves a get-close step before the walker has stopped at
 /// the stand point (the plan's get-close test is looser), walking goes on until Arrived() or
 /// kMaxFinishS, so the handover happens standing still. Neither controller is owned.
+/// Both knees on average more than kThighsDownM x scale below their hips (a thigh is 0.42 m:
+/// about 45 degrees below level or steeper), as when standing; `pts` are one human's body
+/// points (BodyJoint order); true when there are none.
+inline constexpr double kThighsDownM = 0.3;
+bool ThighsDown(core::Span<const Eigen::Vector3d> pts, double scale);
+
 class WalkThenContactController : public Controller {
  public:
   WalkThenContactController(WalkPolicyController* walker, Controller* contact)

@@ -8,6 +8,7 @@
 
 #include "simhuman/control/policy/policy_net.h"
 #include "simhuman/core/testing_temp.h"
+#include "simhuman/world/model_builder.h"
 #include "simhuman/world/objects.h"
 
 namespace simhuman::control {
@@ -313,6 +314,45 @@ TEST(WalkThenContactController, StandUpIsTheContactControllersThenTheWalkerTakes
   ASSERT_TRUE(c.Act(obs).ok());
   EXPECT_TRUE(c.walking());
   EXPECT_EQ(mpc.acts, 3);
+}
+
+// perched as high as a standing pelvis (a high stool), the thighs level: not standing, so a
+// stand-up step starts with the contact controller, not the walker
+TEST(WalkThenContactController, APelvisAsHighAsStandingWithLevelThighsIsNotStanding) {
+  std::vector<Eigen::Vector3d> pts(core::kNumBodyJoints, Eigen::Vector3d(0, 0, 0.9));
+  EXPECT_FALSE(ThighsDown(pts, 1.0));
+  pts[static_cast<int>(core::BodyJoint::kLeftKnee)].z() = 0.48;
+  pts[static_cast<int>(core::BodyJoint::kRightKnee)].z() = 0.48;
+  EXPECT_TRUE(ThighsDown(pts, 1.0));
+  EXPECT_FALSE(ThighsDown(pts, 1.5));  // a tall human's thighs hang farther
+  EXPECT_TRUE(ThighsDown(std::vector<Eigen::Vector3d>{}, 1.0));
+
+  auto world = World();
+  auto walker =
+      WalkPolicyController::Load(WritePolicy("perch", "walk", kWalkObsDim), world.get(), 0);
+  ASSERT_TRUE(walker.ok());
+  FakeContact mpc;
+  WalkThenContactController c(walker->get(), &mpc);
+  StepTask stand_up;
+  stand_up.get_close = true;
+  stand_up.posture = Posture::kStand;
+  stand_up.stand_point = stand_up.walk_point = Eigen::Vector3d(2, 0, 0);
+  mjData* d = world->data();
+  const mjModel* m = world->model();
+  for (const auto& [name, angle] : world::SeatedHinges()) {
+    const int j = mj_name2id(m, mjOBJ_JOINT, (world::AgentPrefix(0) + name).c_str());
+    ASSERT_GE(j, 0) << name;
+    d->qpos[m->jnt_qposadr[j]] = angle;
+  }
+  mj_kinematics(m, d);  // the pelvis stays at standing height
+  Observation obs;
+  obs.world = world.get();
+  obs.data = d;
+  obs.task = &stand_up;
+  world->AllBodyPoints(d, 0, &obs.body_points);
+  ASSERT_TRUE(c.Act(obs).ok());
+  EXPECT_FALSE(c.walking());
+  EXPECT_EQ(mpc.acts, 1);
 }
 
 }  // namespace
