@@ -132,6 +132,11 @@ void PrintRunResult(const control::EpisodeResult& result, bool stands_at_end,
            "only; the eval suites count this as a failure)"
         << std::endl;
   }
+  if (result.success && !result.success_unihsi_points) {
+    out << "note: on UniHSI's body points (the pelvis point between the hips, a hand on the "
+           "pelvis measured to that point) the plan is not met: success_unihsi_points false in "
+        << result_path << std::endl;
+  }
   if (result.end_reason.rfind("unstable", 0) == 0 ||
       result.end_reason.rfind("controller", 0) == 0) {
     err << "simhuman run: warning: the episode ended early: " << result.end_reason << std::endl;
