@@ -242,16 +242,31 @@ class FakeContact : public Controller {
   int acts = 0;
 };
 
-TEST(WalkThenContactController, WalksGetCloseStepsAndHandsOverOnlyWhenStopped) {
-  auto world = World();
-  auto walker =
-      WalkPolicyController::Load(WritePolicy("hand", "walk", kWalkObsDim), world.get(), 0);
-  ASSERT_TRUE(walker.ok());
+// a walker (a policy file named `name`) and a fake contact controller behind one
+// WalkThenContactController, and a get-close step to (x, 0, 0)
+struct Handover {
+  std::unique_ptr<world::SimWorld> world;
+  std::unique_ptr<WalkPolicyController> walker;
   FakeContact mpc;
-  WalkThenContactController c(walker->get(), &mpc);
-  StepTask walk_task;
-  walk_task.get_close = true;
-  walk_task.stand_point = walk_task.walk_point = Eigen::Vector3d(3, 0, 0);
+  std::unique_ptr<WalkThenContactController> c;
+  StepTask get_close;
+
+  Handover(const std::string& name, double x) : world(World()) {
+    auto w = WalkPolicyController::Load(WritePolicy(name, "walk", kWalkObsDim), world.get(), 0);
+    EXPECT_TRUE(w.ok()) << w.status();
+    if (w.ok()) walker = std::move(w).value();
+    c = std::make_unique<WalkThenContactController>(walker.get(), &mpc);
+    get_close.get_close = true;
+    get_close.stand_point = get_close.walk_point = Eigen::Vector3d(x, 0, 0);
+  }
+};
+
+TEST(WalkThenContactController, WalksGetCloseStepsAndHandsOverOnlyWhenStopped) {
+  Handover h("hand", 3);
+  auto& world = h.world;
+  FakeContact& mpc = h.mpc;
+  WalkThenContactController& c = *h.c;
+  StepTask& walk_task = h.get_close;
   StepTask sit_task;
   Observation obs;
   obs.world = world.get();
@@ -278,15 +293,11 @@ TEST(WalkThenContactController, WalksGetCloseStepsAndHandsOverOnlyWhenStopped) {
 }
 
 TEST(WalkThenContactController, StandUpIsTheContactControllersThenTheWalkerTakesOver) {
-  auto world = World();
-  auto walker =
-      WalkPolicyController::Load(WritePolicy("stand", "walk", kWalkObsDim), world.get(), 0);
-  ASSERT_TRUE(walker.ok());
-  FakeContact mpc;
-  WalkThenContactController c(walker->get(), &mpc);
-  StepTask stand_up;
-  stand_up.get_close = true;
-  stand_up.stand_point = stand_up.walk_point = Eigen::Vector3d(2, 0, 0);
+  Handover h("stand", 2);
+  auto& world = h.world;
+  FakeContact& mpc = h.mpc;
+  WalkThenContactController& c = *h.c;
+  StepTask& stand_up = h.get_close;
   mjData* d = world->data();
   const int root = world->agent(0).root_qpos;
   const double stand_z = d->qpos[root + 2];
@@ -327,16 +338,12 @@ TEST(WalkThenContactController, APelvisAsHighAsStandingWithLevelThighsIsNotStand
   EXPECT_FALSE(ThighsDown(pts, 1.5));  // a tall human's thighs hang farther
   EXPECT_TRUE(ThighsDown(std::vector<Eigen::Vector3d>{}, 1.0));
 
-  auto world = World();
-  auto walker =
-      WalkPolicyController::Load(WritePolicy("perch", "walk", kWalkObsDim), world.get(), 0);
-  ASSERT_TRUE(walker.ok());
-  FakeContact mpc;
-  WalkThenContactController c(walker->get(), &mpc);
-  StepTask stand_up;
-  stand_up.get_close = true;
+  Handover h("perch", 2);
+  auto& world = h.world;
+  FakeContact& mpc = h.mpc;
+  WalkThenContactController& c = *h.c;
+  StepTask& stand_up = h.get_close;
   stand_up.posture = Posture::kStand;
-  stand_up.stand_point = stand_up.walk_point = Eigen::Vector3d(2, 0, 0);
   mjData* d = world->data();
   const mjModel* m = world->model();
   for (const auto& [name, angle] : world::SeatedHinges()) {
