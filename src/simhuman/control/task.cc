@@ -54,9 +54,14 @@ Eigen::Vector3d ContactTerm::Nearest(const Eigen::Vector3d& p,
 
 Eigen::Vector3d ContactTerm::Touch(const Eigen::Vector3d& p,
                                    core::Span<const Eigen::Vector3d> pts) const {
-  const Eigen::Vector3d np = Nearest(p, pts);
-  Eigen::Vector3d d = dir;
-  if (d.squaredNorm() < 0.5 && at_belly) d = plan::BellyPoint(pts).normal;
+  Eigen::Vector3d np, d = dir;
+  if (at_belly) {  // one belly solve for the point and its normal (the MPC's rollouts call this)
+    const plan::BellyTouch belly = plan::BellyPoint(pts);
+    np = belly.pos;
+    if (d.squaredNorm() < 0.5) d = belly.normal;
+  } else {
+    np = Nearest(p, pts);
+  }
   if (d.squaredNorm() < 0.5) {
     const Eigen::Vector3d away = p - np;
     d = away.norm() > 1e-6 ? Eigen::Vector3d(away.normalized()) : Eigen::Vector3d::UnitZ();
@@ -160,7 +165,7 @@ void RefineLeaving(const StepTask& prev, StepTask* gc) {
 }
 
 void RefineLeavingFromStart(const Eigen::Vector3d& pelvis, double scale, StepTask* gc) {
-  if (!gc->focus || pelvis.z() > 0.75 * world::kPelvisStandHeight * scale) return;
+  if (!gc->focus || !world::PelvisLowAsSeated(pelvis.z(), scale)) return;
   const Eigen::Vector3d local = gc->focus->pose.quat.conjugate() * (pelvis - gc->focus->pose.pos);
   const auto [lo, hi] = gc->focus->LocalBounds();
   if (local.x() < lo.x() || local.x() > hi.x() || local.y() < lo.y() || local.y() > hi.y()) return;

@@ -64,6 +64,10 @@ std::string BodyPointSiteName(core::BodyJoint joint);
 
 /// Standing height of the pelvis origin above the floor at scale 1 (feet flat, legs straight).
 inline constexpr double kPelvisStandHeight = 0.96;
+/// A pelvis origin below 3/4 of standing height (x scale) is seated or lying, not standing.
+inline bool PelvisLowAsSeated(double pelvis_z, double scale) {
+  return pelvis_z < 0.75 * kPelvisStandHeight * scale;
+}
 
 /// The `<body>` subtree of one humanoid (goes inside `<worldbody>`), placed standing at
 /// (x, y) with heading yaw_rad.

@@ -167,7 +167,7 @@ void MpcController::StartStep(const Observation& obs, const StepTask& task) {
   std::vector<ReferencePose> keys = {start};
   bool rising = false;
   // getting up from a seat goes through a lean-forward pose with the weight over the feet
-  bool seated = obs.data->qpos[a.root_qpos + 2] < 0.75 * world::kPelvisStandHeight * a.scale;
+  bool seated = world::PelvisLowAsSeated(obs.data->qpos[a.root_qpos + 2], a.scale);
   bool to_stand = task_.posture == Posture::kStand || task_.posture == Posture::kLean;
   if (seated && to_stand) {
     // lean forward while seated, then lift off over the feet, then extend

@@ -303,7 +303,7 @@ void SetUpStand(const StepTask& task, const Start& st, double s, Problem* pr, Va
     double reach = std::min(to.norm(), 0.25 * s);
     pr->root_anchor = st.pos + (to.norm() > 1e-6 ? Eigen::Vector3d(to.normalized() * reach)
                                                  : Eigen::Vector3d::Zero());
-    if (st.pos.z() < 0.75 * world::kPelvisStandHeight * s) {
+    if (world::PelvisLowAsSeated(st.pos.z(), s)) {
       // getting up from a seat: stand over the feet
       pr->feet_anchor = FeetForRising(st, s);
       pr->root_anchor = 0.5 * (pr->feet_anchor[0] + pr->feet_anchor[1]);
