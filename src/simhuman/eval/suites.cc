@@ -254,6 +254,18 @@ core::Status MakeStandUp(core::Rng& rng, EpisodeSpec* out) {
   return absl::OkStatus();
 }
 
+// get-up: the lie suite's start and plan, then UniHSI's "stand up" from the bed (a get-close
+// step to its front): getting up from lying, which the human does through sitting on the edge
+core::Status MakeGetUp(core::Rng& rng, EpisodeSpec* out) {
+  SH_RETURN_IF_ERROR(MakeLie(rng, out));
+  std::vector<json> steps;
+  LieSteps(out->object_id, &steps);
+  steps.push_back(PlanStep("stand up from " + out->object_id,
+                           {PlanGetClose(out->object_id, "front")}));
+  out->plan = PlanOf(steps);
+  return absl::OkStatus();
+}
+
 // lie-far: as sit-far, for a bed: [get close (front)], [sit on the edge], [lie]
 core::Status MakeLieFar(core::Rng& rng, EpisodeSpec* out) {
   world::ObjectSpec o;
@@ -318,6 +330,8 @@ const std::vector<SuiteDef>& Suites() {
       {"reach-far", C::kMpc, X::kHandAtPoint, MakeReachFar, "walk 1-6 m, then touch a point"},
       {"stand-up", C::kMpc, X::kNone, MakeStandUp,
        "seated on a chair, armchair, sofa, stool or a bed's edge: stand up"},
+      {"get-up", C::kMpc, X::kNone, MakeGetUp,
+       "sit on a bed's edge, lie along it, then get up and stand in front of it"},
       {"walk", C::kWalkPolicy, X::kNone, nullptr, "the walking policy: walk to a goal"},
       {"walk-step", C::kWalkPolicy, X::kNone, nullptr,
        "the walking policy: short steps back and sideways"},

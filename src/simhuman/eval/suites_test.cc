@@ -152,6 +152,25 @@ TEST(SuitesTest, StandUpStartsSeatedFacingOutAndGetsCloseToTheFront) {
   EXPECT_EQ(types, (std::set<std::string>{"chair", "armchair", "sofa", "stool", "bed"}));
 }
 
+// get-up: the lie suite's episode (same start, same two steps) plus a stand-up step from the bed
+TEST(SuitesTest, GetUpIsTheLieSuitePlusAStandUpFromTheBed) {
+  for (int i = 0; i < kSamples; ++i) {
+    const EpisodeSpec lie = Make("lie", core::DeriveSeed(3, i));
+    const EpisodeSpec s = Make("get-up", core::DeriveSeed(3, i));
+    ASSERT_EQ(s.scene.objects.size(), 1u);
+    EXPECT_EQ(s.scene.objects[0].type, "bed");
+    EXPECT_EQ(s.scene.humans[0].pos_xy, lie.scene.humans[0].pos_xy);
+    EXPECT_EQ(s.scene.humans[0].posture, "stand");
+    ASSERT_EQ(s.plan["steps"].size(), 3u);
+    EXPECT_EQ(s.plan["steps"][0], lie.plan["steps"][0]);
+    EXPECT_EQ(s.plan["steps"][1], lie.plan["steps"][1]);
+    EXPECT_EQ(s.plan["steps"][2]["pairs"][0]["part"], "none");
+    EXPECT_EQ(s.plan["steps"][2]["pairs"][0]["direction"], "front");
+    EXPECT_EQ(s.plan["steps"][2]["pairs"][0]["object"], s.scene.objects[0].id);
+    ExpectRunnable(s);
+  }
+}
+
 TEST(SuitesTest, LieProtocolRanges) {
   for (int i = 0; i < kSamples; ++i) {
     EpisodeSpec s = Make("lie", core::DeriveSeed(2, i));

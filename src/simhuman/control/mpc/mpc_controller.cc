@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "simhuman/control/arm_servo.h"
+#include "simhuman/control/mpc/getting_up.h"
 #include "simhuman/control/rollout.h"
 #include "simhuman/core/rng.h"
 
@@ -15,6 +16,8 @@ namespace {
 
 constexpr int kDofs = world::kHumanoidDofs;
 constexpr double kRefTableDt = 0.02;
+// how long past its reference a sit-up may take before the rise starts anyway (s)
+constexpr double kSitUpGraceS = 3.0;
 
 double Smoothstep(double x) {
   x = std::clamp(x, 0.0, 1.0);
@@ -156,18 +159,37 @@ void MpcController::SetReference(double now, const std::vector<ReferencePose>& k
   }
 }
 
-void MpcController::StartStep(const Observation& obs, const StepTask& task) {
+void MpcController::StartStep(const Observation& obs, const StepTask& step_task) {
   const world::AgentIndex& a = world_->agent(agent_);
+  // getting up while lying on a bed sits up on its front edge first (getting_up.h); Act()
+  // starts the rise from there
+  StepTask task = step_task;
+  std::vector<ReferencePose> sit_up;
+  get_up_.reset();
+  if (!LegsHangDown(obs.body_points, a.scale) || TrunkTiltedMoreThan(obs.body_points, 60.0) ||
+      sit_up_again_) {
+    if (std::optional<StepTask> sit = EdgeSitBeforeRising(step_task, a.scale)) {
+      get_up_ = step_task;
+      task = *sit;
+      sit_up = SitUpKeys(*world_, agent_, obs.data, scratch_);
+    }
+  }
   task_ = task;
   step_index_ = obs.step_index;
   next_aim_s_ = 0;
   progress_floor_ = 0;
   ReferencePose start = GetAgentPose(a, obs.data);
   ReferencePose goal = SolveReferencePose(*world_, agent_, task_, obs.data, scratch_);
+  if (get_up_)
+    SitWhereLying(task_, obs.body_points[static_cast<int>(core::BodyJoint::kPelvis)], &goal);
   std::vector<ReferencePose> keys = {start};
+  keys.insert(keys.end(), sit_up.begin(), sit_up.end());
   bool rising = false;
   // getting up from a seat goes through a lean-forward pose with the weight over the feet
-  bool seated = world::PelvisLowAsSeated(obs.data->qpos[a.root_qpos + 2], a.scale);
+  bool seated =
+      world::PelvisLowAsSeated(obs.data->qpos[a.root_qpos + 2], a.scale) || rise_from_seat_;
+  rise_from_seat_ = false;
+  sit_up_again_ = false;
   bool to_stand = task_.posture == Posture::kStand || task_.posture == Posture::kLean;
   if (seated && to_stand) {
     // lean forward while seated, then lift off over the feet, then extend
@@ -347,6 +369,18 @@ absl::Status MpcController::Act(const Observation& obs) {
   if (obs.step_index != step_index_) StartStep(obs, *obs.task);
   const world::AgentIndex& a = world_->agent(agent_);
   const double now = obs.time_s;
+  // sat up on the bed's edge, the legs down: now rise as from any seat; not there kSitUpGraceS
+  // after the reference: sit on the edge again from here
+  if (get_up_ && now >= ramp_t0_ + ramp_s_) {
+    const bool on_edge =
+        !TrunkTiltedMoreThan(obs.body_points, 30.0) && LegsHangDown(obs.body_points, a.scale);
+    if (on_edge || now >= ramp_t0_ + ramp_s_ + kSitUpGraceS) {
+      const StepTask stand = *get_up_;
+      rise_from_seat_ = on_edge;
+      sit_up_again_ = !on_edge;
+      StartStep(obs, stand);
+    }
+  }
 
   // adaptive contact weights (Eq. 9) from the current distances
   std::vector<double> rewards;

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "simhuman/control/controller.h"
@@ -83,7 +84,11 @@ class MpcController : public Controller {
   double stand_balance_from_s_ =
       1e9;  // after ramp_t0_; see StartStep  // seat height for sit postures (balance gating)
   bool recovering_ = false;
-  double next_aim_s_ = 0;  // next aim correction (see MpcConfig::aim_gain)
+  /// The stand-up step being worked on while the human first sits up on a bed's edge.
+  std::optional<StepTask> get_up_;
+  bool rise_from_seat_ = false;  // the next StartStep rises from a seat whatever its height
+  bool sit_up_again_ = false;    // the next StartStep sits up on the bed's edge again
+  double next_aim_s_ = 0;        // next aim correction (see MpcConfig::aim_gain)
   std::array<double, world::kHumanoidDofs> servo_{};  // hand servo offsets on servo targets
   std::array<std::array<int, 4>, 2> arm_dofs_{};      // hinge indices: right, left arm
   std::array<bool, 2> servo_active_{};                // right, left hand held by the servo

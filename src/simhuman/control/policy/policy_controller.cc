@@ -45,17 +45,27 @@ struct WalkPolicyController::Impl {
 void WalkPolicyController::Impl::PlanExit(const Observation& obs, const Eigen::Vector2d& here) {
   exiting = false;
   const core::SceneCatalog& scene = obs.world->catalog();
-  if (PointClearance(scene, here, nav) >= kExitRoomM || follower.empty()) return;
+  if (follower.empty()) return;
   const std::vector<Eigen::Vector2d>& pts = follower.path().points;
+  // a route that leaves behind or beside the walker turns on the spot first: that needs more
+  // room (a foot swung round caught a bed's edge, stood up in front of it)
+  Eigen::Vector3d pos;
+  double yaw = 0;
+  PelvisPose(obs.data, ix, &pos, &yaw);
+  const Eigen::Vector2d way = follower.PointAhead(kTurnProbeM) - here;
+  const bool turn_first =
+      way.norm() > 1e-6 &&
+      std::abs(core::WrapAngle(std::atan2(way.y(), way.x()) - yaw)) > kTurnFirstRad;
+  const double need = turn_first ? kTurnRoomM : kExitRoomM;
+  if (PointClearance(scene, here, nav) >= need) return;
   double travelled = 0;
   for (size_t k = 1; k < pts.size() && travelled < kMaxExitM; ++k) {
     const Eigen::Vector2d a = pts[k - 1], b = pts[k];
     const double len = (b - a).norm();
     for (double u = 0; u < len && travelled + u < kMaxExitM; u += kExitProbeM) {
       const Eigen::Vector2d p = a + (b - a) * (u / len);
-      if (PointClearance(scene, p, nav) < kExitRoomM) continue;
-      Eigen::Vector3d pos;
-      PelvisPose(obs.data, ix, &pos, &exit_yaw_rad);
+      if (PointClearance(scene, p, nav) < need) continue;
+      exit_yaw_rad = yaw;
       exit_point = p;
       exiting = true;
       return;

@@ -62,6 +62,10 @@ class WalkPolicyController : public Controller {
   /// point with that room, searched every kExitProbeM within kMaxExitM; the step ends within
   /// kExitDoneM of it.
   static constexpr double kExitRoomM = 0.25;
+  /// The same with less than kTurnRoomM of room when the route's way kTurnProbeM ahead is more
+  /// than kTurnFirstRad from the walker's heading (it would turn on the spot first).
+  static constexpr double kTurnRoomM = 0.45;
+  static constexpr double kTurnProbeM = 0.4;
   static constexpr double kExitProbeM = 0.05;
   static constexpr double kMaxExitM = 1.2;
   static constexpr double kExitDoneM = 0.12;

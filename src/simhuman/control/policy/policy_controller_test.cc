@@ -198,6 +198,58 @@ TEST(WalkPolicyController, WalksAroundATableOnTheWayToTheStandPoint) {
   EXPECT_NEAR(((*c)->state().target_xy - Eigen::Vector2d(3.4, 0)).norm(), 0, 1e-12);
 }
 
+// stood up 0.35 m in front of a bed, facing away from it: a route that leaves to the side first
+// steps out, heading kept, to where there is room to turn (turning on the spot there swung a
+// foot into the bed's edge); a route straight ahead, or the same route with the bed far behind,
+// does not
+TEST(WalkPolicyController, StepsAwayFromABedBeforeTurningBesideIt) {
+  auto walk_to = [](double bed_gap_m, Eigen::Vector2d goal, Eigen::Vector2d* target,
+                    double* target_yaw, double* room) {
+    world::ObjectSpec spec;
+    spec.id = "bed000";
+    spec.type = "bed";
+    auto bed = world::BuildObject(spec);
+    ASSERT_TRUE(bed.ok()) << bed.status();
+    spec.pos = Eigen::Vector3d(-bed_gap_m - bed->LocalBounds().second.x(), 0, 0);
+    bed = world::BuildObject(spec);
+    ASSERT_TRUE(bed.ok()) << bed.status();
+    core::SceneCatalog scene;
+    scene.objects.push_back(*bed);
+    world::ModelOptions o;
+    o.timestep_s = kWalkPhysicsDt;
+    auto world = world::SimWorld::Create(scene, {world::AgentSpec()}, o);
+    ASSERT_TRUE(world.ok()) << world.status();
+    auto c = WalkPolicyController::Load(WritePolicy("bed", "walk", kWalkObsDim), world->get(), 0);
+    ASSERT_TRUE(c.ok()) << c.status();
+    StepTask task;
+    task.get_close = true;
+    task.walk_point = Eigen::Vector3d(goal.x(), goal.y(), 0);
+    Observation obs;
+    obs.world = world->get();
+    obs.data = (*world)->data();
+    obs.task = &task;
+    ASSERT_TRUE((*c)->Act(obs).ok());
+    *target = (*c)->state().target_xy;
+    *target_yaw = (*c)->state().target_yaw_rad;
+    *room = PointClearance(scene, *target, NavConfig());
+  };
+  Eigen::Vector2d target;
+  double yaw = 1, room = 0;
+  const double start_room = 0.35;
+  walk_to(start_room, {1.0, 2.5}, &target, &yaw, &room);
+  EXPECT_GE(room, WalkPolicyController::kTurnRoomM);
+  EXPECT_GT(target.norm(), 0.05);
+  EXPECT_LT(target.norm(), WalkPolicyController::kMaxExitM);
+  EXPECT_NEAR(yaw, 0, 0.05);  // the heading kept: a step, not a turn
+  // straight ahead: no exit, the carrot on the route
+  walk_to(start_room, {3.0, 0.0}, &target, &yaw, &room);
+  EXPECT_NEAR(target.norm(), kRouteLookaheadM, 0.15);
+  // the bed 1 m behind: the walker turns on its spot
+  walk_to(1.0, {1.0, 2.5}, &target, &yaw, &room);
+  EXPECT_LT(target.norm(), 0.05);
+  EXPECT_GT(yaw, 0.8);
+}
+
 TEST(WalkPolicyController, NoTargetIsAnError) {
   auto world = World();
   auto c = WalkPolicyController::Load(WritePolicy("nt", "walk", kWalkObsDim), world.get(), 0);
