@@ -260,8 +260,8 @@ core::Status MakeGetUp(core::Rng& rng, EpisodeSpec* out) {
   SH_RETURN_IF_ERROR(MakeLie(rng, out));
   std::vector<json> steps;
   LieSteps(out->object_id, &steps);
-  steps.push_back(PlanStep("stand up from " + out->object_id,
-                           {PlanGetClose(out->object_id, "front")}));
+  steps.push_back(
+      PlanStep("stand up from " + out->object_id, {PlanGetClose(out->object_id, "front")}));
   out->plan = PlanOf(steps);
   return absl::OkStatus();
 }
