@@ -54,6 +54,7 @@ struct Args {
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   double grip_frac = -1, grip_max = -1;
+  double top_behind = -9, top_standoff = -1;
   double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1, object_clearance = -1;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
@@ -81,7 +82,9 @@ Args Parse(int argc, char** argv) {
                                                   {"--path-speed", &a.path_speed},
                                                   {"--clearance", &a.clearance},
                                                   {"--object-clearance", &a.object_clearance},
-                                                  {"--min-inertia", &a.min_inertia}};
+                                                  {"--min-inertia", &a.min_inertia},
+                                                  {"--top-behind", &a.top_behind},
+                                                  {"--top-standoff", &a.top_standoff}};
   const std::map<std::string, int*> ints = {{"--from", &a.from},
                                             {"--to", &a.to},
                                             {"--shortcuts", &a.shortcuts},
@@ -211,6 +214,8 @@ int main(int argc, char** argv) {
     sh::control::manip::TabletopOptions pipeline;
     pipeline.transport_checks_object = a.carried_check;
     pipeline.sphere_top_grasp = a.top_grasp;
+    if (a.top_behind > -1) pipeline.top_palm_behind_m = a.top_behind;
+    if (a.top_standoff >= 0) pipeline.top_standoff_m = a.top_standoff;
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
@@ -231,7 +236,25 @@ int main(int argc, char** argv) {
     if (a.rot_weight > 0) so.ik_rot_weight_m = a.rot_weight;
     const sh::control::manip::GraspPolicyFactory grasp =
         [&](const sh::control::manip::TabletopGoal& at) {
-          if (a.trace_from >= 0) std::printf("  grasp begins at t %.2f\n", (*w)->data()->time);
+          if (a.trace_from >= 0) {
+            const mjData* dd = (*w)->data();
+            std::printf("  grasp begins at t %.2f\n", dd->time);
+            // the digits' tips and the palm point from the object's centre of mass (world axes)
+            const Eigen::Vector3d c(dd->xipos + 3 * at.object_body);
+            for (const char* s : {"right_palm_centre", "right_index_tip", "right_middle_tip",
+                                  "right_ring_tip", "right_little_tip", "right_thumb_tip"}) {
+              int id = -1;
+              for (int k = 0; k < m->nsite && id < 0; ++k) {
+                const char* nm = mj_id2name(m, mjOBJ_SITE, k);
+                if (nm && std::string(nm).size() >= std::strlen(s) &&
+                    std::string(nm).compare(std::strlen(nm) - std::strlen(s), std::strlen(s), s) == 0)
+                  id = k;
+              }
+              if (id < 0) continue;
+              const Eigen::Vector3d p = Eigen::Vector3d(dd->site_xpos + 3 * id) - c;
+              std::printf("    %-18s (%6.3f %6.3f %6.3f) |%.3f|\n", s, p.x(), p.y(), p.z(), p.norm());
+            }
+          }
           return sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, at, pipeline, so);
         };
     std::unique_ptr<sh::render::OffscreenRenderer> r;

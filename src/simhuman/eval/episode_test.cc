@@ -303,6 +303,16 @@ TEST(EvalRunnerTest, SummaryByHand) {
   reread = EpisodeRecordFromJson(old_line);
   ASSERT_TRUE(reread.ok()) << reread.status();
   EXPECT_FALSE(reread->unihsi_recorded);
+  // the pair distances at the hold check round-trip, and are empty in older journals
+  recs[1].held_pair_errors_m = {0.04, 0.12};
+  reread = EpisodeRecordFromJson(EpisodeRecordJson(recs[1]));
+  ASSERT_TRUE(reread.ok()) << reread.status();
+  EXPECT_EQ(reread->held_pair_errors_m, (std::vector<double>{0.04, 0.12}));
+  old_line = EpisodeRecordJson(recs[1]);
+  old_line.erase("held_pair_errors_m");
+  reread = EpisodeRecordFromJson(old_line);
+  ASSERT_TRUE(reread.ok()) << reread.status();
+  EXPECT_TRUE(reread->held_pair_errors_m.empty());
 
   Summary empty = Summarize("sit", {}, 3);
   EXPECT_EQ(empty.episodes, 0);

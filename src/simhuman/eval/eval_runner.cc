@@ -116,6 +116,7 @@ nlohmann::ordered_json EpisodeRecordJson(const EpisodeRecord& r) {
     if (key != "success") j[key] = value;
   }
   j["held"] = r.held;
+  j["held_pair_errors_m"] = r.held_pair_errors_m;
   if (!r.extra.metric.empty()) {
     j["extra_check"] = r.extra.metric;
     j["extra_pass"] = r.extra.pass;
@@ -137,6 +138,8 @@ core::StatusOr<EpisodeRecord> EpisodeRecordFromJson(const nlohmann::json& j) {
     r.variant = j.at("variant").get<std::string>();
     r.success = j.at("success").get<bool>();
     r.held = j.at("held").get<bool>();
+    r.held_pair_errors_m =
+        j.value("held_pair_errors_m", std::vector<double>());  // absent before session 33
     control::EpisodeResult& res = r.result;
     res.success = j.at("plan_success").get<bool>();
     res.steps_completed = j.at("steps_completed").get<int>();
@@ -250,6 +253,7 @@ core::StatusOr<EpisodeRecord> RunSuiteEpisode(const EvalOptions& options, int in
   const std::vector<plan::BodyPoints> bodies = control::AllBodyPoints(**sim, (*sim)->data());
   plan::StepEval last = plan::EvaluateStep(chain->steps.back(), now, bodies, run.pair);
   JudgeEpisode(last.complete && GetCloseHumansStand(chain->steps.back(), bodies), &rec);
+  for (const plan::PairEval& e : last.pairs) rec.held_pair_errors_m.push_back(e.distance_m);
   rec.motion = TrajectoryMotionMetrics(**sim, spec->agent, trajectory.time_s, trajectory.qpos);
   rec.scene = world::SceneToJson(spec->scene);
   rec.plan = spec->plan;

@@ -31,6 +31,9 @@ struct EpisodeRecord {
   ExtraResult extra;
   /// The last step's pairs still hold kEvalSettleS after the plan completed, without a fall.
   bool held = false;
+  /// The last step's pair distances (PairEval::distance_m, m) when `held` was judged: which
+  /// pair drifted when a completed plan did not hold. Empty in journals before session 33.
+  std::vector<double> held_pair_errors_m;
   bool success = false;  ///< plan success, held, and the extra check
   /// result.success_unihsi_points was measured (false for journals before session 31)
   bool unihsi_recorded = true;
