@@ -247,12 +247,14 @@ int main(int argc, char** argv) {
               for (int k = 0; k < m->nsite && id < 0; ++k) {
                 const char* nm = mj_id2name(m, mjOBJ_SITE, k);
                 if (nm && std::string(nm).size() >= std::strlen(s) &&
-                    std::string(nm).compare(std::strlen(nm) - std::strlen(s), std::strlen(s), s) == 0)
+                    std::string(nm).compare(std::strlen(nm) - std::strlen(s), std::strlen(s), s) ==
+                        0)
                   id = k;
               }
               if (id < 0) continue;
               const Eigen::Vector3d p = Eigen::Vector3d(dd->site_xpos + 3 * id) - c;
-              std::printf("    %-18s (%6.3f %6.3f %6.3f) |%.3f|\n", s, p.x(), p.y(), p.z(), p.norm());
+              std::printf("    %-18s (%6.3f %6.3f %6.3f) |%.3f|\n", s, p.x(), p.y(), p.z(),
+                          p.norm());
             }
           }
           return sh::control::manip::MakeScriptedGrasp(m, (*w)->data(), *ix, at, pipeline, so);
