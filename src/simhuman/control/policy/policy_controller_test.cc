@@ -26,12 +26,14 @@ std::string WritePolicy(const std::string& name, const std::string& task, int ob
   return path;
 }
 
-std::unique_ptr<world::SimWorld> World() {
+// one human at the origin facing +x among `scene`'s objects, at the walker's physics step
+// (nullptr, with a test failure, if the world cannot be built)
+std::unique_ptr<world::SimWorld> World(const core::SceneCatalog& scene = {}) {
   world::ModelOptions o;
   o.timestep_s = kWalkPhysicsDt;
-  auto w = world::SimWorld::Create(core::SceneCatalog(), {world::AgentSpec()}, o);
+  auto w = world::SimWorld::Create(scene, {world::AgentSpec()}, o);
   EXPECT_TRUE(w.ok()) << w.status();
-  return *std::move(w);
+  return w.ok() ? *std::move(w) : nullptr;
 }
 
 TEST(WalkPolicyController, ActsWithFiniteTargetsAtItsOwnRate) {
@@ -168,18 +170,16 @@ TEST(WalkPolicyController, WalksAroundATableOnTheWayToTheStandPoint) {
   ASSERT_TRUE(table.ok()) << table.status();
   core::SceneCatalog scene;
   scene.objects.push_back(*table);
-  world::ModelOptions o;
-  o.timestep_s = kWalkPhysicsDt;
-  auto world = world::SimWorld::Create(scene, {world::AgentSpec()}, o);
-  ASSERT_TRUE(world.ok()) << world.status();
-  auto c = WalkPolicyController::Load(WritePolicy("route", "walk", kWalkObsDim), world->get(), 0);
+  auto world = World(scene);
+  ASSERT_NE(world, nullptr);
+  auto c = WalkPolicyController::Load(WritePolicy("route", "walk", kWalkObsDim), world.get(), 0);
   ASSERT_TRUE(c.ok()) << c.status();
   StepTask task;
   task.get_close = true;
   task.walk_point = Eigen::Vector3d(3.4, 0, 0);
   Observation obs;
-  obs.world = world->get();
-  obs.data = (*world)->data();
+  obs.world = world.get();
+  obs.data = world->data();
   obs.task = &task;
   ASSERT_TRUE((*c)->Act(obs).ok());
   const NavPath* route = (*c)->route();
@@ -215,18 +215,16 @@ TEST(WalkPolicyController, StepsAwayFromABedBeforeTurningBesideIt) {
     ASSERT_TRUE(bed.ok()) << bed.status();
     core::SceneCatalog scene;
     scene.objects.push_back(*bed);
-    world::ModelOptions o;
-    o.timestep_s = kWalkPhysicsDt;
-    auto world = world::SimWorld::Create(scene, {world::AgentSpec()}, o);
-    ASSERT_TRUE(world.ok()) << world.status();
-    auto c = WalkPolicyController::Load(WritePolicy("bed", "walk", kWalkObsDim), world->get(), 0);
+    auto world = World(scene);
+    ASSERT_NE(world, nullptr);
+    auto c = WalkPolicyController::Load(WritePolicy("bed", "walk", kWalkObsDim), world.get(), 0);
     ASSERT_TRUE(c.ok()) << c.status();
     StepTask task;
     task.get_close = true;
     task.walk_point = Eigen::Vector3d(goal.x(), goal.y(), 0);
     Observation obs;
-    obs.world = world->get();
-    obs.data = (*world)->data();
+    obs.world = world.get();
+    obs.data = world->data();
     obs.task = &task;
     ASSERT_TRUE((*c)->Act(obs).ok());
     *target = (*c)->state().target_xy;
