@@ -29,8 +29,6 @@ struct JointDef {
 
 // segment masses (kg) at scale 1; after Winter's segment fractions for a 60 kg adult
 constexpr double kPelvisMass = 8.5, kTorsoMass = 21.0, kHeadMass = 4.9;
-// the head's half length (front to back), half breadth and half height
-constexpr double kHeadHalf[3] = {0.098, 0.076, 0.11};
 constexpr double kUpperArmMass = 1.7, kLowerArmMass = 0.96, kHandMass = 0.36;
 constexpr double kThighMass = 6.0, kShinMass = 2.8, kFootMass = 0.87;
 
@@ -71,12 +69,6 @@ class Writer {
     o << "<geom name=\"" << p_ << name << "\" type=\"sphere\" pos=\"" << Pos(x, y, z)
       << "\" size=\"" << F(L(r)) << "\" mass=\"" << F(M(mass)) << "\" rgba=\"" << rgba_ << "\""
       << extra << "/>\n";
-  }
-  void Ellipsoid(std::ostringstream& o, const std::string& name, double x, double y, double z,
-                 double ax, double ay, double az, double mass) const {
-    o << "<geom name=\"" << p_ << name << "\" type=\"ellipsoid\" pos=\"" << Pos(x, y, z)
-      << "\" size=\"" << Pos(ax, ay, az) << "\" mass=\"" << F(M(mass)) << "\" rgba=\"" << rgba_
-      << "\"/>\n";
   }
   void Site(std::ostringstream& o, core::BodyJoint j, double x, double y, double z) const {
     NamedSite(o, BodyPointSiteName(j), x, y, z);
@@ -227,10 +219,7 @@ std::string HumanoidBodyXml(const HumanoidSpec& spec, double x, double y, double
   o << "<body name=\"" << p << "head\" pos=\"" << w.Pos(0, 0, 0.38) << "\">\n";
   for (const char* j : {"neck_x", "neck_y", "neck_z"}) w.Joint(o, Def(j));
   w.Capsule(o, "neck_geom", 0, 0, 0.0, 0, 0, 0.06, 0.05, 0.2 * kHeadMass);
-  // an adult head: about 20 cm long, 15 cm wide, 22 cm from chin to crown (anthropometric
-  // surveys, docs/BENCHMARKS.md issue 21), not a 20 cm ball
-  w.Ellipsoid(o, "head_geom", 0.01, 0, 0.155, kHeadHalf[0], kHeadHalf[1], kHeadHalf[2],
-              0.8 * kHeadMass);
+  w.Sphere(o, "head_geom", 0.01, 0, 0.16, 0.1, 0.8 * kHeadMass);
   w.Site(o, BodyJoint::kHead, 0.01, 0, 0.16);
   o << "</body>\n";
 

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <set>
-#include <string>
 
 #include "simhuman/world/embodiment.h"
 #include "simhuman/world/health.h"
@@ -59,21 +58,6 @@ TEST(HumanoidTest, HumanProportionsAndMass) {
   EXPECT_GT(at(core::BodyJoint::kLeftHand).y(), 0.1);  // left is +y when facing +x
   EXPECT_LT(at(core::BodyJoint::kRightHand).y(), -0.1);
   EXPECT_NEAR(at(core::BodyJoint::kLeftFoot).z(), 0.04, 0.02);
-}
-
-TEST(HumanoidTest, TheHeadHasAnAdultsLengthBreadthAndHeight) {
-  auto w = Empty();
-  const mjModel* m = w->model();
-  int head = -1;
-  for (int g = 0; g < m->ngeom && head < 0; ++g) {
-    const std::string name = mj_id2name(m, mjOBJ_GEOM, g) ? mj_id2name(m, mjOBJ_GEOM, g) : "";
-    if (name.size() >= 9 && name.compare(name.size() - 9, 9, "head_geom") == 0) head = g;
-  }
-  ASSERT_GE(head, 0);
-  EXPECT_EQ(m->geom_type[head], mjGEOM_ELLIPSOID);
-  EXPECT_NEAR(2 * m->geom_size[3 * head + 0], 0.195, 0.01);  // glabella to back of the head
-  EXPECT_NEAR(2 * m->geom_size[3 * head + 1], 0.15, 0.01);   // ear to ear
-  EXPECT_NEAR(2 * m->geom_size[3 * head + 2], 0.22, 0.015);  // chin to crown
 }
 
 TEST(HumanoidTest, ChildVariantScalesWithOneParameter) {

@@ -7,9 +7,8 @@ namespace simhuman::perceive {
 
 namespace {
 constexpr double kDeg = M_PI / 180.0;
-// between the eyes in the head body's frame at scale 1: the head (an ellipsoid) has its centre at
-// (0.01, 0, 0.155), its front 0.107 m ahead at the eyes' height; the camera sits just in front of
-// it
+// between the eyes in the head body's frame at scale 1: the head sphere's centre is at
+// (0.01, 0, 0.16) with radius 0.1; the camera sits just in front of its surface
 const Eigen::Vector3d kEyeInHead(0.115, 0.0, 0.17);
 }  // namespace
 
