@@ -243,14 +243,7 @@ int main(int argc, char** argv) {
             const Eigen::Vector3d c(dd->xipos + 3 * at.object_body);
             for (const char* s : {"right_palm_centre", "right_index_tip", "right_middle_tip",
                                   "right_ring_tip", "right_little_tip", "right_thumb_tip"}) {
-              int id = -1;
-              for (int k = 0; k < m->nsite && id < 0; ++k) {
-                const char* nm = mj_id2name(m, mjOBJ_SITE, k);
-                if (nm && std::string(nm).size() >= std::strlen(s) &&
-                    std::string(nm).compare(std::strlen(nm) - std::strlen(s), std::strlen(s), s) ==
-                        0)
-                  id = k;
-              }
+              const int id = mj_name2id(m, mjOBJ_SITE, s);  // the seated human is agent 0
               if (id < 0) continue;
               const Eigen::Vector3d p = Eigen::Vector3d(dd->site_xpos + 3 * id) - c;
               std::printf("    %-18s (%6.3f %6.3f %6.3f) |%.3f|\n", s, p.x(), p.y(), p.z(),
