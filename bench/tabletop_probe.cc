@@ -51,10 +51,12 @@ struct Args {
   double trace_from = -1, trace_to = -1, trace_dt = 0.02;  ///< the trace's window and step (s)
   bool trace_contacts = false, trace_arm = false;
   // pipeline and scripted-grasp settings (negative or 0: the default)
+  bool touch_gap0 = true;
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   double grip_frac = -1, grip_max = -1;
   double top_behind = -9, top_standoff = -1;
+  double palm_behind = -1, pregrasp_gap = -1, close_rate = -1, hold_rate = -1, margin = -9;
   double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1, object_clearance = -1;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
@@ -84,18 +86,27 @@ Args Parse(int argc, char** argv) {
                                                   {"--object-clearance", &a.object_clearance},
                                                   {"--min-inertia", &a.min_inertia},
                                                   {"--top-behind", &a.top_behind},
-                                                  {"--top-standoff", &a.top_standoff}};
+                                                  {"--top-standoff", &a.top_standoff},
+                                                  {"--palm-behind", &a.palm_behind},
+                                                  {"--pregrasp-gap", &a.pregrasp_gap},
+                                                  {"--close-rate", &a.close_rate},
+                                                  {"--hold-rate", &a.hold_rate},
+                                                  {"--behind-margin", &a.margin}};
   const std::map<std::string, int*> ints = {{"--from", &a.from},
                                             {"--to", &a.to},
                                             {"--shortcuts", &a.shortcuts},
                                             {"--approach-steps", &a.approach_steps},
                                             {"--thumb-delay", &a.thumb_delay},
                                             {"--grasp-steps", &a.grasp_steps}};
-  const std::map<std::string, bool*> bools = {
-      {"--trace-contacts", &a.trace_contacts}, {"--trace-arm", &a.trace_arm},
-      {"--hold-rotation", &a.hold_rotation},   {"--press-closing", &a.press_closing},
-      {"--carried-check", &a.carried_check},   {"--top-grasp", &a.top_grasp},
-      {"--no-spheres", &a.no_spheres},         {"--profile", &a.profile}};
+  const std::map<std::string, bool*> bools = {{"--trace-contacts", &a.trace_contacts},
+                                              {"--trace-arm", &a.trace_arm},
+                                              {"--hold-rotation", &a.hold_rotation},
+                                              {"--press-closing", &a.press_closing},
+                                              {"--carried-check", &a.carried_check},
+                                              {"--top-grasp", &a.top_grasp},
+                                              {"--no-spheres", &a.no_spheres},
+                                              {"--touch-gap0", &a.touch_gap0},
+                                              {"--profile", &a.profile}};
   const std::map<std::string, std::string*> strings = {
       {"--shape", &a.shape}, {"--kind", &a.kind}, {"--sheet-dir", &a.sheet_dir}};
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -145,6 +156,10 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
         other = b1;
         sign = 1;
       } else {
+        const int sup = b1 == g.support_body ? b2 : b2 == g.support_body ? b1 : -1;
+        if (a.trace_contacts && sup >= 0) {
+          std::printf("    support touches %s\n", mj_id2name(m, mjOBJ_BODY, sup));
+        }
         continue;
       }
       if (a.trace_contacts) std::printf("    contact with %s\n", mj_id2name(m, mjOBJ_BODY, other));
@@ -164,6 +179,8 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
         ro(d->xmat + 9 * g.object_body);
     const Eigen::Matrix3d rel = rh.transpose() * ro;
     if (rel0->isZero()) {
+      std::printf("  trace: object %s, support %s\n", mj_id2name(m, mjOBJ_BODY, g.object_body),
+                  g.support_body < 0 ? "table" : mj_id2name(m, mjOBJ_BODY, g.support_body));
       *rel0 = rel;
       *rh0 = rh;
     }
@@ -176,6 +193,11 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
         d->xipos[3 * g.object_body], d->xipos[3 * g.object_body + 1],
         d->xipos[3 * g.object_body + 2], f_hand.x(), f_hand.y(), f_hand.z(), n_hand);
     if (a.trace_contacts) {
+      const int table = mj_name2id(m, mjOBJ_BODY, "obj/table000");
+      if (table >= 0) {
+        std::printf("    table tilt %.2f deg, origin (%.3f %.3f %.3f)\n", tilt(table),
+                    d->xpos[3 * table], d->xpos[3 * table + 1], d->xpos[3 * table + 2]);
+      }
       const mjtNum* palm = d->site_xpos + 3 * ix.arm.palm_site;
       std::printf("    palm (%.3f %.3f %.3f)\n", palm[0], palm[1], palm[2]);
     }
@@ -216,6 +238,9 @@ int main(int argc, char** argv) {
     pipeline.sphere_top_grasp = a.top_grasp;
     if (a.top_behind > -1) pipeline.top_palm_behind_m = a.top_behind;
     if (a.top_standoff >= 0) pipeline.top_standoff_m = a.top_standoff;
+    if (a.palm_behind >= 0) pipeline.palm_behind_m = a.palm_behind;
+    if (a.margin > -1) pipeline.palm_behind_margin_m = a.margin;
+    if (a.pregrasp_gap >= 0) pipeline.pregrasp_gap_m = a.pregrasp_gap;
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
@@ -230,7 +255,10 @@ int main(int argc, char** argv) {
     sh::control::manip::ScriptedGraspOptions so;
     so.hold_rotation = a.hold_rotation;
     so.press_while_closing = a.press_closing;
+    so.touch_ends_gap = a.touch_gap0;
     if (a.press_m >= 0) so.press_m = a.press_m;
+    if (a.close_rate > 0) so.close_rate = static_cast<float>(a.close_rate);
+    if (a.hold_rate >= 0) so.hold_rate = static_cast<float>(a.hold_rate);
     if (a.approach_steps > 0) so.approach_steps = a.approach_steps;
     if (a.thumb_delay >= 0) so.thumb_delay_steps = a.thumb_delay;
     if (a.rot_weight > 0) so.ik_rot_weight_m = a.rot_weight;

@@ -51,6 +51,8 @@ ArmCollider::ArmCollider(const mjModel* m, const ArmChain& arm, int carried_body
   if (m->opt.disableflags & (mjDSBL_CONTACT | mjDSBL_CONSTRAINT)) return;
   std::vector<bool> in_arm(m->nbody, false);
   for (int b : arm.bodies) in_arm[b] = true;
+  std::vector<bool> parent(m->nbody, false);
+  for (int b = 1; b < m->nbody; ++b) parent[m->body_parentid[b]] = true;
   auto checked = [&](int g) {
     const int b = m->geom_bodyid[g];
     return in_arm[b] || b == carried_body;
@@ -70,9 +72,15 @@ ArmCollider::ArmCollider(const mjModel* m, const ArmChain& arm, int carried_body
         std::swap(p.arm1, p.arm2);
       }
       if (!mjCOLLISIONFUNC[m->geom_type[p.g1]][m->geom_type[p.g2]]) continue;
-      const int other = in_arm[b1] ? b2 : in_arm[b2] ? b1 : -1;
-      if (other >= 0 && other != carried_body && m->body_jntnum[other] > 0 &&
-          m->jnt_type[m->body_jntadr[other]] == mjJNT_FREE) {
+      // the body the arm or the carried object must keep clear of: a movable object (a free
+      // joint; for the carried object only a body of its own, not a humanoid's root)
+      const bool arm_pair = in_arm[b1] || in_arm[b2];
+      const int other = arm_pair             ? (in_arm[b1] ? b2 : b1)
+                        : b1 == carried_body ? b2
+                        : b2 == carried_body ? b1
+                                             : -1;
+      if (other >= 0 && other != carried_body && (arm_pair || !parent[other]) &&
+          m->body_jntnum[other] > 0 && m->jnt_type[m->body_jntadr[other]] == mjJNT_FREE) {
         p.movable = other;
       }
       p.margin = (m->opt.enableflags & mjENBL_OVERRIDE)

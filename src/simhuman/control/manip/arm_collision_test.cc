@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "simhuman/control/manip/grasp_task.h"
 #include "simhuman/core/rng.h"
@@ -172,6 +173,51 @@ TEST(ArmCollisionTest, KeepsTheClearanceFromMovableObjectsThatMjCollisionMeasure
     }
   }
   EXPECT_GT(kept_apart, 20);  // the clearance counts poses that do not touch
+}
+
+// A carried object keeps the clearance from the other movable objects too (it swung into a
+// stack's bottom object on the way over it), and only the clearance: just apart, it is free of
+// contacts.
+TEST(ArmCollisionTest, ACarriedObjectKeepsTheClearanceFromOtherObjectsIntegration) {
+  const std::optional<TableScene> scene = MakeTableScene(3, "stack");
+  ASSERT_TRUE(scene);
+  const mjModel* m = scene->world->model();
+  mjData* d = scene->world->data();
+  const int obj = scene->obj;
+  // another object on the table: a body of its own with a free joint
+  int other = -1;
+  for (int b = 1; b < m->nbody && other < 0; ++b) {
+    const bool free = m->body_jntnum[b] > 0 && m->jnt_type[m->body_jntadr[b]] == mjJNT_FREE;
+    if (free && b != obj && m->body_parentid[b] == 0 &&
+        std::string(m->names + m->name_bodyadr[b]).rfind("obj/", 0) == 0) {
+      other = b;
+    }
+  }
+  ASSERT_GE(other, 0);
+  const int other_qpos = m->jnt_qposadr[m->body_jntadr[other]];
+  constexpr double kClear = 0.02, kTol = 0.002;
+  const ArmCollider carrying(m, scene->gi.arm, obj);
+  // the carried object over the other one, raised until it no longer touches it
+  auto put_at = [&](double dz) {
+    for (int i = 0; i < 2; ++i) d->qpos[scene->obj_qpos + i] = d->qpos[other_qpos + i];
+    d->qpos[scene->obj_qpos + 2] = d->qpos[other_qpos + 2] + dz;
+    mj_kinematics(m, d);
+  };
+  double apart = -1;
+  for (double dz = 0.05; dz < 0.4; dz += 0.001) {
+    put_at(dz);
+    if (carrying.Count(d, {obj}, kTol) == 0) {
+      apart = dz;
+      break;
+    }
+  }
+  ASSERT_GT(apart, 0);
+  put_at(apart + 0.01);
+  EXPECT_EQ(carrying.Count(d, {obj}, kTol), 0);
+  EXPECT_GT(carrying.Count(d, {obj}, kTol, kClear), 0);
+  EXPECT_EQ(carrying.Count(d, {obj}, kTol, kClear, other), 0);  // an exempt object is exempt
+  put_at(apart + kClear + 0.01);
+  EXPECT_EQ(carrying.Count(d, {obj}, kTol, kClear), 0);
 }
 
 }  // namespace

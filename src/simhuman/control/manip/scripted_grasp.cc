@@ -73,7 +73,7 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
       } else {
         // the palm on the object: no gap, whatever an estimate says (it would not follow an
         // object the palm pushes; the simulation's state does)
-        const double gap = seen.estimated && palm ? 0.0 : (c - p).dot(n) - goal.half_width_m;
+        const double gap = (seen.estimated || o.touch_ends_gap) && palm ? 0.0 : (c - p).dot(n) - goal.half_width_m;
         st->palm_goal = p + n * (gap + o.press_m);
         st->palm_goal.z() = st->grip_z;
       }

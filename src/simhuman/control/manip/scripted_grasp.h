@@ -29,6 +29,11 @@ struct ScriptedGraspOptions {
   /// The approach's rotation target is the hand's rotation when the grasp began; false: its
   /// current rotation (it then drifts with every push on the hand)
   bool hold_rotation = true;
+  /// Once the palm touches, its goal lies `press_m` past where it is, not `press_m` inside the
+  /// side the object's centre and half width give: a palm that meets a box's side at an angle,
+  /// or at its edge, chased that side and pushed the object over (0-200 and 200-400 of the
+  /// tabletop suite, boxes and cylinders: 227 of 272 placed against 222)
+  bool touch_ends_gap = true;
 };
 
 /// The scripted grasp of `goal`'s object by arm `ix` in the simulation `m`/`d` (read at each
