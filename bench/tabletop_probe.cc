@@ -56,6 +56,7 @@ struct Args {
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   double grip_frac = -1, grip_max = -1;
   double top_behind = -9, top_standoff = -1;
+  double extra_lean = -1, lower_speed = -1, release_s = -1;
   double palm_behind = -1, pregrasp_gap = -1, close_rate = -1, hold_rate = -1, margin = -9;
   double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1, object_clearance = -1;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
@@ -90,6 +91,9 @@ Args Parse(int argc, char** argv) {
                                                   {"--palm-behind", &a.palm_behind},
                                                   {"--pregrasp-gap", &a.pregrasp_gap},
                                                   {"--close-rate", &a.close_rate},
+                                                  {"--extra-lean", &a.extra_lean},
+                                                  {"--lower-speed", &a.lower_speed},
+                                                  {"--release-s", &a.release_s},
                                                   {"--hold-rate", &a.hold_rate},
                                                   {"--behind-margin", &a.margin}};
   const std::map<std::string, int*> ints = {{"--from", &a.from},
@@ -206,6 +210,12 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
       for (int j = 0; j < 7; ++j) std::printf(" %6.2f", d->qpos[ix.arm.qpos[j]]);
       std::printf("  tau");
       for (int j = 0; j < 7; ++j) std::printf(" %6.1f", d->actuator_force[ix.arm.actuator[j]]);
+      for (int j = 0; j < m->njnt; ++j) {
+        const std::string name = mj_id2name(m, mjOBJ_JOINT, j) ? mj_id2name(m, mjOBJ_JOINT, j) : "";
+        if (name.size() >= 9 && name.compare(name.size() - 9, 9, "abdomen_y") == 0) {
+          std::printf("  lean %.1f deg", d->qpos[m->jnt_qposadr[j]] * 180 / M_PI);
+        }
+      }
       std::printf("\n");
     }
   };
@@ -241,6 +251,9 @@ int main(int argc, char** argv) {
     if (a.palm_behind >= 0) pipeline.palm_behind_m = a.palm_behind;
     if (a.margin > -1) pipeline.palm_behind_margin_m = a.margin;
     if (a.pregrasp_gap >= 0) pipeline.pregrasp_gap_m = a.pregrasp_gap;
+    if (a.extra_lean > 0) pipeline.lean_deg.push_back(a.extra_lean);
+    if (a.lower_speed > 0) pipeline.lower_speed_mps = a.lower_speed;
+    if (a.release_s > 0) pipeline.release_s = a.release_s;
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
