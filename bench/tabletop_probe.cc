@@ -56,7 +56,7 @@ struct Args {
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   double grip_frac = -1, grip_max = -1;
   double top_behind = -9, top_standoff = -1;
-  double extra_lean = -1, lower_speed = -1, release_s = -1;
+  double lower_segment = -1, extra_lean = -1, lower_speed = -1, release_s = -1;
   double palm_behind = -1, pregrasp_gap = -1, close_rate = -1, hold_rate = -1, margin = -9;
   double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1, object_clearance = -1;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
@@ -92,6 +92,7 @@ Args Parse(int argc, char** argv) {
                                                   {"--pregrasp-gap", &a.pregrasp_gap},
                                                   {"--close-rate", &a.close_rate},
                                                   {"--extra-lean", &a.extra_lean},
+                                                  {"--lower-segment", &a.lower_segment},
                                                   {"--lower-speed", &a.lower_speed},
                                                   {"--release-s", &a.release_s},
                                                   {"--hold-rate", &a.hold_rate},
@@ -252,6 +253,7 @@ int main(int argc, char** argv) {
     if (a.margin > -1) pipeline.palm_behind_margin_m = a.margin;
     if (a.pregrasp_gap >= 0) pipeline.pregrasp_gap_m = a.pregrasp_gap;
     if (a.extra_lean > 0) pipeline.lean_deg.push_back(a.extra_lean);
+    if (a.lower_segment > 0) pipeline.lower_segment_m = a.lower_segment;
     if (a.lower_speed > 0) pipeline.lower_speed_mps = a.lower_speed;
     if (a.release_s > 0) pipeline.release_s = a.release_s;
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;

@@ -193,6 +193,7 @@ class Run {
   std::optional<TabletopResult> Transport(ArmTracker& tr);
   std::optional<TabletopResult> GraspAndLift(ArmTracker& tr, const GraspPolicyFn& policy);
   bool LetGo(ArmTracker& tr);
+  bool Align(ArmTracker& tr);
   std::optional<std::string> ReadyForRetry(ArmTracker& tr);
   static constexpr double kRetrySettleS = 0.5;  // the object comes to rest before the next look
 
@@ -428,6 +429,26 @@ std::optional<TabletopResult> Run::GraspAndLift(ArmTracker& tr, const GraspPolic
   return std::nullopt;
 }
 
+// the held object upright with its centre of mass over the target, turning the hand about that
+// centre: up to align_passes moves, reading the object's pose before each
+bool Run::Align(ArmTracker& tr) {
+  for (int k = 0; k < o_.align_passes; ++k) {
+    const ObjectView seen = ObserveObject(g_, d_, true);
+    const Eigen::Vector3d c = seen.centre;
+    Eigen::Vector3d err = g_.target - c;
+    err.z() = 0;
+    const Eigen::Matrix3d turn =
+        g_.shape == GraspShape::kSphere
+            ? Eigen::Matrix3d::Identity()
+            : Eigen::Quaterniond::FromTwoVectors(seen.up, Eigen::Vector3d::UnitZ())
+                  .toRotationMatrix();
+    if (err.norm() < o_.align_tol_m && Eigen::AngleAxisd(turn).angle() < o_.align_tilt_rad) break;
+    const Eigen::Vector3d p(d_->site_xpos + 3 * ix_.arm.palm_site);
+    if (!MovePalm(tr, c + turn * (p - c) - p + err, o_.align_s, {}, &turn)) return false;
+  }
+  return true;
+}
+
 // the fingers open over release_s while the arm holds, then the palm backs away from the object
 // and rises
 bool Run::LetGo(ArmTracker& tr) {
@@ -507,27 +528,18 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
   }
   if (auto f = Transport(tr)) return finish(*f);
   // place: the object upright (it tilts in the grip on the way) with its centre of mass over the
-  // target, turning the hand about that centre; then down until it bears on its support
-  for (int k = 0; k < o_.align_passes; ++k) {
-    const ObjectView seen = ObserveObject(g_, d_, true);
-    const Eigen::Vector3d c = seen.centre;
-    Eigen::Vector3d err = g_.target - c;
-    err.z() = 0;
-    const Eigen::Matrix3d turn =
-        g_.shape == GraspShape::kSphere
-            ? Eigen::Matrix3d::Identity()
-            : Eigen::Quaterniond::FromTwoVectors(seen.up, Eigen::Vector3d::UnitZ())
-                  .toRotationMatrix();
-    if (err.norm() < o_.align_tol_m && Eigen::AngleAxisd(turn).angle() < o_.align_tilt_rad) break;
-    const Eigen::Vector3d p(d_->site_xpos + 3 * ix_.arm.palm_site);
-    if (!MovePalm(tr, c + turn * (p - c) - p + err, o_.align_s, {}, &turn)) {
+  // target, then down until it bears on its support, straightened again every `lower_segment_m`
+  // (it tilts in the grip on the way down too)
+  const double drop = o_.carry_clearance_m + 0.04;
+  const double segment = o_.lower_segment_m > 0 ? o_.lower_segment_m : drop;
+  for (double lowered = 0; lowered < drop - 1e-9 && (lowered == 0 || !Supported());
+       lowered += segment) {
+    if (!Align(tr)) return finish(Fail(TabletopStage::kPlace, StepError()));
+    const double dz = std::min(segment, drop - lowered);
+    if (!MovePalm(tr, Eigen::Vector3d(0, 0, -dz), dz / o_.lower_speed_mps,
+                  [&] { return Supported(); })) {
       return finish(Fail(TabletopStage::kPlace, StepError()));
     }
-  }
-  const double drop = o_.carry_clearance_m + 0.04;
-  if (!MovePalm(tr, Eigen::Vector3d(0, 0, -drop), drop / o_.lower_speed_mps,
-                [&] { return Supported(); })) {
-    return finish(Fail(TabletopStage::kPlace, StepError()));
   }
   // release and retract
   if (!LetGo(tr)) return finish(Fail(TabletopStage::kRelease, StepError()));

@@ -110,6 +110,10 @@ struct TabletopOptions {
   /// turns it upright before the descent)
   double transport_tilt_tol_rad = 0.12;
   double lower_speed_mps = 0.06;  ///< placing descent
+  /// The descent stops to straighten the object again every this far (0: straight down once;
+  /// a box held at its fingertips tilted 3 -> 20 degrees on the way down and fell after the
+  /// release)
+  double lower_segment_m = 0.03;
   /// Before the descent the hand turns the object upright and shifts its centre of mass over
   /// the target, reading the object's pose (it tilts and slips in the grip during transport;
   /// DASH's placing policy reads it at 20 Hz): up to `align_passes` moves of `align_s` each,
