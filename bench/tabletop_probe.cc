@@ -59,6 +59,7 @@ struct Args {
   double lower_segment = -1, extra_lean = -1, lower_speed = -1, release_s = -1;
   double palm_behind = -1, pregrasp_gap = -1, close_rate = -1, hold_rate = -1, margin = -9;
   double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1, object_clearance = -1;
+  int grasp_attempts = 0;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
 };
@@ -93,6 +94,7 @@ Args Parse(int argc, char** argv) {
                                                   {"--close-rate", &a.close_rate},
                                                   {"--extra-lean", &a.extra_lean},
                                                   {"--lower-segment", &a.lower_segment},
+
                                                   {"--lower-speed", &a.lower_speed},
                                                   {"--release-s", &a.release_s},
                                                   {"--hold-rate", &a.hold_rate},
@@ -102,7 +104,8 @@ Args Parse(int argc, char** argv) {
                                             {"--shortcuts", &a.shortcuts},
                                             {"--approach-steps", &a.approach_steps},
                                             {"--thumb-delay", &a.thumb_delay},
-                                            {"--grasp-steps", &a.grasp_steps}};
+                                            {"--grasp-steps", &a.grasp_steps},
+                                            {"--grasp-attempts", &a.grasp_attempts}};
   const std::map<std::string, bool*> bools = {{"--trace-contacts", &a.trace_contacts},
                                               {"--trace-arm", &a.trace_arm},
                                               {"--hold-rotation", &a.hold_rotation},
@@ -257,6 +260,7 @@ int main(int argc, char** argv) {
     if (a.lower_speed > 0) pipeline.lower_speed_mps = a.lower_speed;
     if (a.release_s > 0) pipeline.release_s = a.release_s;
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
+    if (a.grasp_attempts > 0) pipeline.grasp_attempts = a.grasp_attempts;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
     if (a.object_clearance >= 0) pipeline.motion.object_clearance_m = a.object_clearance;
