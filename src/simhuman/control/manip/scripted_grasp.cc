@@ -71,9 +71,11 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
         st->palm_goal = c - behind * f;
         st->palm_goal.z() = c.z() + goal.half_width_m - o.press_m;
       } else {
-        // the palm on the object: no gap, whatever an estimate says (it would not follow an
-        // object the palm pushes; the simulation's state does)
-        const double gap = (seen.estimated || o.touch_ends_gap) && palm ? 0.0 : (c - p).dot(n) - goal.half_width_m;
+        // the palm on the object: no gap, whatever the object's centre and width say (an
+        // estimate would not follow an object the palm pushes, and a palm meeting a side at an
+        // angle or with its edge never reaches the plane they give: it pushed objects over)
+        const double gap =
+            (seen.estimated || o.touch_ends_gap) && palm ? 0.0 : (c - p).dot(n) - goal.half_width_m;
         st->palm_goal = p + n * (gap + o.press_m);
         st->palm_goal.z() = st->grip_z;
       }
