@@ -62,6 +62,7 @@ struct Args {
   int grasp_attempts = 0;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
+  std::string zero_shot;  // a shape of world::ZeroShotShapes() replaces the task object
 };
 
 // every flag takes one value; booleans are "1" (true) or anything else (false)
@@ -115,8 +116,10 @@ Args Parse(int argc, char** argv) {
                                               {"--no-spheres", &a.no_spheres},
                                               {"--touch-gap0", &a.touch_gap0},
                                               {"--profile", &a.profile}};
-  const std::map<std::string, std::string*> strings = {
-      {"--shape", &a.shape}, {"--kind", &a.kind}, {"--sheet-dir", &a.sheet_dir}};
+  const std::map<std::string, std::string*> strings = {{"--shape", &a.shape},
+                                                       {"--kind", &a.kind},
+                                                       {"--sheet-dir", &a.sheet_dir},
+                                                       {"--zero-shot", &a.zero_shot}};
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if (k == "--seed") {
@@ -236,6 +239,12 @@ int main(int argc, char** argv) {
     if (!a.kind.empty() && kind != a.kind) continue;
     auto ts = sh::world::GenerateTabletop(seed, kind);
     if (!ts.ok()) return 1;
+    if (!a.zero_shot.empty()) {
+      if (sh::core::Status s = sh::world::MakeZeroShot(&*ts, a.zero_shot); !s.ok()) {
+        std::fprintf(stderr, "%s\n", s.ToString().c_str());
+        return 2;
+      }
+    }
     auto catalog = sh::world::BuildCatalog(ts->scene);
     auto human = sh::world::AgentFromHuman(ts->scene.humans[0], 0, *catalog);
     auto w = sh::world::SimWorld::Create(*catalog, {*human}, sh::world::DexterousModelOptions());

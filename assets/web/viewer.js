@@ -94,6 +94,16 @@
           obj.add(end);
         });
       }
+    } else if (g.type === 'mesh') {
+      // flat-shaded triangles: each face's three corners on their own
+      var pos = new Float32Array(3 * g.faces.length);
+      g.faces.forEach(function (v, i) {
+        for (var k = 0; k < 3; ++k) pos[3 * i + k] = g.vertices[3 * v + k];
+      });
+      var geo = new THREE.BufferGeometry();
+      geo.setAttribute('position', new THREE.BufferAttribute(pos, 3));
+      geo.computeVertexNormals();
+      obj = new THREE.Mesh(geo, mat);
     } else if (g.type === 'plane') {
       var group = new THREE.Group();
       var floorMat = new THREE.MeshLambertMaterial({ color: 0xd8d2c4 });

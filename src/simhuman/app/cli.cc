@@ -25,6 +25,7 @@
 #include "simhuman/learn/tasks.h"
 #include "simhuman/world/health.h"
 #include "simhuman/world/scene.h"
+#include "simhuman/world/tabletop.h"
 
 namespace simhuman::app {
 namespace {
@@ -163,6 +164,15 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
                    "episode (1: no second try, as DASH)")
       ->check(CLI::Range(1, 5))
       ->capture_default_str();
+  eval_cmd
+      ->add_option("--zero-shot", ev->zero_shot,
+                   "tabletop, place, stack: the task object becomes a shape the pipeline was not "
+                   "made for (cone, hourglass, or mesh: an OBJ file, --zero-shot-mesh); ground "
+                   "truth only")
+      ->check(CLI::IsMember(world::ZeroShotShapes()));
+  eval_cmd->add_option("--zero-shot-mesh", ev->zero_shot_mesh,
+                       "tabletop, place, stack with --zero-shot mesh: the OBJ file (metres, +z "
+                       "up; default assets/meshes/vase.obj)");
   eval_cmd->add_option("--approach-policy", ev->approach_policy,
                        "carry: a walking policy file (e.g. assets/policies/walk.pt) that walks up "
                        "to the box; the carry policy takes over at the lift");

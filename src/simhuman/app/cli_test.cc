@@ -122,6 +122,15 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
                  {"--perception", "truth", "vision"});
   ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--grasp-attempts", "0"}),
                  {"--grasp-attempts", "not in range 1 to 5"});
+  ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--zero-shot", "bunny"}),
+                 {"--zero-shot", "cone", "hourglass", "mesh"});
+  ExpectBadInput(
+      Cli({"eval", "--suite", "tabletop", "--zero-shot", "cone", "--perception", "vision"}),
+      {"--zero-shot runs with --perception truth only"});
+  ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--zero-shot-mesh", "a.obj"}),
+                 {"--zero-shot-mesh needs --zero-shot mesh"});
+  ExpectBadInput(Cli({"eval", "--suite", "walk", "--zero-shot", "cone"}),
+                 {"--zero-shot and --zero-shot-mesh apply to the tabletop suites"});
   ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--jobs", "0"}),
                  {"--jobs", "not in range 1 to 64"});
   ExpectBadInput(Cli({"eval", "--suite", "sit", "--jobs", "2"}),

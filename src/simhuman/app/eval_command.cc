@@ -340,6 +340,14 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
                            "--suite " +
                            flags.suite + "; the plan suites run in parallel with mpirun -n N"));
   }
+  if ((!flags.zero_shot.empty() || !flags.zero_shot_mesh.empty()) &&
+      suite->controller != eval::SuiteController::kTabletop) {
+    return ReportError(
+        err, kCommand,
+        absl::InvalidArgumentError("--zero-shot and --zero-shot-mesh apply to the tabletop suites "
+                                   "(tabletop, place, stack), not --suite " +
+                                   flags.suite));
+  }
   if (!flags.approach_policy.empty() && suite->controller != eval::SuiteController::kCarryPolicy) {
     return ReportError(err, kCommand,
                        absl::InvalidArgumentError("--approach-policy applies to --suite carry, "

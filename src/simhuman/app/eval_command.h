@@ -37,6 +37,8 @@ struct EvalFlags {
   std::string grasp_policy;
   /// Tabletop suites: grasps tried on one object (control::manip::TabletopOptions).
   int grasp_attempts = 2;
+  std::string zero_shot;       ///< tabletop, place, stack: eval::TabletopEvalOptions::zero_shot
+  std::string zero_shot_mesh;  ///< its OBJ file for "mesh" (empty: world::kZeroShotMeshFile)
   int jobs = 1;
   std::string approach_policy;  ///< carry: a walking policy for the approach phase  ///< tabletop,
                                 ///< place, stack: episodes run at once (threads)

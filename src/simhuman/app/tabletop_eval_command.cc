@@ -32,6 +32,19 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   o.grasp = eval::DefaultGraspPolicy(flags.grasp_policy);
   o.perception = flags.perception;
   o.grasp_attempts = flags.grasp_attempts;
+  o.zero_shot = flags.zero_shot;
+  if (!flags.zero_shot_mesh.empty()) o.zero_shot_mesh = flags.zero_shot_mesh;
+  if (!o.zero_shot.empty() && o.perception == "vision") {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--zero-shot runs with --perception truth only: the vision model "
+                           "knows boxes, cylinders and spheres (DASH's zero-shot tests, too, "
+                           "read the object's true pose)"));
+  }
+  if (o.zero_shot != "mesh" && !flags.zero_shot_mesh.empty()) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError("--zero-shot-mesh needs --zero-shot mesh"));
+  }
   o.jobs = flags.jobs;
   o.vision_model = flags.vision_model.empty() ? DefaultVisionModel() : flags.vision_model;
   if (o.perception == "vision") {
@@ -46,6 +59,9 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes, seed "
       << o.seed << ", grasp " << o.grasp << " (" << o.grasp_attempts << " attempts), perception "
       << o.perception << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string())
+      << (o.zero_shot.empty() ? std::string()
+                              : ", zero-shot " + o.zero_shot +
+                                    (o.zero_shot == "mesh" ? " (" + o.zero_shot_mesh + ")" : ""))
       << " -> " << dir << std::endl;
   out << "  ep kind   object        shape     ok   failed at    steps wall_s  end" << std::endl;
   core::StatusOr<eval::TabletopEvalSummary> s =
@@ -59,6 +75,8 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   summary["seed"] = o.seed;
   summary["grasp"] = o.grasp;
   summary["grasp_attempts"] = o.grasp_attempts;
+  if (!o.zero_shot.empty()) summary["zero_shot"] = o.zero_shot;
+  if (o.zero_shot == "mesh") summary["zero_shot_mesh"] = o.zero_shot_mesh;
   if (o.perception == "vision") summary["vision_model"] = o.vision_model;
   const nlohmann::ordered_json provenance = eval::ProvenanceJson();
   for (const auto& [key, value] : provenance.items()) summary[key] = value;

@@ -4,6 +4,9 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <array>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace simhuman::core {
@@ -21,21 +24,39 @@ struct Pose {
   static Pose FromYaw(const Eigen::Vector3d& pos, double yaw_rad);
 };
 
-enum class ShapeKind { kBox, kSphere, kCapsule, kCylinder };
+enum class ShapeKind { kBox, kSphere, kCapsule, kCylinder, kFrustum, kMesh };
 
-/// A solid primitive in its parent's frame. `size` follows MuJoCo geom conventions:
-/// box half-extents (x, y, z); sphere (r); capsule and cylinder (r, half-length along local z).
+/// A triangle mesh (an object read from an OBJ file). Physics uses its convex hull.
+struct Mesh {
+  std::vector<Eigen::Vector3d> vertices;  // the mesh's own frame, before Shape::size scaling
+  std::vector<std::array<int, 3>> faces;  // indices into `vertices`
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  // vertex bounds
+  std::string source;  // where it was read from, for messages
+};
+
+/// A solid in its parent's frame. `size` follows MuJoCo geom conventions where there is one:
+/// box half-extents (x, y, z); sphere (r); capsule and cylinder (r, half-length along local z);
+/// frustum, a truncated cone about local z (bottom radius at -z, half-length, top radius at +z;
+/// a top radius of 0 is a cone); mesh: the per-axis scale of `mesh`'s vertices.
 struct Shape {
   ShapeKind kind = ShapeKind::kBox;
   Pose pose;  // parent_from_shape
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  std::shared_ptr<const Mesh> mesh;  // kMesh only
 };
+
+/// The solid's bounds in its own frame (before `pose`): {min, max}. A mesh is bounded by its
+/// scaled vertices' box.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> LocalShapeBounds(const Shape& shape);
+
+/// The volume of the solid (m^3); a mesh's from its faces (divergence theorem).
+double ShapeVolume(const Shape& shape);
 
 /// `a` (radians) wrapped to (-pi, pi]. The one angle wrap of the code base.
 double WrapAngle(double a);
 
 /// Nearest point of the solid `shape` (placed at `world_from_parent`) to `p_world`; returns
-/// `p_world` itself when the point is inside the solid.
+/// `p_world` itself when the point is inside the solid. A mesh answers with its bounding box.
 Eigen::Vector3d NearestPointOnShape(const Shape& shape, const Pose& world_from_parent,
                                     const Eigen::Vector3d& p_world);
 

@@ -37,6 +37,11 @@ struct TabletopEvalOptions {
   /// Grasps tried on one object before a miss ends the episode
   /// (control::manip::TabletopOptions::grasp_attempts).
   int grasp_attempts = 2;
+  /// Zero-shot runs (world::MakeZeroShot): every episode's task object becomes this shape of
+  /// world::ZeroShotShapes(); "" keeps the generator's box, cylinder or sphere. Ground truth
+  /// only, as DASH's zero-shot demonstrations.
+  std::string zero_shot;
+  std::string zero_shot_mesh = world::kZeroShotMeshFile;  ///< the OBJ file of zero_shot "mesh"
   /// Episodes run at once, one thread each (its own world, grasp policy and renderer); the
   /// results are the same for any value (each episode is seeded by its index)
   int jobs = 1;

@@ -7,6 +7,7 @@
 
 #include "simhuman/control/manip/scripted_grasp.h"
 #include "simhuman/core/rng.h"
+#include "simhuman/world/seating.h"
 
 namespace simhuman::eval {
 namespace {
@@ -112,6 +113,52 @@ TEST(TabletopEvalTest, TheDescentStraightensAnObjectTiltingInTheHandIntegration)
   const control::manip::TabletopResult once = run(0);
   EXPECT_FALSE(once.success);
   EXPECT_THAT(once.end_reason, HasSubstr("tipped over"));
+}
+
+// a zero-shot cone is gripped where it is widest in the hand's band (low) and as wide as it is
+// there, and its success rule asks for its own centre's height, not DASH's 5 cm
+TEST(TabletopEvalTest, AZeroShotConeIsGrippedAsWideAsItIsWhereTheHandGoes) {
+  auto ts = world::GenerateTabletop(core::DeriveSeed(1, 0x7ab1e, 0), "place");
+  ASSERT_TRUE(ts.ok()) << ts.status();
+  ASSERT_TRUE(world::MakeZeroShot(&*ts, "cone").ok());
+  auto catalog = world::BuildCatalog(ts->scene);
+  ASSERT_TRUE(catalog.ok()) << catalog.status();
+  auto human = world::AgentFromHuman(ts->scene.humans[0], 0, *catalog);
+  auto w = world::SimWorld::Create(*catalog, {*human}, world::DexterousModelOptions());
+  ASSERT_TRUE(w.ok()) << w.status();
+  auto goal = TabletopSceneGoal(*ts, **w);
+  ASSERT_TRUE(goal.ok()) << goal.status();
+  const world::ObjectSpec* cone = nullptr;
+  for (const world::ObjectSpec& o : ts->scene.objects) {
+    if (o.id == ts->task.object_id) cone = &o;
+  }
+  ASSERT_NE(cone, nullptr);
+  const double r = cone->size.at("radius"), h = cone->size.at("height");
+  const control::manip::TabletopOptions rule;
+  EXPECT_EQ(goal->shape, control::manip::GraspShape::kCylinder);
+  EXPECT_NEAR(goal->grip_height_m, rule.grip_min_m, 1e-9);
+  EXPECT_NEAR(goal->half_width_m, r * (1 - rule.grip_min_m / h), 1e-3);
+  EXPECT_NEAR(goal->min_com_above_target_m, 0.6 * h / 4, 0.003);
+  EXPECT_NEAR(goal->height_m, h, 1e-9);
+}
+
+// the suite with --zero-shot hourglass moves hourglasses, and grasps, places and stacks them
+TEST(TabletopEvalTest, ZeroShotHourglassesArePlacedAndStackedIntegration) {
+  TabletopEvalOptions o;
+  o.episodes = 2;
+  o.grasp = "scripted";
+  o.zero_shot = "hourglass";
+  int successes = 0;
+  auto s = RunTabletopEval(o, [&](const TabletopEpisode& e) {
+    EXPECT_EQ(e.shape, "hourglass");
+    EXPECT_THAT(e.object, ::testing::StartsWith("hourglass"));
+    successes += e.success;
+  });
+  ASSERT_TRUE(s.ok()) << s.status();
+  EXPECT_EQ(successes, 2);
+  EXPECT_EQ(s->by_task.count("place/hourglass") + s->by_task.count("stack/hourglass"), 2u);
+  o.zero_shot = "pyramid";
+  EXPECT_THAT(RunTabletopEval(o).status().ToString(), HasSubstr("unknown zero-shot shape"));
 }
 
 }  // namespace

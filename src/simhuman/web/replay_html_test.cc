@@ -112,6 +112,40 @@ TEST(ReplayHtmlTest, SeveralHumansAreAllDrawn) {
   EXPECT_EQ(per_agent[0], per_agent[1]);
 }
 
+// a cone and an OBJ mesh reach the page as their triangles, not as boxes
+TEST(ReplayHtmlTest, MeshObjectsAreSentAsTheirTriangles) {
+  world::SceneSpec spec = *world::LoadScene("sit_demo");
+  world::ObjectSpec cone;
+  cone.id = "cone100";
+  cone.type = "cone";
+  cone.pos = Eigen::Vector3d(2, 2, 0);
+  world::ObjectSpec vase = cone;
+  vase.id = "mesh101";
+  vase.type = "mesh";
+  vase.pos.x() = 3;
+  vase.mesh = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/meshes/vase.obj";
+  spec.objects.push_back(cone);
+  spec.objects.push_back(vase);
+  auto catalog = world::BuildCatalog(spec);
+  ASSERT_TRUE(catalog.ok()) << catalog.status();
+  auto sim = eval::BuildWorld(spec, *catalog);
+  ASSERT_TRUE(sim.ok()) << sim.status();
+  const SceneView view = DescribeScene(**sim, (*sim)->data());
+  int meshes = 0;
+  for (const auto& b : view.json["bodies"]) {
+    for (const auto& g : b["geoms"]) {
+      if (g["type"] != "mesh") continue;
+      ++meshes;
+      const size_t nv = g["vertices"].size() / 3;
+      ASSERT_GE(nv, 4u);
+      ASSERT_GE(g["faces"].size(), 12u);
+      EXPECT_EQ(g["faces"].size() % 3, 0u);
+      for (const auto& f : g["faces"]) EXPECT_LT(f.get<size_t>(), nv);
+    }
+  }
+  EXPECT_EQ(meshes, 2);
+}
+
 TEST(ReplayHtmlTest, BadTrajectoriesAreRefused) {
   World w = SitDemo();
   control::Trajectory empty;

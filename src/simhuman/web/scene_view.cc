@@ -49,10 +49,19 @@ nlohmann::json Geom(const mjModel* m, int g) {
     case mjGEOM_BOX:
       j["type"] = "box";
       break;
-    case mjGEOM_MESH:
-      j["type"] = "box";
-      size.assign(3, m->geom_rbound[g] / std::sqrt(3.0));
+    case mjGEOM_MESH: {
+      // the mesh's vertices (its own frame, 0.1 mm) and triangles
+      j["type"] = "mesh";
+      const int mesh = m->geom_dataid[g];
+      const int nv = m->mesh_vertnum[mesh], nf = m->mesh_facenum[mesh];
+      nlohmann::json v = nlohmann::json::array(), f = nlohmann::json::array();
+      for (int k = 0; k < 3 * nv; ++k)
+        v.push_back(Round(m->mesh_vert[3 * m->mesh_vertadr[mesh] + k], 1e-4));
+      for (int k = 0; k < 3 * nf; ++k) f.push_back(m->mesh_face[3 * m->mesh_faceadr[mesh] + k]);
+      j["vertices"] = std::move(v);
+      j["faces"] = std::move(f);
       break;
+    }
     default:
       return nullptr;  // heightfields, SDFs: none in our scenes
   }

@@ -23,10 +23,10 @@ inline constexpr int kTargetFloats = 6;
 /// The drawable part of a model.
 struct SceneView {
   /// {"bodies": [{"name", "agent" (-1: not a human), "moving", "pos", "quat", "geoms": [{"type":
-  /// "box"|"sphere"|"capsule"|"cylinder"|"ellipsoid"|"plane", "size": [3], "pos": [3] and "quat":
-  /// [4] in the body frame, "rgba": [4]}]}]}. Only bodies with a visible geom are listed; a
-  /// static body's pos/quat is its world pose, a moving one's comes from the frames. Meshes are
-  /// drawn as boxes of their bounding radius (our scenes have none).
+  /// "box"|"sphere"|"capsule"|"cylinder"|"ellipsoid"|"plane"|"mesh", "size": [3], "pos": [3] and
+  /// "quat": [4] in the body frame, "rgba": [4]; a mesh adds "vertices": [3 n] in its own frame
+  /// and "faces": [3 m] vertex indices}]}]}. Only bodies with a visible geom are listed; a
+  /// static body's pos/quat is its world pose, a moving one's comes from the frames.
   nlohmann::json json;
   /// Model body ids of the listed moving bodies, in the order of a pose block.
   std::vector<int> moving_bodies;

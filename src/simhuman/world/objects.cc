@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "simhuman/world/carry.h"
+#include "simhuman/world/obj_file.h"
 
 namespace simhuman::world {
 namespace {
@@ -256,6 +257,41 @@ void BuildCylinder(const Sizes& s, Assembly& a) {
   a.PartOfExisting("body", {"cylinder", "whole", "surface", "side"}, {top, lower});
 }
 
+// a frustum about +z from z_lo (radius r_lo) to z_hi (radius r_hi)
+core::Shape Frustum(double z_lo, double r_lo, double z_hi, double r_hi) {
+  core::Shape s;
+  s.kind = core::ShapeKind::kFrustum;
+  s.pose.pos = Vector3d(0, 0, 0.5 * (z_lo + z_hi));
+  s.size = Vector3d(r_lo, 0.5 * (z_hi - z_lo), r_hi);
+  return s;
+}
+
+// shapes not in DASH's training set (its zero-shot tests: a cone, an hourglass, a mesh)
+void BuildCone(const Sizes& s, Assembly& a) {
+  a.Part("body", {"cone", "whole", "surface", "side"},
+         {Frustum(0.0, s.at("radius"), s.at("height"), 0.0)});
+}
+
+void BuildHourglass(const Sizes& s, Assembly& a) {
+  const double r = s.at("radius"), w = s.at("waist_radius"), h = s.at("height");
+  core::Shape lower = Frustum(0.0, r, h / 2, w);
+  core::Shape upper = Frustum(h / 2, w, h, r);
+  a.Part("top", {"top side", "top surface", "lid", "upper bulb"}, {upper});
+  a.Solid(lower);
+  a.PartOfExisting("body", {"hourglass", "whole", "surface", "side"}, {lower, upper});
+}
+
+// the mesh resting on its lowest vertex, its bounding box centred on the origin in x and y
+void BuildMesh(const std::shared_ptr<const core::Mesh>& mesh, Assembly& a) {
+  core::Shape s;
+  s.kind = core::ShapeKind::kMesh;
+  s.mesh = mesh;
+  s.size = Vector3d::Ones();
+  s.pose.pos = Vector3d(-0.5 * (mesh->lo.x() + mesh->hi.x()), -0.5 * (mesh->lo.y() + mesh->hi.y()),
+                        -mesh->lo.z());
+  a.Part("body", {"mesh", "object", "whole", "surface", "side"}, {s});
+}
+
 void BuildSphere(const Sizes& s, Assembly& a) {
   core::Shape ball;
   ball.kind = core::ShapeKind::kSphere;
@@ -395,6 +431,22 @@ const std::vector<TypeInfo>& Types() {
                   {}});
     t->push_back(
         {"sphere", "green", {{"radius", 0.04, 0.03, 0.06, 0.01, 1.0, "radius"}}, BuildSphere, {}});
+    t->push_back({"cone",
+                  "red",
+                  {{"radius", 0.04, 0.03, 0.05, 0.01, 1.0, "radius of the base"},
+                   {"height", 0.15, 0.13, 0.18, 0.02, 2.0, "base to apex"}},
+                  BuildCone,
+                  {}});
+    t->push_back({"hourglass",
+                  "yellow",
+                  {{"radius", 0.045, 0.035, 0.05, 0.01, 1.0, "radius of the base and the top"},
+                   {"waist_radius", 0.025, 0.02, 0.03, 0.005, 1.0, "radius at half height"},
+                   {"height", 0.15, 0.13, 0.18, 0.02, 2.0, "size along z"}},
+                  BuildHourglass,
+                  {{"waist_radius must be below radius",
+                    [](const Sizes& s) { return s.at("waist_radius") < s.at("radius"); }}}});
+    // the shape comes from ObjectSpec::mesh, scaled by ObjectSpec::scale
+    t->push_back({"mesh", "grey", {}, nullptr, {}});
     return t;
   }();
   return *types;
@@ -517,8 +569,18 @@ ObjectSpec RandomObjectSpec(std::string_view type, core::Rng& rng) {
   if (spec.type == "long_box") {
     spec.mass_kg = rng.Uniform(kLongBoxRandomMassLoKg, kLongBoxRandomMassHiKg);
   }
-  if (spec.type == "cylinder" || spec.type == "sphere") spec.mass_kg = rng.Uniform(0.1, 1.0);
+  if (spec.type == "cylinder" || spec.type == "sphere" || spec.type == "cone" ||
+      spec.type == "hourglass") {
+    spec.mass_kg = rng.Uniform(0.1, 1.0);
+  }
   return spec;
+}
+
+bool AlwaysMovable(std::string_view type) {
+  for (const char* t : {"box", "long_box", "cylinder", "sphere", "cone", "hourglass", "mesh"}) {
+    if (type == t) return true;
+  }
+  return false;
 }
 
 core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
@@ -583,7 +645,18 @@ core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
   }
 
   Assembly a;
-  type->build(sizes, a);
+  if (type->name == "mesh") {
+    if (spec.mesh.empty()) {
+      return Invalid(spec, "type mesh needs \"mesh\": the path of an OBJ file");
+    }
+    core::StatusOr<std::shared_ptr<const core::Mesh>> mesh = ReadObjMesh(spec.mesh);
+    if (!mesh.ok()) return Invalid(spec, std::string(mesh.status().message()));
+    BuildMesh(*mesh, a);
+  } else if (!spec.mesh.empty()) {
+    return Invalid(spec, "\"mesh\" is only for objects of type mesh, not " + type->name);
+  } else {
+    type->build(sizes, a);
+  }
 
   core::CatalogObject obj;
   obj.id = spec.id;
@@ -606,16 +679,9 @@ core::StatusOr<core::CatalogObject> BuildObject(const ObjectSpec& spec) {
   if (spec.mass_kg) {
     obj.movable = true;
     obj.mass_kg = *spec.mass_kg;
-  } else if (type->name == "box" || type->name == "cylinder" || type->name == "sphere") {
-    double volume = 0.0;
-    if (type->name == "box") {
-      volume = sizes.at("depth") * sizes.at("width") * sizes.at("height");
-    } else if (type->name == "cylinder") {
-      volume = M_PI * sizes.at("radius") * sizes.at("radius") * sizes.at("height");
-    } else {
-      volume = 4.0 / 3.0 * M_PI * std::pow(sizes.at("radius"), 3);
-    }
-    volume *= std::pow(spec.scale, 3);
+  } else if (AlwaysMovable(type->name) && type->name != "long_box") {
+    double volume = 0.0;  // the solids tile the object (scaled above)
+    for (const core::Shape& s : obj.shapes) volume += core::ShapeVolume(s);
     obj.movable = true;
     obj.mass_kg = std::clamp(kBoxDensityKgM3 * volume, kBoxMinMassKg, kBoxMaxMassKg);
   } else if (type->name == "long_box") {

@@ -52,7 +52,14 @@ struct ObjectSpec {
   /// Sliding (lateral) contact friction coefficient of the object's solids, in
   /// [kMinFriction, kMaxFriction]; empty: the model's default (0.9).
   std::optional<double> friction;
+  /// Type "mesh" only: the OBJ file of its shape (metres, +z up, resting on its lowest vertex;
+  /// a relative path is read from the current directory). Physics uses its convex hull.
+  std::string mesh;
 };
+
+/// Types that are always movable (small objects and boxes): they get a mass from their volume
+/// when the scene gives none.
+bool AlwaysMovable(std::string_view type);
 
 /// The range of ObjectSpec::friction BuildObject() and the scene parser accept.
 inline constexpr double kMinFriction = 0.1;

@@ -56,10 +56,12 @@ TEST(ObjectsTest, EveryTypeBuildsWithItsParts) {
       {"box", {"top", "left side", "right side", "front side", "back side", "body"}},
       {"long_box", {"top", "left side", "right side", "front side", "back side", "body"}},
       {"cylinder", {"top", "body"}},
-      {"sphere", {"body"}}};
-  ASSERT_EQ(ObjectTypes().size(), expected.size() + 1);  // + marker, tested below
+      {"sphere", {"body"}},
+      {"cone", {"body"}},
+      {"hourglass", {"top", "body"}}};
+  ASSERT_EQ(ObjectTypes().size(), expected.size() + 2);  // + marker and mesh, tested below
   for (const std::string& type : ObjectTypes()) {
-    if (type == "marker") continue;
+    if (type == "marker" || type == "mesh") continue;
     SCOPED_TRACE(type);
     core::CatalogObject o = Build(Spec(type));
     EXPECT_EQ(o.type, type);
@@ -88,9 +90,55 @@ TEST(ObjectsTest, EveryTypeBuildsWithItsParts) {
     EXPECT_NEAR(lo.z(), 0.0, 1e-3);
     EXPECT_GT(hi.z(), 0.05);
     EXPECT_FALSE(o.color.empty());
-    EXPECT_EQ(o.movable,
-              type == "box" || type == "long_box" || type == "cylinder" || type == "sphere");
+    EXPECT_EQ(o.movable, AlwaysMovable(type));
   }
+}
+
+TEST(ObjectsTest, ZeroShotShapesAreFrustums) {
+  ObjectSpec cone = Spec("cone");
+  cone.size = {{"radius", 0.05}, {"height", 0.16}};
+  cone.scale = 3;  // heavier than the 0.1 kg floor of the mass by volume
+  core::CatalogObject c = Build(cone);
+  ASSERT_EQ(c.shapes.size(), 1u);
+  EXPECT_EQ(c.shapes[0].kind, core::ShapeKind::kFrustum);
+  EXPECT_NEAR(c.mass_kg, 100.0 * 27 * M_PI * 0.05 * 0.05 * 0.16 / 3, 1e-9);  // a cone's volume
+  auto [lo, hi] = c.LocalBounds();
+  EXPECT_NEAR(lo.z(), 0.0, 1e-12);
+  EXPECT_NEAR(hi.z(), 0.48, 1e-12);
+  // the hourglass: two frustums meeting at the waist
+  ObjectSpec glass = Spec("hourglass");
+  core::CatalogObject g = Build(glass);
+  ASSERT_EQ(g.shapes.size(), 2u);
+  const core::Shape* top = &g.FindPart("top")->shapes[0];
+  EXPECT_NEAR(top->size.x(), 0.025, 1e-12);  // its bottom is the waist
+  EXPECT_NEAR(top->size.z(), 0.045, 1e-12);
+  glass.size = {{"waist_radius", 0.05}};
+  EXPECT_NE(BuildObject(glass).status().ToString().find("waist_radius must be below radius"),
+            std::string::npos);
+}
+
+TEST(ObjectsTest, MeshObjectsComeFromTheirObjFile) {
+  ObjectSpec spec = Spec("mesh");
+  spec.mesh = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/meshes/vase.obj";
+  spec.scale = 0.5;
+  core::CatalogObject o = Build(spec);
+  ASSERT_EQ(o.shapes.size(), 1u);
+  EXPECT_EQ(o.shapes[0].kind, core::ShapeKind::kMesh);
+  EXPECT_TRUE(o.movable);
+  auto [lo, hi] = o.LocalBounds();
+  EXPECT_NEAR(lo.z(), 0.0, 1e-9);           // resting on its lowest vertex
+  EXPECT_NEAR(hi.z(), 0.08, 1e-6);          // scaled
+  EXPECT_NEAR(lo.x() + hi.x(), 0.0, 1e-9);  // centred in plan
+  EXPECT_NEAR(lo.y() + hi.y(), 0.0, 1e-9);
+  // errors name the object and what would be valid
+  spec.mesh.clear();
+  EXPECT_NE(BuildObject(spec).status().ToString().find("needs \"mesh\""), std::string::npos);
+  spec.mesh = "/nonexistent/vase.obj";
+  EXPECT_NE(BuildObject(spec).status().ToString().find("/nonexistent/vase.obj"), std::string::npos);
+  ObjectSpec box = Spec("box");
+  box.mesh = "x.obj";
+  EXPECT_NE(BuildObject(box).status().ToString().find("only for objects of type mesh"),
+            std::string::npos);
 }
 
 TEST(ObjectsTest, MarkerIsASmallNonCollidingPoint) {
@@ -309,6 +357,7 @@ TEST(ObjectsTest, ErrorsNameTheCulpritAndListValidChoices) {
 
 TEST(ObjectsTest, RandomSpecsStayInRangeAndAreDeterministic) {
   for (const std::string& type : ObjectTypes()) {
+    if (type == "mesh") continue;  // its shape is a file (MeshObjectsComeFromTheirObjFile)
     SCOPED_TRACE(type);
     core::Rng rng(17);
     auto ranges = SizeRanges(type);

@@ -28,8 +28,9 @@ constexpr double kDefaultHumanClearanceM = 0.35;
 constexpr double kScenePlanRotTolerance = 1e-6;
 
 const std::vector<std::string> kSceneKeys = {"name", "objects", "humans"};
-const std::vector<std::string> kObjectKeys = {"id",   "type",  "pos",     "yaw_deg", "scale",
-                                              "size", "color", "mass_kg", "movable", "friction"};
+const std::vector<std::string> kObjectKeys = {"id",      "type",     "pos",   "yaw_deg",
+                                              "scale",   "size",     "color", "mass_kg",
+                                              "movable", "friction", "mesh"};
 const core::NumberRange kFrictionRange = core::NumberRange::Closed(kMinFriction, kMaxFriction);
 const std::vector<std::string> kHumanKeys = {"pos", "yaw_deg", "scale", "posture", "kind"};
 const std::vector<std::string> kPlanKeys = {"obj", "chain of contacts", "contact_pairs"};
@@ -54,11 +55,10 @@ std::string SourceStem(std::string_view source) {
 }
 
 // "movable": true gives furniture its default mass (world/carry.h) unless "mass_kg" sets one;
-// boxes, long boxes, cylinders and spheres are movable anyway
+// boxes, long boxes and small objects (AlwaysMovable) are movable anyway
 core::Status ApplyMovable(const json& v, const std::string& where, ObjectSpec& o) {
   SH_ASSIGN_OR_RETURN(bool movable, core::ReadBool(v, where));
-  const bool always =
-      o.type == "box" || o.type == "long_box" || o.type == "cylinder" || o.type == "sphere";
+  const bool always = AlwaysMovable(o.type);
   if (!movable) {
     if (always) return core::JsonError(where, "a " + o.type + " is always movable");
     if (o.mass_kg) {
@@ -126,6 +126,18 @@ core::StatusOr<ObjectSpec> ParseObject(const json& j, const std::string& where, 
           core::JsonPointer(where, "color"),
           "unknown colour '" + o.color + "'; valid colours are: " + core::JoinNames(ColorNames()));
     }
+  }
+  if (j.contains("mesh")) {
+    SH_ASSIGN_OR_RETURN(o.mesh, core::ReadString(j.at("mesh"), core::JsonPointer(where, "mesh")));
+    if (o.type != "mesh" || o.mesh.empty()) {
+      return core::JsonError(core::JsonPointer(where, "mesh"),
+                             o.mesh.empty() ? std::string("empty mesh file name")
+                                            : "\"mesh\" names an OBJ file for objects of type "
+                                              "mesh, not " +
+                                                  o.type);
+    }
+  } else if (o.type == "mesh") {
+    return core::JsonError(where, "an object of type mesh needs \"mesh\": an OBJ file's path");
   }
   if (j.contains("size")) {
     const json& size = j.at("size");
@@ -708,6 +720,7 @@ nlohmann::json SceneToJson(const SceneSpec& spec) {
     if (!o.color.empty()) jo["color"] = o.color;
     if (o.mass_kg) jo["mass_kg"] = *o.mass_kg;
     if (o.friction) jo["friction"] = *o.friction;
+    if (!o.mesh.empty()) jo["mesh"] = o.mesh;
     j["objects"].push_back(jo);
   }
   j["humans"] = json::array();

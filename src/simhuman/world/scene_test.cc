@@ -12,6 +12,7 @@ namespace simhuman::world {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 constexpr double kTol = 1e-9;
 constexpr double kAngleTol = 1e-9;
@@ -406,6 +407,40 @@ TEST(SceneTest, FrictionIsReadCheckedWrittenAndReachesTheModel) {
   ASSERT_FALSE(built.ok());
   EXPECT_THAT(std::string(built.status().message()),
               HasSubstr("object 'box000': friction 0.01 is outside the valid range [0.1, 2]"));
+}
+
+// "mesh" names an OBJ file for objects of type mesh; it round-trips and the model gets a mesh
+// asset (MuJoCo takes its convex hull) with feet to stand on
+TEST(SceneParse, MeshObjectsNameTheirObjFile) {
+  const std::string vase = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/meshes/vase.obj";
+  nlohmann::json j = {
+      {"objects",
+       {{{"type", "mesh"}, {"pos", {1, 0}}, {"mesh", vase}}, {{"type", "cone"}, {"pos", {2, 0}}}}}};
+  core::StatusOr<SceneSpec> s = ParseSceneJson(j, "<test>");
+  ASSERT_TRUE(s.ok()) << s.status();
+  EXPECT_EQ(s->objects[0].mesh, vase);
+  core::StatusOr<SceneSpec> again = ParseSceneJson(SceneToJson(*s), "<again>");
+  ASSERT_TRUE(again.ok()) << again.status();
+  EXPECT_EQ(again->objects[0].mesh, vase);
+  core::StatusOr<core::SceneCatalog> cat = BuildCatalog(*s);
+  ASSERT_TRUE(cat.ok()) << cat.status();
+  core::StatusOr<std::string> xml = BuildModelXml(*cat, {}, ModelOptions{});
+  ASSERT_TRUE(xml.ok()) << xml.status();
+  EXPECT_THAT(*xml, HasSubstr("<mesh name=\"obj/mesh000/0\" vertex=\""));
+  EXPECT_THAT(*xml, HasSubstr("type=\"mesh\" mesh=\"obj/cone001/0\""));
+  EXPECT_THAT(*xml, HasSubstr("obj/mesh000/rim0"));  // feet under the mesh
+  EXPECT_THAT(*xml, HasSubstr("obj/cone001/rim7"));  // a ring under the cone's base only
+  EXPECT_THAT(*xml, Not(HasSubstr("obj/cone001/rim8")));
+
+  nlohmann::json bad = {{"objects", {{{"type", "mesh"}, {"pos", {0, 0}}}}}};
+  EXPECT_THAT(ParseError(bad), HasSubstr("/objects/0: an object of type mesh needs \"mesh\""));
+  bad = {{"objects", {{{"type", "box"}, {"pos", {0, 0}}, {"mesh", "x.obj"}}}}};
+  EXPECT_THAT(ParseError(bad), HasSubstr("/objects/0/mesh: \"mesh\" names an OBJ file for "
+                                         "objects of type mesh, not box"));
+  bad = {{"objects", {{{"type", "mesh"}, {"pos", {0, 0}}, {"mesh", "/nonexistent/a.obj"}}}}};
+  EXPECT_THAT(ParseError(bad),
+              HasSubstr("/objects/0: object 'mesh000': mesh file '/nonexistent/a.obj' cannot be "
+                        "read"));
 }
 
 // MuJoCo's buffer sizes come from ModelOptions (the tabletop's are small: every mjData clears

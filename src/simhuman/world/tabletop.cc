@@ -307,4 +307,58 @@ core::StatusOr<TabletopScene> GenerateTabletop(uint64_t seed, std::string_view k
   return out;
 }
 
+const std::vector<std::string>& ZeroShotShapes() {
+  static const std::vector<std::string> kShapes = {"cone", "hourglass", "mesh"};
+  return kShapes;
+}
+
+core::Status MakeZeroShot(TabletopScene* ts, std::string_view shape, const std::string& mesh_file) {
+  const std::vector<std::string>& shapes = ZeroShotShapes();
+  if (std::find(shapes.begin(), shapes.end(), shape) == shapes.end()) {
+    return absl::InvalidArgumentError("unknown zero-shot shape '" + std::string(shape) +
+                                      "'; valid shapes are: " + core::JoinNames(shapes));
+  }
+  TabletopOptions defaults;
+  for (ObjectSpec& o : ts->scene.objects) {
+    if (o.id != ts->task.object_id) continue;
+    // the drawn nominal width and height (ToSpec's sizes undone)
+    double width = 0, height = 0;
+    if (o.type == "box") {
+      width = o.size.at("width") / defaults.box_width_scale;
+      height = o.size.at("height");
+    } else if (o.type == "cylinder") {
+      width = 2 * o.size.at("radius");
+      height = o.size.at("height");
+    } else {
+      height = 2 * o.size.at("radius") / defaults.sphere_scale;
+      width = 0.5 * (defaults.width_lo_m + defaults.width_hi_m);
+    }
+    const std::string digits = o.id.substr(o.id.size() - 3);
+    o.type = std::string(shape);
+    o.id = o.type + digits;
+    o.size.clear();
+    o.mesh.clear();
+    if (shape == "cone") {
+      o.size = {{"radius", width / 2}, {"height", height}};
+    } else if (shape == "hourglass") {
+      o.size = {{"radius", width / 2}, {"waist_radius", 0.55 * width / 2}, {"height", height}};
+    } else {
+      o.mesh = mesh_file;
+    }
+    ts->task.object_id = o.id;
+    if (!ts->task.command.empty()) {
+      const size_t at = ts->task.command.find(" " + o.color + " ");
+      const size_t end = ts->task.command.find(" on the ");
+      if (at != std::string::npos && end != std::string::npos) {
+        ts->task.command.replace(at + 2 + o.color.size(), end - (at + 2 + o.color.size()),
+                                 shape == "mesh" ? "object" : o.type);
+      }
+    }
+    core::StatusOr<core::SceneCatalog> built = BuildCatalog(ts->scene);
+    if (!built.ok()) return core::Annotate(built.status(), "zero-shot " + std::string(shape));
+    return absl::OkStatus();
+  }
+  return absl::InternalError("tabletop task object missing: " + ts->task.object_id);
+}
+
 }  // namespace simhuman::world

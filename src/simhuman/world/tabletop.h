@@ -110,6 +110,23 @@ const std::vector<std::string>& TabletopTaskKinds();
 core::StatusOr<TabletopScene> GenerateTabletop(uint64_t seed, std::string_view kind,
                                                const TabletopOptions& options = {});
 
+/// Shapes not in the generator, for zero-shot runs (DASH Section 5 shows an hourglass, a cone and
+/// a mesh): "cone", "hourglass" and "mesh" (an OBJ file).
+const std::vector<std::string>& ZeroShotShapes();
+
+/// The OBJ file of a zero-shot "mesh" when none is named: a lathed, oval vase 16 cm tall
+/// (scripts/make_vase_obj.py), read from the current directory.
+inline constexpr char kZeroShotMeshFile[] = "assets/meshes/vase.obj";
+
+/// The task object of `ts` becomes a `shape` of ZeroShotShapes() at the same place, with the
+/// same colour, mass and friction: a cone or an hourglass as wide as the object was drawn
+/// (its nominal width; the hourglass's waist 0.55 of it) and as tall; a mesh as `mesh_file`
+/// gives it. Its id becomes "<shape><the same 3 digits>"; the task and its command follow.
+/// Errors: InvalidArgument naming an unknown shape (listing the valid ones) or a mesh file that
+/// cannot be read or used.
+core::Status MakeZeroShot(TabletopScene* ts, std::string_view shape,
+                          const std::string& mesh_file = kZeroShotMeshFile);
+
 /// The table, chair and seated human of the layout above, without objects; `name` as given.
 SceneSpec TabletopBaseScene(const std::string& name);
 

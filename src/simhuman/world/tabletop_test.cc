@@ -304,6 +304,57 @@ TEST(TabletopTest, StandingObjectsComeToRest) {
   EXPECT_GE(cylinders, 2);  // the seeds above stand cylinders
 }
 
+// DASH's zero-shot shapes: the task object becomes a cone, an hourglass or a mesh that stands
+// upright on its base where the object stood and comes to rest after a nudge
+TEST(TabletopTest, ZeroShotObjectsReplaceTheTaskObjectAndStandIntegration) {
+  for (const std::string& shape : ZeroShotShapes()) {
+    for (const char* kind : {"place", "stack"}) {
+      SCOPED_TRACE(shape + " " + kind);
+      core::StatusOr<TabletopScene> t = GenerateTabletop(4, kind);
+      ASSERT_TRUE(t.ok()) << t.status();
+      const TabletopTask before = t->task;
+      ASSERT_TRUE(
+          MakeZeroShot(&*t, shape, std::string(SIMHUMAN_SOURCE_DIR) + "/" + kZeroShotMeshFile)
+              .ok());
+      EXPECT_EQ(t->task.object_id, shape + before.object_id.substr(before.object_id.size() - 3));
+      EXPECT_EQ(t->task.target_id, before.target_id);
+      if (before.kind == "stack") {
+        EXPECT_THAT(t->task.command, HasSubstr(shape == "mesh" ? " object on the " : shape));
+      }
+      core::StatusOr<core::SceneCatalog> cat = BuildCatalog(t->scene);
+      ASSERT_TRUE(cat.ok()) << cat.status();
+      ModelOptions opt;
+      opt.timestep_s = 1.0 / 240;
+      auto w = SimWorld::Create(*cat, {{0.0, -2.0, 0.0, 1.0, t->scene.humans[0].kind}}, opt);
+      ASSERT_TRUE(w.ok()) << w.status();
+      mjModel* m = (*w)->mutable_model();
+      mjData* d = (*w)->data();
+      const int b = mj_name2id(m, mjOBJ_BODY, ObjectBodyName(t->task.object_id).c_str());
+      ASSERT_GE(b, 0);
+      double* q = d->qpos + m->jnt_qposadr[m->body_jntadr[b]];
+      const Eigen::Vector3d start(q[0], q[1], q[2]);
+      q[2] += 0.003;
+      q[3] = std::cos(0.026);
+      q[4] = std::sin(0.026);
+      for (int k = 0; k < 3 * 240; ++k) mj_step(m, d);
+      mjtNum vel[6];
+      mj_objectVelocity(m, d, mjOBJ_BODY, b, vel, 0);
+      EXPECT_LT(Eigen::Vector3d(vel[0], vel[1], vel[2]).norm(), 0.02) << "still turning";
+      EXPECT_LT(Eigen::Vector3d(vel[3], vel[4], vel[5]).norm(), 0.005) << "still sliding";
+      // upright on its base, where it stood (the mesh's frame is where its file puts it)
+      EXPECT_GT(d->xmat[9 * b + 8], std::cos(2 * M_PI / 180));
+      EXPECT_LT(
+          (Eigen::Vector3d(d->xpos[3 * b], d->xpos[3 * b + 1], d->xpos[3 * b + 2]) - start).norm(),
+          0.004);
+    }
+  }
+  TabletopScene t = *GenerateTabletop(4, "place");
+  EXPECT_THAT(MakeZeroShot(&t, "pyramid").ToString(),
+              HasSubstr("unknown zero-shot shape 'pyramid'; valid shapes are: cone, hourglass"));
+  EXPECT_THAT(MakeZeroShot(&t, "mesh", "/nonexistent/bunny.obj").ToString(),
+              HasSubstr("/nonexistent/bunny.obj"));
+}
+
 // the built-in tabletop_demo keeps DASH's sizes, masses, friction and spacing (its flat yellow
 // box, which commands call "the flat box", excepted)
 TEST(TabletopTest, TabletopDemoIsDashSized) {

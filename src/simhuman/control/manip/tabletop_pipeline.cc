@@ -33,6 +33,7 @@ const char* TabletopStageName(TabletopStage s) {
 }
 
 double GripHeightM(const TabletopGoal& g, const TabletopOptions& o) {
+  if (g.grip_height_m >= 0) return g.grip_height_m;
   const double z =
       g.shape == GraspShape::kSphere ? g.half_width_m : g.height_m * o.grip_height_frac;
   return std::clamp(z, o.grip_min_m, o.grip_max_m);
@@ -560,7 +561,7 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
     r = Fail(TabletopStage::kPlace, "topple at place: the object tipped over");
   } else if (dxy > 0.10) {
     r = Fail(TabletopStage::kPlace, "missed the target: " + std::to_string(dxy) + " m away");
-  } else if (c.z() < g_.target.z() + 0.05) {
+  } else if (c.z() < g_.target.z() + g_.min_com_above_target_m) {
     r = Fail(TabletopStage::kPlace, "fell off its support");
   } else if (speed > 0.05) {
     r = Fail(TabletopStage::kSettle, "not at rest after the release");

@@ -48,6 +48,11 @@ struct TabletopGoal {
   /// of the object it is stacked on.
   Eigen::Vector3d target;
   int support_body = -1;  ///< the body it is stacked on (-1: the table)
+  /// Where the hand grips it, above its base; < 0: TabletopOptions' rule (GripHeightM).
+  double grip_height_m = -1;
+  /// Success needs its centre of mass at least this far above the target's z (DASH: 5 cm; a
+  /// cone's stands lower than that on its own base).
+  double min_com_above_target_m = 0.05;
   /// How the controllers see the object while they work (the reach's box faces, the scripted
   /// grasp's approach, transport, the alignment over the target). Empty: the simulation's own
   /// state (ground truth); the vision module supplies its delayed camera estimates
