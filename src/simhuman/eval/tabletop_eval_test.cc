@@ -115,6 +115,29 @@ TEST(TabletopEvalTest, TheDescentStraightensAnObjectTiltingInTheHandIntegration)
   EXPECT_THAT(once.end_reason, HasSubstr("tipped over"));
 }
 
+// episode 172's place target lies beyond the arm even with the trunk leant furthest; turned
+// about the spine as well, the trunk brings the shoulder near enough to set the object down
+TEST(TabletopEvalTest, ATargetBeyondTheLeanIsReachedByTurningTheTrunkIntegration) {
+  auto run = [](bool twist) {
+    auto t = MakeTableWorld(core::DeriveSeed(1, 0x7ab1e, 172), "place");
+    EXPECT_TRUE(t.ok()) << t.status();
+    auto goal = TabletopSceneGoal(t->ts, *t->world);
+    auto ix = control::manip::MakeGraspIndex(*t->world, 0, true);
+    EXPECT_TRUE(goal.ok() && ix.ok());
+    control::manip::TabletopOptions o;
+    if (!twist) o.twist_deg.clear();
+    const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
+      return control::manip::MakeScriptedGrasp(t->world->model(), t->world->data(), *ix, g, o);
+    };
+    return control::manip::RunTabletop(*t->world, *ix, *goal, grasp, o);
+  };
+  const control::manip::TabletopResult turned = run(true);
+  EXPECT_TRUE(turned.success) << turned.end_reason;
+  const control::manip::TabletopResult leant = run(false);
+  EXPECT_TRUE(leant.plan_failure);
+  EXPECT_EQ(leant.failed_stage, control::manip::TabletopStage::kTransport);
+}
+
 // a zero-shot cone is gripped where it is widest in the hand's band (low) and as wide as it is
 // there, and its success rule asks for its own centre's height, not DASH's 5 cm
 TEST(TabletopEvalTest, AZeroShotConeIsGrippedAsWideAsItIsWhereTheHandGoes) {

@@ -76,6 +76,8 @@ class Run {
     s_.task_pos = g_.planned_pos;
     const std::string spine = world::AgentPrefix(ix_.arm.agent) + "abdomen_y";
     lean_act_ = mj_name2id(m_, mjOBJ_ACTUATOR, spine.c_str());
+    twist_act_ = mj_name2id(m_, mjOBJ_ACTUATOR,
+                            (world::AgentPrefix(ix_.arm.agent) + "abdomen_z").c_str());
   }
   ~Run() { mj_deleteData(scratch_); }
 
@@ -190,6 +192,23 @@ class Run {
     }
     return true;
   }
+  // the trunk turns about the spine to `rad` while the arm holds its angles
+  bool TwistTo(ArmTracker& tr, double rad) {
+    d_->ctrl[twist_act_] = rad;
+    const Eigen::VectorXd arm_now = ix_.arm.Get(d_);
+    for (int j = 0; j < 96; ++j) {
+      if (!Step([&] { tr.Hold(arm_now, d_); })) return false;
+    }
+    return true;
+  }
+  // the turns of o_.twist_deg (radians) that bring the shoulder nearer to `goal` in the
+  // horizontal, nearest first (the shoulder turned about the spine's axis as it stands)
+  std::vector<double> TwistsToward(const Eigen::Vector3d& goal) const;
+  // after the furthest lean, the trunk's turns in turn until `plan` succeeds or none is left;
+  // false when the simulation failed
+  bool TryTwists(ArmTracker& tr, const Eigen::Vector3d& goal,
+                 const std::function<core::StatusOr<ArmMotion>()>& plan,
+                 core::StatusOr<ArmMotion>* motion);
   std::optional<TabletopResult> Reach(ArmTracker& tr);
   std::optional<TabletopResult> Transport(ArmTracker& tr);
   std::optional<TabletopResult> GraspAndLift(ArmTracker& tr, const GraspPolicyFn& policy);
@@ -210,8 +229,44 @@ class Run {
   int steps_ = 0;
   int lean_act_ = -1;  // the trunk's forward lean actuator (abdomen_y), -1 without one
   int lean_ = -1;      // the index into o_.lean_deg the trunk last leaned to, -1 upright
+  int twist_act_ = -1;  // the trunk's turn about the spine (abdomen_z), -1 without one
   std::string step_error_ = "unstable simulation";
 };
+
+std::vector<double> Run::TwistsToward(const Eigen::Vector3d& goal) const {
+  std::vector<std::pair<double, double>> by_distance;  // {distance, twist}
+  if (twist_act_ < 0) return {};
+  const int joint = m_->actuator_trnid[2 * twist_act_];
+  const Eigen::Vector3d anchor(d_->xanchor + 3 * joint), axis(d_->xaxis + 3 * joint);
+  const Eigen::Vector3d shoulder(d_->site_xpos + 3 * ix_.shoulder_site);
+  auto distance = [&](double rad) {
+    const Eigen::Vector3d p = anchor + Eigen::AngleAxisd(rad, axis) * (shoulder - anchor);
+    return (p - goal).head<2>().norm();
+  };
+  const double now = distance(0);
+  for (double deg : o_.twist_deg) {
+    const double rad = deg * M_PI / 180 - d_->ctrl[twist_act_];
+    if (distance(rad) < now) by_distance.emplace_back(distance(rad), deg * M_PI / 180);
+  }
+  std::sort(by_distance.begin(), by_distance.end());
+  std::vector<double> out;
+  for (const auto& [dist, rad] : by_distance) out.push_back(rad);
+  return out;
+}
+
+bool Run::TryTwists(ArmTracker& tr, const Eigen::Vector3d& goal,
+                    const std::function<core::StatusOr<ArmMotion>()>& plan,
+                    core::StatusOr<ArmMotion>* motion) {
+  for (double rad : TwistsToward(goal)) {
+    if (motion->ok() || !(absl::IsFailedPrecondition(motion->status()) ||
+                          absl::IsNotFound(motion->status()))) {
+      break;
+    }
+    if (!TwistTo(tr, rad)) return false;
+    *motion = plan();
+  }
+  return true;
+}
 
 std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   // the hand pre-shapes first (0.25 s), then the arm moves with it open
@@ -323,6 +378,9 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
     if (!lean_to(lean)) return Fail(TabletopStage::kReach, StepError());
     motion = plan_at_heights();
   }
+  if (plan_failed(motion) && !TryTwists(tr, centre, plan_at_heights, &motion)) {
+    return Fail(TabletopStage::kReach, StepError());
+  }
   if (!motion.ok()) {
     return Fail(TabletopStage::kReach, std::string(motion.status().message()), true);
   }
@@ -381,6 +439,9 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
        ++lean) {
     if (!LeanTo(tr, lean)) return Fail(TabletopStage::kTransport, StepError());
     motion = plan();
+  }
+  if (plan_failed(motion) && !TryTwists(tr, base_goal, plan, &motion)) {
+    return Fail(TabletopStage::kTransport, StepError());
   }
   if (!motion.ok()) {
     return Fail(TabletopStage::kTransport, std::string(motion.status().message()), true);

@@ -144,6 +144,11 @@ struct TabletopOptions {
   /// forward.
   double comfort_reach_m = 0.6;
   double lean_shoulder_m = 0.45;
+  /// When the furthest lean still reaches no arm pose (at the reach or the transport), the
+  /// leaning trunk also turns about the spine (abdomen_z, degrees; + turns the front to the
+  /// left), trying these turns nearest-shoulder first and skipping any that takes the shoulder
+  /// further from the object (or the target) than it is.
+  std::vector<double> twist_deg = {20, -20, 35, -35};
 };
 
 /// How high above the object's base the palm's centre grips it (TabletopOptions' grip_*).
