@@ -552,6 +552,20 @@ TEST(OfflinePlannerTest, AmbiguityIsAQuestion) {
             "yellow cylinder (box002)?");
 }
 
+// cones and hourglasses (the tabletop's zero-shot shapes) are named like boxes and cylinders
+TEST(OfflinePlannerTest, ConesAndHourglassesAreObjectsToStack) {
+  const std::string scene = kCorpus + "zero_shot_shapes.json";
+  EXPECT_EQ(
+      PlanText(scene, "put the yellow hourglass on the green box"),
+      "hourglass002|body|right hand|contact|none / hourglass002|body|right hand|contact|none, "
+      "box003|top|@hourglass002:body|contact|up");
+  EXPECT_EQ(PlanText(scene, "stack the red cone on the box"),
+            "cone001|body|right hand|contact|none / cone001|body|right hand|contact|none, "
+            "box003|top|@cone001:body|contact|up");
+  EXPECT_THAT(PlanStatus(scene, "put the red pyramid on the box").message(),
+              HasSubstr("cylinder, sphere, cone, hourglass, mesh"));
+}
+
 TEST(OfflinePlannerTest, TabletopCommandOfTheIssue) {
   EXPECT_EQ(
       PlanText("tabletop_demo",

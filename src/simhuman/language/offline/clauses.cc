@@ -164,20 +164,23 @@ absl::Status Session::SkipUnknownWords(Tokens& t, const std::string& c) const {
     const bool object = kBefore.count(p) || Colors().count(p) || p == "big" || p == "small" ||
                         p == "tall" || p == "short" || k + 1 == t.size() || IsIdLike(w);
     if (k == verb) {
-      return Invalid("did not understand the action '" + w + "' in \"" + c +
-                     "\"; I understand: sit, lie, rest, stand up, go to / walk to / approach, "
-                     "touch / reach, put your hand(s) on, put the <colour> <shape> on <object>, "
-                     "carry / bring / pick up / put down <object> (to <object>), "
-                     "with object types chair, armchair, sofa, stool, high stool, bed, table, "
-                     "laptop, box, long box, cylinder, sphere. The scene has: " +
-                     DescribeSceneObjects(scene_));
+      return Invalid(
+          "did not understand the action '" + w + "' in \"" + c +
+          "\"; I understand: sit, lie, rest, stand up, go to / walk to / approach, "
+          "touch / reach, put your hand(s) on, put the <colour> <shape> on <object>, "
+          "carry / bring / pick up / put down <object> (to <object>), "
+          "with object types chair, armchair, sofa, stool, high stool, bed, table, "
+          "laptop, box, long box, cylinder, sphere, cone, hourglass, mesh. The scene has: " +
+          DescribeSceneObjects(scene_));
     }
     if (object) {
-      return Invalid("did not understand the word '" + w + "' in \"" + c +
-                     "\"; I understand object types chair, armchair, sofa, stool, high stool, "
-                     "bed, table, laptop, box, long box, cylinder, sphere and body parts hands, "
-                     "elbows, knees, feet, stomach, head. The scene has: " +
-                     DescribeSceneObjects(scene_));
+      return Invalid(
+          "did not understand the word '" + w + "' in \"" + c +
+          "\"; I understand object types chair, armchair, sofa, stool, high stool, "
+          "bed, table, laptop, box, long box, cylinder, sphere, cone, hourglass, mesh and "
+          "body parts hands, "
+          "elbows, knees, feet, stomach, head. The scene has: " +
+          DescribeSceneObjects(scene_));
     }
   }
   t = std::move(kept);

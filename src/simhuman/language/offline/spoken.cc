@@ -32,7 +32,8 @@ bool TypeWord(const std::string& w) {
 }
 
 bool Movable(const std::string& w) {
-  static const std::set<std::string> kMovable = {"box", "cylinder", "sphere", "long_box"};
+  static const std::set<std::string> kMovable = {"box",       "cylinder", "sphere",  "cone",
+                                                 "hourglass", "mesh",     "long_box"};
   auto t = TypeWords().find(Canonical(w));
   return t != TypeWords().end() && kMovable.count(t->second) > 0;
 }
