@@ -318,6 +318,9 @@ TEST(CliTest, RunTabletopCommandThroughThePipelineIntegration) {
   EXPECT_TRUE(end == "completed" || end.find("grasp miss") == 0 || end.find("plan failure") == 0 ||
               end.find("drop") == 0 || end.find("topple") == 0 || end.find("missed") == 0)
       << end;
+  // DASH's rule judges the object: UniHSI's body points do not apply and say the same
+  EXPECT_EQ(j["success_unihsi_points"], j["success"]);
+  EXPECT_EQ(r.out.find("on UniHSI's body points"), std::string::npos) << r.out;
   // a bad grasp policy file is named before anything runs
   CliRun bad =
       Cli({"run", "--scene", "tabletop_dash", "--command", "put the red box on the green box",
