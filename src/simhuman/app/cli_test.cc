@@ -330,6 +330,20 @@ TEST(CliTest, RunTabletopCommandThroughThePipelineIntegration) {
   std::filesystem::remove_all(out);
 }
 
+// the zero-shot demo: an hourglass, which the grasp was not made for, stacked by command
+TEST(CliTest, RunStacksTheZeroShotHourglassIntegration) {
+  const std::string out = OutDir("zero_shot");
+  CliRun r =
+      Cli({"run", "--scene", "tabletop_zero_shot", "--command",
+           "put the red hourglass on the green box", "--grasp-policy", "scripted", "--out", out});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  std::ifstream f(out + "/result.json");
+  nlohmann::json j = nlohmann::json::parse(f);
+  EXPECT_EQ(j["end_reason"], "completed");
+  EXPECT_TRUE(j["success"].get<bool>());
+  std::filesystem::remove_all(out);
+}
+
 TEST(CliTest, EvalBadFlags) {
   std::string out = OutDir("eval_bad");
   ExpectBadInput(Cli({"eval", "--suite", "dance", "--out", out}),

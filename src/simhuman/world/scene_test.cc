@@ -268,7 +268,7 @@ TEST(SceneTest, ScenePlanUnwrappedAndMultiPlan) {
 }
 
 TEST(SceneTest, BuiltinScenesLoadAndDoNotOverlap) {
-  ASSERT_EQ(BuiltinSceneNames().size(), 9u);
+  ASSERT_EQ(BuiltinSceneNames().size(), 10u);
   for (const std::string& name : BuiltinSceneNames()) {
     SCOPED_TRACE(name);
     core::StatusOr<SceneSpec> s = LoadScene(name);
