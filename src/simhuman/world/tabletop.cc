@@ -361,4 +361,31 @@ core::Status MakeZeroShot(TabletopScene* ts, std::string_view shape, const std::
   return absl::InternalError("tabletop task object missing: " + ts->task.object_id);
 }
 
+// DASH's benchmark set-up, one generated stack scene: seated at a table, a dexterous right
+// hand, "put the <colour> <shape> on the <colour> <shape>" (world/tabletop.h)
+SceneSpec TabletopDashScene() {
+  core::StatusOr<TabletopScene> ts = GenerateTabletop(3, "stack");
+  SceneSpec s = ts.ok() ? ts->scene : TabletopBaseScene("tabletop_dash");
+  s.name = "tabletop_dash";
+  return s;
+}
+
+// tabletop_dash with shapes the grasp was not made for (DASH Section 5): its red box, the
+// object to stack, becomes an hourglass, and its blue sphere a cone
+SceneSpec TabletopZeroShotScene() {
+  core::StatusOr<TabletopScene> ts = GenerateTabletop(3, "stack");
+  if (!ts.ok() || !MakeZeroShot(&*ts, "hourglass").ok())
+    return TabletopBaseScene("tabletop_zero_shot");
+  SceneSpec s = ts->scene;
+  s.name = "tabletop_zero_shot";
+  for (ObjectSpec& o : s.objects) {
+    if (o.type != "sphere") continue;
+    const double r = o.size.at("radius");
+    o.type = "cone";
+    o.id = "cone" + o.id.substr(o.id.size() - 3);
+    o.size = {{"radius", r * 0.8}, {"height", std::min(0.18, 3 * r)}};
+  }
+  return s;
+}
+
 }  // namespace simhuman::world

@@ -127,6 +127,13 @@ inline constexpr char kZeroShotMeshFile[] = "assets/meshes/vase.obj";
 core::Status MakeZeroShot(TabletopScene* ts, std::string_view shape,
                           const std::string& mesh_file = kZeroShotMeshFile);
 
+/// The built-in scene `tabletop_dash`: GenerateTabletop(3, "stack"), DASH's set-up.
+SceneSpec TabletopDashScene();
+
+/// The built-in scene `tabletop_zero_shot`: tabletop_dash with its object to stack made an
+/// hourglass (MakeZeroShot) and its sphere a cone.
+SceneSpec TabletopZeroShotScene();
+
 /// The table, chair and seated human of the layout above, without objects; `name` as given.
 SceneSpec TabletopBaseScene(const std::string& name);
 
