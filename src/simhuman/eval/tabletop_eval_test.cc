@@ -91,22 +91,31 @@ TEST(TabletopEvalTest, AnUnloadableGraspPolicyIsNamed) {
   EXPECT_FALSE(RunTabletopEval(o).ok());
 }
 
+// the tabletop suite's episode `index` (seed 1) through the pipeline with `o` and the scripted
+// grasp
+control::manip::TabletopResult RunSuiteEpisode(int index, const std::string& kind,
+                                               const control::manip::TabletopOptions& o) {
+  auto t = MakeTableWorld(core::DeriveSeed(1, 0x7ab1e, static_cast<uint64_t>(index)), kind);
+  EXPECT_TRUE(t.ok()) << t.status();
+  if (!t.ok()) return {};
+  auto goal = TabletopSceneGoal(t->ts, *t->world);
+  auto ix = control::manip::MakeGraspIndex(*t->world, 0, true);
+  EXPECT_TRUE(goal.ok() && ix.ok());
+  if (!goal.ok() || !ix.ok()) return {};
+  const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
+    return control::manip::MakeScriptedGrasp(t->world->model(), t->world->data(), *ix, g, o);
+  };
+  return control::manip::RunTabletop(*t->world, *ix, *goal, grasp, o);
+}
+
 // The suite's episode 79 (seed 1, a stack): a 1.5 kg box 5 cm wide, held at its fingertips,
 // tilted from 3 to 20 degrees in the hand on the way down onto the bottom box and fell over
 // after the release. Straightened again every 3 cm of the descent, it stays stacked.
 TEST(TabletopEvalTest, TheDescentStraightensAnObjectTiltingInTheHandIntegration) {
   auto run = [](double segment_m) {
-    auto t = MakeTableWorld(core::DeriveSeed(1, 0x7ab1e, 79), "stack");
-    EXPECT_TRUE(t.ok()) << t.status();
-    auto goal = TabletopSceneGoal(t->ts, *t->world);
-    auto ix = control::manip::MakeGraspIndex(*t->world, 0, true);
-    EXPECT_TRUE(goal.ok() && ix.ok());
     control::manip::TabletopOptions o;
     o.lower_segment_m = segment_m;
-    const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
-      return control::manip::MakeScriptedGrasp(t->world->model(), t->world->data(), *ix, g, o);
-    };
-    return control::manip::RunTabletop(*t->world, *ix, *goal, grasp, o);
+    return RunSuiteEpisode(79, "stack", o);
   };
   const control::manip::TabletopResult straightened = run(0.03);
   EXPECT_TRUE(straightened.success) << straightened.end_reason;
@@ -119,17 +128,9 @@ TEST(TabletopEvalTest, TheDescentStraightensAnObjectTiltingInTheHandIntegration)
 // about the spine as well, the trunk brings the shoulder near enough to set the object down
 TEST(TabletopEvalTest, ATargetBeyondTheLeanIsReachedByTurningTheTrunkIntegration) {
   auto run = [](bool twist) {
-    auto t = MakeTableWorld(core::DeriveSeed(1, 0x7ab1e, 172), "place");
-    EXPECT_TRUE(t.ok()) << t.status();
-    auto goal = TabletopSceneGoal(t->ts, *t->world);
-    auto ix = control::manip::MakeGraspIndex(*t->world, 0, true);
-    EXPECT_TRUE(goal.ok() && ix.ok());
     control::manip::TabletopOptions o;
     if (!twist) o.twist_deg.clear();
-    const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
-      return control::manip::MakeScriptedGrasp(t->world->model(), t->world->data(), *ix, g, o);
-    };
-    return control::manip::RunTabletop(*t->world, *ix, *goal, grasp, o);
+    return RunSuiteEpisode(172, "place", o);
   };
   const control::manip::TabletopResult turned = run(true);
   EXPECT_TRUE(turned.success) << turned.end_reason;

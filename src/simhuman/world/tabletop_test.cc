@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -257,6 +258,19 @@ TEST(TabletopTest, ShoulderOffsetsMatchTheHumanoidAndTheSceneCompiles) {
   EXPECT_EQ(MujocoWarningCount(), warnings0);
 }
 
+// the scene's objects at 240 Hz, its human standing out of the way 2 m off (nullptr on an
+// error, reported)
+std::unique_ptr<SimWorld> ObjectsWorld(const SceneSpec& scene) {
+  core::StatusOr<core::SceneCatalog> cat = BuildCatalog(scene);
+  EXPECT_TRUE(cat.ok()) << cat.status();
+  if (!cat.ok()) return nullptr;
+  ModelOptions opt;
+  opt.timestep_s = 1.0 / 240;
+  auto w = SimWorld::Create(*cat, {{0.0, -2.0, 0.0, 1.0, scene.humans[0].kind}}, opt);
+  EXPECT_TRUE(w.ok()) << w.status();
+  return w.ok() ? std::move(*w) : nullptr;
+}
+
 // every object of generated scenes comes to rest where it stands: a cylinder on the table or on
 // another object touched it at one point and kept spinning (0.27 rad/s for ever) before its
 // rims got rest rings
@@ -265,14 +279,10 @@ TEST(TabletopTest, StandingObjectsComeToRest) {
   for (uint64_t seed : {3, 4, 5, 6}) {
     core::StatusOr<TabletopScene> t = GenerateTabletop(seed, "stack");
     ASSERT_TRUE(t.ok()) << t.status();
-    core::StatusOr<core::SceneCatalog> cat = BuildCatalog(t->scene);
-    ASSERT_TRUE(cat.ok()) << cat.status();
-    ModelOptions opt;
-    opt.timestep_s = 1.0 / 240;
-    auto w = SimWorld::Create(*cat, {{0.0, -2.0, 0.0, 1.0, t->scene.humans[0].kind}}, opt);
-    ASSERT_TRUE(w.ok()) << w.status();
-    mjModel* m = (*w)->mutable_model();
-    mjData* d = (*w)->data();
+    std::unique_ptr<SimWorld> w = ObjectsWorld(t->scene);
+    ASSERT_NE(w, nullptr);
+    mjModel* m = w->mutable_model();
+    mjData* d = w->data();
     // uniform density: each object's centre of mass at half its height (a cylinder's was at 0.7)
     for (const ObjectSpec& o : t->scene.objects) {
       const int b = mj_name2id(m, mjOBJ_BODY, ObjectBodyName(o.id).c_str());
@@ -321,14 +331,10 @@ TEST(TabletopTest, ZeroShotObjectsReplaceTheTaskObjectAndStandIntegration) {
       if (before.kind == "stack") {
         EXPECT_THAT(t->task.command, HasSubstr(shape == "mesh" ? " object on the " : shape));
       }
-      core::StatusOr<core::SceneCatalog> cat = BuildCatalog(t->scene);
-      ASSERT_TRUE(cat.ok()) << cat.status();
-      ModelOptions opt;
-      opt.timestep_s = 1.0 / 240;
-      auto w = SimWorld::Create(*cat, {{0.0, -2.0, 0.0, 1.0, t->scene.humans[0].kind}}, opt);
-      ASSERT_TRUE(w.ok()) << w.status();
-      mjModel* m = (*w)->mutable_model();
-      mjData* d = (*w)->data();
+      std::unique_ptr<SimWorld> w = ObjectsWorld(t->scene);
+      ASSERT_NE(w, nullptr);
+      mjModel* m = w->mutable_model();
+      mjData* d = w->data();
       const int b = mj_name2id(m, mjOBJ_BODY, ObjectBodyName(t->task.object_id).c_str());
       ASSERT_GE(b, 0);
       double* q = d->qpos + m->jnt_qposadr[m->body_jntadr[b]];

@@ -76,8 +76,8 @@ class Run {
     s_.task_pos = g_.planned_pos;
     const std::string spine = world::AgentPrefix(ix_.arm.agent) + "abdomen_y";
     lean_act_ = mj_name2id(m_, mjOBJ_ACTUATOR, spine.c_str());
-    twist_act_ = mj_name2id(m_, mjOBJ_ACTUATOR,
-                            (world::AgentPrefix(ix_.arm.agent) + "abdomen_z").c_str());
+    twist_act_ =
+        mj_name2id(m_, mjOBJ_ACTUATOR, (world::AgentPrefix(ix_.arm.agent) + "abdomen_z").c_str());
   }
   ~Run() { mj_deleteData(scratch_); }
 
@@ -227,8 +227,8 @@ class Run {
   const StepHook& hook_;
   GraspState s_;
   int steps_ = 0;
-  int lean_act_ = -1;  // the trunk's forward lean actuator (abdomen_y), -1 without one
-  int lean_ = -1;      // the index into o_.lean_deg the trunk last leaned to, -1 upright
+  int lean_act_ = -1;   // the trunk's forward lean actuator (abdomen_y), -1 without one
+  int lean_ = -1;       // the index into o_.lean_deg the trunk last leaned to, -1 upright
   int twist_act_ = -1;  // the trunk's turn about the spine (abdomen_z), -1 without one
   std::string step_error_ = "unstable simulation";
 };
@@ -258,8 +258,8 @@ bool Run::TryTwists(ArmTracker& tr, const Eigen::Vector3d& goal,
                     const std::function<core::StatusOr<ArmMotion>()>& plan,
                     core::StatusOr<ArmMotion>* motion) {
   for (double rad : TwistsToward(goal)) {
-    if (motion->ok() || !(absl::IsFailedPrecondition(motion->status()) ||
-                          absl::IsNotFound(motion->status()))) {
+    if (motion->ok() ||
+        !(absl::IsFailedPrecondition(motion->status()) || absl::IsNotFound(motion->status()))) {
       break;
     }
     if (!TwistTo(tr, rad)) return false;
