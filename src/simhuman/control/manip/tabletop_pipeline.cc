@@ -45,6 +45,11 @@ bool TopGrasp(const TabletopGoal& g, const TabletopOptions& o) {
 
 namespace {
 
+// no arm pose or no path was found (as opposed to bad input or a broken simulation)
+bool PlanFailed(const core::StatusOr<ArmMotion>& r) {
+  return !r.ok() && (absl::IsFailedPrecondition(r.status()) || absl::IsNotFound(r.status()));
+}
+
 // "palm, 3 fingers, thumb": the hand parts touching the object (HandTouchParts() order: two
 // palm parts, three phalanges for each of four fingers, then the thumb's)
 std::string GripSummary(const float* touch) {
@@ -258,10 +263,7 @@ bool Run::TryTwists(ArmTracker& tr, const Eigen::Vector3d& goal,
                     const std::function<core::StatusOr<ArmMotion>()>& plan,
                     core::StatusOr<ArmMotion>* motion) {
   for (double rad : TwistsToward(goal)) {
-    if (motion->ok() ||
-        !(absl::IsFailedPrecondition(motion->status()) || absl::IsNotFound(motion->status()))) {
-      break;
-    }
+    if (!PlanFailed(*motion)) break;
     if (!TwistTo(tr, rad)) return false;
     *motion = plan();
   }
@@ -355,15 +357,12 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   // the forearm clear of the table)
   const double grip = centre.z() - g_.planned_pos.z();
   const double high = g_.height_m - o_.grip_below_top_m;
-  auto plan_failed = [](const core::StatusOr<ArmMotion>& r) {
-    return !r.ok() && (absl::IsFailedPrecondition(r.status()) || absl::IsNotFound(r.status()));
-  };
   auto plan_at_heights = [&]() {
     centre.z() = g_.planned_pos.z() + grip;
     face_goals = poses(faces);
     around_goals = top ? top_poses() : poses(around);
     core::StatusOr<ArmMotion> r = plan();
-    if (plan_failed(r) && !top && high > grip + 0.01) {
+    if (PlanFailed(r) && !top && high > grip + 0.01) {
       centre.z() = g_.planned_pos.z() + high;
       face_goals = poses(faces);
       around_goals = poses(around);
@@ -374,11 +373,11 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   };
   core::StatusOr<ArmMotion> motion = plan_at_heights();
   // leaning further while no arm pose is free or no path reaches one
-  for (++lean; lean < leans && plan_failed(motion); ++lean) {
+  for (++lean; lean < leans && PlanFailed(motion); ++lean) {
     if (!lean_to(lean)) return Fail(TabletopStage::kReach, StepError());
     motion = plan_at_heights();
   }
-  if (plan_failed(motion) && !TryTwists(tr, centre, plan_at_heights, &motion)) {
+  if (PlanFailed(motion) && !TryTwists(tr, centre, plan_at_heights, &motion)) {
     return Fail(TabletopStage::kReach, StepError());
   }
   if (!motion.ok()) {
@@ -415,14 +414,11 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   mo.terminal_palm_speed_mps = 0;  // DASH: transport ends at rest over the target
   mo.ignore_bodies.push_back(g_.object_body);
   if (o_.transport_checks_object) mo.carried_body = g_.object_body;
-  auto plan_failed = [](const core::StatusOr<ArmMotion>& r) {
-    return !r.ok() && (absl::IsFailedPrecondition(r.status()) || absl::IsNotFound(r.status()));
-  };
   // the hand at the goals' turns first; when no pose or path reaches one, at whichever turn
   // about the target's vertical the arm reaches (the object's yaw on the table is free)
   auto plan = [&]() {
     core::StatusOr<ArmMotion> r = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, {}, mo);
-    if (!plan_failed(r)) return r;
+    if (!PlanFailed(r)) return r;
     PalmPose any_turn = goals.front();
     any_turn.yaw_free_about = base_goal;
     ArmMotionOptions any_mo = mo;
@@ -435,12 +431,12 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   // a target beyond the arm from the trunk's lean at the reach: the trunk leans further, the
   // object held (the reach chose its lean for both, and a seated person leans on when short)
   for (int lean = lean_ + 1;
-       lean_act_ >= 0 && lean < static_cast<int>(o_.lean_deg.size()) && plan_failed(motion);
+       lean_act_ >= 0 && lean < static_cast<int>(o_.lean_deg.size()) && PlanFailed(motion);
        ++lean) {
     if (!LeanTo(tr, lean)) return Fail(TabletopStage::kTransport, StepError());
     motion = plan();
   }
-  if (plan_failed(motion) && !TryTwists(tr, base_goal, plan, &motion)) {
+  if (PlanFailed(motion) && !TryTwists(tr, base_goal, plan, &motion)) {
     return Fail(TabletopStage::kTransport, StepError());
   }
   if (!motion.ok()) {
