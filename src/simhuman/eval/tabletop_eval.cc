@@ -243,6 +243,7 @@ nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
           {"end_reason", e.end_reason},
           {"sim_steps", e.sim_steps},
           {"grasp_attempts", e.grasp_attempts},
+          {"release_tilt_deg", e.release_tilt_deg},
           {"wall_s", e.wall_s},
           {"cpu_s", e.cpu_s}};
 }
@@ -326,6 +327,7 @@ core::StatusOr<EpisodeOutcome> RunEpisode(const TabletopEvalOptions& o, int i,
   e.end_reason = r.end_reason;
   e.sim_steps = r.sim_steps;
   e.grasp_attempts = r.grasp_attempts;
+  e.release_tilt_deg = r.release_tilt_deg;
   e.wall_s = r.wall_s;
   e.cpu_s = r.cpu_s;
   out.sim_s = r.sim_steps * w->model()->opt.timestep;

@@ -59,6 +59,8 @@ struct TabletopEpisode {
   std::string end_reason;
   int sim_steps = 0;
   int grasp_attempts = 0;  ///< grasps begun
+  /// The object's tilt from upright (degrees) when the release began; -1: not reached
+  double release_tilt_deg = -1;
   double wall_s = 0, cpu_s = 0;
 };
 

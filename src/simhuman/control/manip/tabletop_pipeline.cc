@@ -135,15 +135,18 @@ class Run {
     return SolvePalmIk(m_, scratch_, ix_.arm, pose, from, from, io).q;
   }
   // moves the palm by `delta` (world) over `duration_s`, straight, by IK every ik_every_steps,
-  // the hand keeping its rotation; with `turn`, the hand also turns by it (world frame)
+  // the hand keeping its rotation; with `turn`, the hand also turns by it (world frame), then
+  // holds still for `settle_s`. `held`: the object is in the hand (the tracker's integral, which
+  // carries its load, is kept: TabletopOptions::keep_load_integral)
   bool MovePalm(ArmTracker& tr, const Eigen::Vector3d& delta, double duration_s,
-                const std::function<bool()>& stop, const Eigen::Matrix3d* turn = nullptr) {
+                const std::function<bool()>& stop, const Eigen::Matrix3d* turn = nullptr,
+                bool held = false, double settle_s = 0) {
     const Eigen::Vector3d p0(d_->site_xpos + 3 * ix_.arm.palm_site);
     const Eigen::Matrix3d r0 = Rot(d_, ix_.arm.hand_body);
     const Eigen::Quaterniond full(turn ? *turn : Eigen::Matrix3d::Identity());
     Eigen::VectorXd q = ix_.arm.Get(d_);
     const double t0 = d_->time;
-    tr.Reset();
+    if (!(held && o_.keep_load_integral)) tr.Reset();
     while (d_->time - t0 < duration_s) {
       const double a = std::min(1.0, (d_->time - t0) / duration_s);
       const double smooth = a * a * (3 - 2 * a);
@@ -157,7 +160,11 @@ class Run {
         q = IkTo(p0 + smooth * delta, q, &r);
       }
       if (!Step([&] { tr.Hold(q, d_); })) return false;
-      if (stop && stop()) break;
+      if (stop && stop()) return true;
+    }
+    const double t1 = d_->time;
+    while (d_->time - t1 < settle_s) {
+      if (!Step([&] { tr.Hold(q, d_); })) return false;
     }
     return true;
   }
@@ -232,9 +239,10 @@ class Run {
   const StepHook& hook_;
   GraspState s_;
   int steps_ = 0;
-  int lean_act_ = -1;   // the trunk's forward lean actuator (abdomen_y), -1 without one
-  int lean_ = -1;       // the index into o_.lean_deg the trunk last leaned to, -1 upright
-  int twist_act_ = -1;  // the trunk's turn about the spine (abdomen_z), -1 without one
+  double release_tilt_deg_ = -1;  // the object's tilt when the release began
+  int lean_act_ = -1;             // the trunk's forward lean actuator (abdomen_y), -1 without one
+  int lean_ = -1;                 // the index into o_.lean_deg the trunk last leaned to, -1 upright
+  int twist_act_ = -1;            // the trunk's turn about the spine (abdomen_z), -1 without one
   std::string step_error_ = "unstable simulation";
 };
 
@@ -475,7 +483,7 @@ std::optional<TabletopResult> Run::GraspAndLift(ArmTracker& tr, const GraspPolic
                               ix_.lo[i], ix_.hi[i]);
   }
   const double z0 = ObjectCom().z();
-  if (!MovePalm(tr, Eigen::Vector3d(0, 0, o_.lift_m), 0.8, {})) {
+  if (!MovePalm(tr, Eigen::Vector3d(0, 0, o_.lift_m), 0.8, {}, nullptr, true)) {
     return Fail(TabletopStage::kLift, StepError());
   }
   if (!InHand() || ObjectCom().z() - z0 < 0.5 * o_.lift_m) {
@@ -502,7 +510,10 @@ bool Run::Align(ArmTracker& tr) {
                   .toRotationMatrix();
     if (err.norm() < o_.align_tol_m && Eigen::AngleAxisd(turn).angle() < o_.align_tilt_rad) break;
     const Eigen::Vector3d p(d_->site_xpos + 3 * ix_.arm.palm_site);
-    if (!MovePalm(tr, c + turn * (p - c) - p + err, o_.align_s, {}, &turn)) return false;
+    if (!MovePalm(tr, c + turn * (p - c) - p + err, o_.align_s, {}, &turn, true,
+                  o_.align_settle_s)) {
+      return false;
+    }
   }
   return true;
 }
@@ -560,6 +571,7 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
     r.final_pos = ObjectCom();
     r.sim_steps = steps_;
     r.grasp_attempts = attempts;
+    r.release_tilt_deg = release_tilt_deg_;
     r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     r.cpu_s = ThreadCpuSeconds() - cpu0;
     return r;
@@ -594,11 +606,13 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
        lowered += segment) {
     if (!Align(tr)) return finish(Fail(TabletopStage::kPlace, StepError()));
     const double dz = std::min(segment, drop - lowered);
-    if (!MovePalm(tr, Eigen::Vector3d(0, 0, -dz), dz / o_.lower_speed_mps,
-                  [&] { return Supported(); })) {
+    if (!MovePalm(
+            tr, Eigen::Vector3d(0, 0, -dz), dz / o_.lower_speed_mps, [&] { return Supported(); },
+            nullptr, true)) {
       return finish(Fail(TabletopStage::kPlace, StepError()));
     }
   }
+  release_tilt_deg_ = std::acos(std::clamp(Rot(d_, g_.object_body)(2, 2), -1.0, 1.0)) * 180 / M_PI;
   // release and retract
   if (!LetGo(tr)) return finish(Fail(TabletopStage::kRelease, StepError()));
   // settle

@@ -125,6 +125,15 @@ struct TabletopOptions {
   /// until within `align_tol_m` and `align_tilt_rad`
   int align_passes = 2;
   double align_s = 0.3;
+  /// After each alignment move the arm holds its target this long before the object's pose is
+  /// read again (the tracker's integral takes up the load; 0: read at once)
+  double align_settle_s = 0.3;
+  /// While the object is in the hand, straight palm moves (lift, alignment, descent) keep the
+  /// tracker's error integral, which carries the object's load (the inverse dynamics does not
+  /// model it). Reset at every move, the wrist sagged by 3-13 degrees within one 3 cm descent
+  /// segment and undid the alignment (docs/BENCHMARKS.md, issue 15 session 36).
+  /// (Kept through the transport's planned trajectory too, stacks fell from 85.7 % to 81.4 %.)
+  bool keep_load_integral = true;
   double align_tol_m = 0.005;
   double align_tilt_rad = 0.05;
   int ik_every_steps = 6;  ///< straight palm moves (lift, lower, retract) re-solve IK so often
@@ -168,6 +177,9 @@ struct TabletopResult {
   std::string end_reason;  ///< "success", "plan failure: ...", "grasp miss: ...", ...
   bool plan_failure = false;
   int grasp_attempts = 0;  ///< grasps begun (more than one after a miss)
+  /// The object's tilt from upright (degrees) when the fingers began to open over its support;
+  /// -1 when the run ended before
+  double release_tilt_deg = -1;
   Eigen::Vector3d final_pos = Eigen::Vector3d::Zero();  ///< the object's centre of mass
   int sim_steps = 0;
   double wall_s = 0;
