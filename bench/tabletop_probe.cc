@@ -20,6 +20,7 @@
 #include "simhuman/control/manip/tabletop_pipeline.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/eval/tabletop_eval.h"
+#include "simhuman/eval/tabletop_vision.h"
 #include "simhuman/render/image_io.h"
 #include "simhuman/render/offscreen.h"
 #include "simhuman/world/objects.h"
@@ -63,6 +64,7 @@ struct Args {
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
   std::string zero_shot;  // a shape of world::ZeroShotShapes() replaces the task object
+  std::string vision;     // a vision model file: the pipeline sees through the head camera
 };
 
 // every flag takes one value; booleans are "1" (true) or anything else (false)
@@ -119,7 +121,8 @@ Args Parse(int argc, char** argv) {
   const std::map<std::string, std::string*> strings = {{"--shape", &a.shape},
                                                        {"--kind", &a.kind},
                                                        {"--sheet-dir", &a.sheet_dir},
-                                                       {"--zero-shot", &a.zero_shot}};
+                                                       {"--zero-shot", &a.zero_shot},
+                                                       {"--vision", &a.vision}};
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if (k == "--seed") {
@@ -252,6 +255,24 @@ int main(int argc, char** argv) {
     auto ix = sh::control::manip::MakeGraspIndex(**w, 0, true);
     auto goal = sh::eval::TabletopSceneGoal(*ts, **w);
     if (!goal.ok()) return 1;
+    // with --vision the goal's geometry and the controllers' view come from the head camera
+    static std::unique_ptr<sh::eval::TabletopVision> vision;
+    if (!a.vision.empty()) {
+      if (!vision) {
+        auto made = sh::eval::TabletopVision::Create(a.vision, (*w)->model());
+        if (!made.ok()) {
+          std::fprintf(stderr, "%s\n", made.status().ToString().c_str());
+          return 2;
+        }
+        vision = std::move(*made);
+      }
+      if (sh::core::Status s = vision->Begin(**w, *catalog, ts->task.object_id, ts->task.target_id,
+                                             &*goal, ix->arm.hand_body);
+          !s.ok()) {
+        std::printf("ep %3d perception failure: %s\n", i, s.ToString().c_str());
+        continue;
+      }
+    }
     const sh::control::manip::TabletopGoal& g = *goal;
     if (!a.shape.empty() && a.shape != ShapeName(g.shape)) continue;
     if (a.shape.empty() && a.no_spheres && g.shape == GraspShape::kSphere) continue;
@@ -331,6 +352,12 @@ int main(int argc, char** argv) {
         char cap[32];
         std::snprintf(cap, sizeof(cap), "%.1f s", d->time);
         if (r->Render(d, cam, &rgb, cap).ok()) frames.push_back(std::move(rgb));
+      };
+    }
+    if (vision) {
+      hook = [inner = hook](const mjData* d) {
+        (void)vision->OnStep(d);
+        if (inner) inner(d);
       };
     }
     if (a.profile) mjcb_time = ClockUs;

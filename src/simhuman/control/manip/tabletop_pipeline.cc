@@ -605,6 +605,10 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
   for (double lowered = 0; lowered < drop - 1e-9 && (lowered == 0 || !Supported());
        lowered += segment) {
     if (!Align(tr)) return finish(Fail(TabletopStage::kPlace, StepError()));
+    if (!InHand()) {
+      return finish(Fail(TabletopStage::kPlace,
+                         "drop at place: the object fell out of the hand over the target"));
+    }
     const double dz = std::min(segment, drop - lowered);
     if (!MovePalm(
             tr, Eigen::Vector3d(0, 0, -dz), dz / o_.lower_speed_mps, [&] { return Supported(); },
