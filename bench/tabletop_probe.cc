@@ -52,7 +52,8 @@ struct Args {
   double trace_from = -1, trace_to = -1, trace_dt = 0.02;  ///< the trace's window and step (s)
   bool trace_contacts = false, trace_arm = false;
   // pipeline and scripted-grasp settings (negative or 0: the default)
-  bool touch_gap0 = true;
+  bool touch_gap0 = true, hold_behind = true;
+  double behind_tol = 0.01, push_gain = 0.15;
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   double grip_frac = -1, grip_max = -1;
@@ -101,7 +102,9 @@ Args Parse(int argc, char** argv) {
                                                   {"--lower-speed", &a.lower_speed},
                                                   {"--release-s", &a.release_s},
                                                   {"--hold-rate", &a.hold_rate},
-                                                  {"--behind-margin", &a.margin}};
+                                                  {"--behind-margin", &a.margin},
+                                                  {"--behind-tol", &a.behind_tol},
+                                                  {"--push-gain", &a.push_gain}};
   const std::map<std::string, int*> ints = {{"--from", &a.from},
                                             {"--to", &a.to},
                                             {"--shortcuts", &a.shortcuts},
@@ -109,15 +112,12 @@ Args Parse(int argc, char** argv) {
                                             {"--thumb-delay", &a.thumb_delay},
                                             {"--grasp-steps", &a.grasp_steps},
                                             {"--grasp-attempts", &a.grasp_attempts}};
-  const std::map<std::string, bool*> bools = {{"--trace-contacts", &a.trace_contacts},
-                                              {"--trace-arm", &a.trace_arm},
-                                              {"--hold-rotation", &a.hold_rotation},
-                                              {"--press-closing", &a.press_closing},
-                                              {"--carried-check", &a.carried_check},
-                                              {"--top-grasp", &a.top_grasp},
-                                              {"--no-spheres", &a.no_spheres},
-                                              {"--touch-gap0", &a.touch_gap0},
-                                              {"--profile", &a.profile}};
+  const std::map<std::string, bool*> bools = {
+      {"--trace-contacts", &a.trace_contacts}, {"--trace-arm", &a.trace_arm},
+      {"--hold-rotation", &a.hold_rotation},   {"--press-closing", &a.press_closing},
+      {"--carried-check", &a.carried_check},   {"--top-grasp", &a.top_grasp},
+      {"--no-spheres", &a.no_spheres},         {"--touch-gap0", &a.touch_gap0},
+      {"--hold-behind", &a.hold_behind},       {"--profile", &a.profile}};
   const std::map<std::string, std::string*> strings = {{"--shape", &a.shape},
                                                        {"--kind", &a.kind},
                                                        {"--sheet-dir", &a.sheet_dir},
@@ -213,7 +213,23 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
                     d->xpos[3 * table], d->xpos[3 * table + 1], d->xpos[3 * table + 2]);
       }
       const mjtNum* palm = d->site_xpos + 3 * ix.arm.palm_site;
-      std::printf("    palm (%.3f %.3f %.3f)\n", palm[0], palm[1], palm[2]);
+      // the palm's centre against the object: height above its base, and horizontally along
+      // the palm's outward normal (gap to the side the half width gives) and across it
+      const mjtNum* hr = d->xmat + 9 * ix.arm.hand_body;
+      Eigen::Vector3d n(hr[1], hr[4], 0);
+      if (!ix.arm.right) n = -n;
+      n = n.norm() > 1e-9 ? n.normalized() : n;
+      const Eigen::Vector3d to(d->xipos[3 * g.object_body] - palm[0],
+                               d->xipos[3 * g.object_body + 1] - palm[1], 0);
+      Eigen::Vector3d f(-hr[2], -hr[5], 0);  // the fingers' direction, level, square to n
+      f -= f.dot(n) * n;
+      f = f.norm() > 1e-9 ? f.normalized() : f;
+      const double along = to.dot(n);
+      std::printf(
+          "    palm (%.3f %.3f %.3f): gap %.3f m along its normal, the object's axis "
+          "%.3f m ahead along the fingers, %.3f m above the base\n",
+          palm[0], palm[1], palm[2], along - g.half_width_m, to.dot(f),
+          palm[2] - d->xpos[3 * g.object_body + 2]);
     }
     if (a.trace_arm) {
       std::printf("     arm q");
@@ -305,6 +321,9 @@ int main(int argc, char** argv) {
     so.hold_rotation = a.hold_rotation;
     so.press_while_closing = a.press_closing;
     so.touch_ends_gap = a.touch_gap0;
+    so.hold_behind = a.hold_behind;
+    so.behind_tol_m = a.behind_tol;
+    so.push_gain = a.push_gain;
     if (a.press_m >= 0) so.press_m = a.press_m;
     if (a.close_rate > 0) so.close_rate = static_cast<float>(a.close_rate);
     if (a.hold_rate >= 0) so.hold_rate = static_cast<float>(a.hold_rate);

@@ -177,6 +177,12 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
                        "carry: a walking policy file (e.g. assets/policies/walk.pt) that walks up "
                        "to the box; the carry policy takes over at the lift");
   eval_cmd
+      ->add_option("--first-episode", ev->first_episode,
+                   "tabletop, place, stack: start at this episode of the seed's run (e.g. 200 "
+                   "with --episodes 200: the next 200 scenes after the suite's)")
+      ->check(CLI::Range(0, 1000000))
+      ->capture_default_str();
+  eval_cmd
       ->add_option("--jobs", ev->jobs,
                    "tabletop, place, stack: episodes run at once, one thread each (results do "
                    "not depend on it; 2 uses both cores of a 2-core machine)")

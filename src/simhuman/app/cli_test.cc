@@ -133,6 +133,10 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
                  {"--zero-shot and --zero-shot-mesh apply to the tabletop suites"});
   ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--jobs", "0"}),
                  {"--jobs", "not in range 1 to 64"});
+  ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--first-episode", "-1"}),
+                 {"--first-episode", "not in range 0 to 1000000"});
+  ExpectBadInput(Cli({"eval", "--suite", "sit", "--first-episode", "200"}),
+                 {"--first-episode applies to the tabletop suites", "--resume"});
   ExpectBadInput(Cli({"eval", "--suite", "sit", "--jobs", "2"}),
                  {"--jobs applies to the tabletop suites", "mpirun"});
   ExpectBadInput(Cli({"eval", "--suite", "walk", "--approach-policy", "x.pt"}),

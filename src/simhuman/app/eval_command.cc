@@ -340,6 +340,13 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
                            "--suite " +
                            flags.suite + "; the plan suites run in parallel with mpirun -n N"));
   }
+  if (flags.first_episode != 0 && suite->controller != eval::SuiteController::kTabletop) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--first-episode applies to the tabletop suites (tabletop, place, "
+                           "stack), not --suite " +
+                           flags.suite + "; the plan suites continue a run with --resume"));
+  }
   if ((!flags.zero_shot.empty() || !flags.zero_shot_mesh.empty()) &&
       suite->controller != eval::SuiteController::kTabletop) {
     return ReportError(

@@ -40,6 +40,8 @@ struct EvalFlags {
   std::string zero_shot;       ///< tabletop, place, stack: eval::TabletopEvalOptions::zero_shot
   std::string zero_shot_mesh;  ///< its OBJ file for "mesh" (empty: world::kZeroShotMeshFile)
   int jobs = 1;
+  /// Tabletop suites: the first episode's index (eval::TabletopEvalOptions::first_episode)
+  int first_episode = 0;
   std::string approach_policy;  ///< carry: a walking policy for the approach phase  ///< tabletop,
                                 ///< place, stack: episodes run at once (threads)
   /// Tabletop suites: "truth" or "vision" (the head camera and the vision model).

@@ -28,6 +28,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   eval::TabletopEvalOptions o;
   o.kind = flags.suite == "tabletop" ? "any" : flags.suite;
   o.episodes = flags.episodes;
+  o.first_episode = flags.first_episode;
   o.seed = flags.seed;
   o.grasp = eval::DefaultGraspPolicy(flags.grasp_policy);
   o.perception = flags.perception;
@@ -56,9 +57,11 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   absl::Status made = MakeOutputDir(dir);
   if (!made.ok()) return ReportError(err, kCommand, made);
   std::ofstream lines(dir + "/episodes.jsonl", std::ios::trunc);
-  out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes, seed "
-      << o.seed << ", grasp " << o.grasp << " (" << o.grasp_attempts << " attempts), perception "
-      << o.perception << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string())
+  out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes"
+      << (o.first_episode > 0 ? " from episode " + std::to_string(o.first_episode) : "")
+      << ", seed " << o.seed << ", grasp " << o.grasp << " (" << o.grasp_attempts
+      << " attempts), perception " << o.perception
+      << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string())
       << (o.zero_shot.empty() ? std::string()
                               : ", zero-shot " + o.zero_shot +
                                     (o.zero_shot == "mesh" ? " (" + o.zero_shot_mesh + ")" : ""))
@@ -73,6 +76,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   nlohmann::ordered_json summary = s->ToJson();
   summary["suite"] = flags.suite;
   summary["seed"] = o.seed;
+  summary["first_episode"] = o.first_episode;
   summary["grasp"] = o.grasp;
   summary["grasp_attempts"] = o.grasp_attempts;
   if (!o.zero_shot.empty()) summary["zero_shot"] = o.zero_shot;

@@ -415,6 +415,10 @@ core::Status RunEpisodes(const TabletopEvalOptions& o, int jobs,
 core::StatusOr<TabletopEvalSummary> RunTabletopEval(
     const TabletopEvalOptions& o, const std::function<void(const TabletopEpisode&)>& on_episode) {
   if (o.episodes < 1) return absl::InvalidArgumentError("--episodes must be >= 1");
+  if (o.first_episode < 0) {
+    return absl::InvalidArgumentError("--first-episode " + std::to_string(o.first_episode) +
+                                      " must be >= 0");
+  }
   if (o.jobs < 1) {
     return absl::InvalidArgumentError("--jobs " + std::to_string(o.jobs) + " must be >= 1");
   }
@@ -433,7 +437,8 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   Totals t;
   const auto t0 = std::chrono::steady_clock::now();
   SH_RETURN_IF_ERROR(RunEpisodes(
-      o, jobs, [&](int i, Worker* w) { return RunEpisode(o, i, make_grasp, pipeline, w); },
+      o, jobs,
+      [&](int i, Worker* w) { return RunEpisode(o, o.first_episode + i, make_grasp, pipeline, w); },
       [&](const EpisodeOutcome& x) {
         AddEpisode(x, &sum, &t);
         if (on_episode) on_episode(x.e);

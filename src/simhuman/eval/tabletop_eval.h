@@ -26,6 +26,9 @@ namespace simhuman::eval {
 struct TabletopEvalOptions {
   std::string kind = "any";  ///< "place", "stack" or "any" (the tabletop suite: 50/50)
   int episodes = 200;
+  /// The first episode's index: episodes first_episode .. first_episode + episodes - 1 of the
+  /// seed run (each is seeded by its index, so 200 from 200 are the next 200 after the suite's)
+  int first_episode = 0;
   uint64_t seed = 1;
   /// A grasp policy file (simhuman train --task grasp), or "scripted" for the training-free
   /// grasp.

@@ -193,7 +193,7 @@ bool GraspTask::PlaceArm(Env& e, core::Rng& rng) const {
   const control::manip::TabletopGoal g = Goal(e);
   const Eigen::Vector3d centre =
       g.planned_pos + Eigen::Vector3d(0, 0, control::manip::GripHeightM(g, pipe));
-  const double behind = std::max(pipe.palm_behind_m, g.half_width_m - pipe.palm_behind_margin_m);
+  const double behind = control::manip::PalmBehindM(g, pipe);
   mju_copy(e.scratch->qpos, e.d->qpos, e.m->nq);
   const Eigen::VectorXd rest = ix_.arm.Get(e.d);
   for (int attempt = 0; attempt < 12; ++attempt) {

@@ -1,6 +1,7 @@
 #include "simhuman/control/manip/scripted_grasp.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace simhuman::control::manip {
@@ -33,18 +34,23 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     int closing_from = -1;  // the step the palm touched (or the approach ran out)
     double grip_z = 0;      // the palm's height: where the reach left it
     bool have_goal = false;
+    bool palm_touched = false;
+    double push = 0;      // ScriptedGraspOptions::push_gain's accumulated push (m)
+    double last_gap = 0;  // the palm's gap to the object's side at the previous step
     Eigen::Vector3d palm_goal;
     Eigen::Matrix3d hand_rot;  // the hand's rotation as the reach left it
     std::shared_ptr<mjData> scratch;
   };
   auto st = std::make_shared<State>();
   st->scratch.reset(mj_makeData(m), mj_deleteData);
-  return [m, d, &ix, goal, o, st, grip_z, top, behind = pipeline.top_palm_behind_m](
+  const double side_behind = PalmBehindM(goal, pipeline);
+  return [m, d, &ix, goal, o, st, grip_z, top, side_behind, behind = pipeline.top_palm_behind_m](
              const float* obs, float* act) {
     std::fill(act, act + kGraspActDim, 0.0f);
     float touch[kGraspTouchParts];
     GraspTouch(m, d, ix, goal.object_body, touch);
     const bool palm = touch[0] > 0 || touch[1] > 0;
+    st->palm_touched = st->palm_touched || palm;
     if (st->closing_from < 0 && (palm || st->step >= o.approach_steps)) {
       st->closing_from = st->step;
     }
@@ -76,7 +82,26 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
         // angle or with its edge never reaches the plane they give: it pushed objects over)
         const double gap =
             (seen.estimated || o.touch_ends_gap) && palm ? 0.0 : (c - p).dot(n) - goal.half_width_m;
-        st->palm_goal = p + n * (gap + o.press_m);
+        // the push grows while the palm has stalled short of the object, and ends at the touch
+        if (st->palm_touched) {
+          st->push = 0;
+        } else if (st->step > 0 && std::abs(gap - st->last_gap) < o.stall_m) {
+          st->push = std::min(st->push + o.push_gain * (gap + o.press_m), o.push_max_m);
+        }
+        st->last_gap = gap;
+        st->palm_goal = p + n * (gap + o.press_m + st->push);
+        if (o.hold_behind && !st->palm_touched) {
+          // along the fingers (level, square to the normal): the object's axis `side_behind`
+          // ahead of the palm's centre
+          Eigen::Vector3d f(-d->xmat[9 * ix.arm.hand_body + 2], -d->xmat[9 * ix.arm.hand_body + 5],
+                            0);
+          f -= f.dot(n) * n;
+          if (f.norm() > 1e-6) {
+            f.normalize();
+            const double off = (c - p).dot(f) - side_behind;
+            st->palm_goal += f * std::copysign(std::max(0.0, std::abs(off) - o.behind_tol_m), off);
+          }
+        }
         st->palm_goal.z() = st->grip_z;
       }
       st->have_goal = true;

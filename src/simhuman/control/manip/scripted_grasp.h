@@ -34,6 +34,21 @@ struct ScriptedGraspOptions {
   /// or at its edge, chased that side and pushed the object over (0-200 and 200-400 of the
   /// tabletop suite, boxes and cylinders: 227 of 272 placed against 222)
   bool touch_ends_gap = true;
+  /// Until the palm first touches, its goal also moves along the fingers so that the object's
+  /// axis lies PalmBehindM ahead of the palm's centre, as the reach planned: the reach arrives
+  /// moving and its lag left the palm 1-2 cm further back, where the object met the fingers
+  /// before the palm (issue 15 session 37: no palm touch in 5 of the 7 single-attempt place
+  /// misses). false: the palm closes in along its normal only.
+  bool hold_behind = true;
+  double behind_tol_m = 0.01;  ///< hold_behind corrects only what lies beyond this
+  /// While the palm has stalled short of the object (its gap changed by less than `stall_m` in
+  /// a step) and has not touched it yet, the gap still to close accumulates (x this per step, at
+  /// most `push_max_m`) into an extra push along the palm's normal, dropped at the touch: the
+  /// arm's servos sag, and the palm stopped 6-10 mm short of the object with its targets
+  /// already at the goal (issue 15 session 37). 0: no push.
+  double push_gain = 0.15;
+  double push_max_m = 0.03;
+  double stall_m = 0.0005;
 };
 
 /// The scripted grasp of `goal`'s object by arm `ix` in the simulation `m`/`d` (read at each

@@ -39,6 +39,10 @@ double GripHeightM(const TabletopGoal& g, const TabletopOptions& o) {
   return std::clamp(z, o.grip_min_m, o.grip_max_m);
 }
 
+double PalmBehindM(const TabletopGoal& g, const TabletopOptions& o) {
+  return std::max(o.palm_behind_m, g.half_width_m - o.palm_behind_margin_m);
+}
+
 bool TopGrasp(const TabletopGoal& g, const TabletopOptions& o) {
   return o.sphere_top_grasp && g.shape == GraspShape::kSphere;
 }
@@ -297,9 +301,8 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   auto poses = [&](const std::vector<double>& thetas) {
     std::pair<std::vector<PalmPose>, std::vector<Eigen::Vector3d>> out;
     for (double theta : thetas) {
-      out.first.push_back(
-          SideGraspPose(centre, g_.half_width_m + o_.pregrasp_gap_m, theta, ix_.arm.right,
-                        std::max(o_.palm_behind_m, g_.half_width_m - o_.palm_behind_margin_m)));
+      out.first.push_back(SideGraspPose(centre, g_.half_width_m + o_.pregrasp_gap_m, theta,
+                                        ix_.arm.right, PalmBehindM(g_, o_)));
       out.second.push_back(ix_.arm.right ? out.first.back().rot.col(1)
                                          : Eigen::Vector3d(-out.first.back().rot.col(1)));
     }

@@ -163,6 +163,11 @@ struct TabletopOptions {
 /// How high above the object's base the palm's centre grips it (TabletopOptions' grip_*).
 double GripHeightM(const TabletopGoal& goal, const TabletopOptions& options);
 
+/// How far the object's axis lies ahead of the palm's centre along the fingers in a side grasp
+/// (TabletopOptions' palm_behind_m, or for a wide object so far that its near side stays within
+/// palm_behind_margin_m of the palm's centre).
+double PalmBehindM(const TabletopGoal& goal, const TabletopOptions& options);
+
 /// Whether `goal`'s object is taken from above (a sphere with sphere_top_grasp).
 bool TopGrasp(const TabletopGoal& goal, const TabletopOptions& options);
 
