@@ -50,6 +50,8 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     float touch[kGraspTouchParts];
     GraspTouch(m, d, ix, goal.object_body, touch);
     const bool palm = touch[0] > 0 || touch[1] > 0;
+    const bool touching =
+        std::any_of(touch, touch + kGraspTouchParts, [](float t) { return t > 0; });
     st->palm_touched = st->palm_touched || palm;
     if (st->closing_from < 0 && (palm || st->step >= o.approach_steps)) {
       st->closing_from = st->step;
@@ -85,7 +87,7 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
         // the push grows while the palm has stalled short of the object, and ends at the touch
         if (st->palm_touched) {
           st->push = 0;
-        } else if (st->step > 0 && std::abs(gap - st->last_gap) < o.stall_m) {
+        } else if (st->step > 0 && !touching && std::abs(gap - st->last_gap) < o.stall_m) {
           st->push = std::min(st->push + o.push_gain * (gap + o.press_m), o.push_max_m);
         }
         st->last_gap = gap;

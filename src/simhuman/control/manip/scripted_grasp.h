@@ -42,7 +42,8 @@ struct ScriptedGraspOptions {
   bool hold_behind = true;
   double behind_tol_m = 0.01;  ///< hold_behind corrects only what lies beyond this
   /// While the palm has stalled short of the object (its gap changed by less than `stall_m` in
-  /// a step) and has not touched it yet, the gap still to close accumulates (x this per step, at
+  /// a step) with no part of the hand touching it (a finger or the thumb that blocks the palm
+  /// would push the object over), the gap still to close accumulates (x this per step, at
   /// most `push_max_m`) into an extra push along the palm's normal, dropped at the touch: the
   /// arm's servos sag, and the palm stopped 6-10 mm short of the object with its targets
   /// already at the goal (issue 15 session 37). 0: no push.
