@@ -307,6 +307,20 @@ TEST(CliTest, RunObjectTooFarToReach) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// the issue's own command on the built-in demo scene: seated at the table, the human stacks the
+// red box on the blue cylinder with the pipeline (not the MPC's capsule hands)
+TEST(CliTest, RunTabletopDemoStacksWithThePipelineIntegration) {
+  std::string out = OutDir("tabletop_demo");
+  CliRun r = Cli({"run", "--scene", "tabletop_demo", "--command",
+                  "put the red box on the blue cylinder", "--out", out});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("tabletop pipeline"), std::string::npos) << r.out;
+  std::ifstream f(out + "/result.json");
+  nlohmann::json j = nlohmann::json::parse(f);
+  EXPECT_EQ(j["end_reason"], "completed");
+  EXPECT_EQ(j["success"], true);
+}
+
 // DASH's command at the table runs through the pick-and-place pipeline and ends with a
 // pipeline end reason; a plan the pipeline does not take is a plan failure, not a hang
 TEST(CliTest, RunTabletopCommandThroughThePipelineIntegration) {

@@ -437,10 +437,15 @@ TEST(OfflinePlannerTest, Pronouns) {
 }
 
 TEST(OfflinePlannerTest, Reach) {
+  // standing (office: walked up to the table first)
+  EXPECT_EQ(PlanText("office", "put your left hand on the table"),
+            "table000|none|none|none|front / table000|board|left hand|contact|up");
+  EXPECT_EQ(PlanText("office", "both hands reach the table"),
+            "table000|none|none|none|front / table000|board|left hand|contact|up, "
+            "table000|board|right hand|contact|up");
+  // seated at the table (tabletop_demo), the human reaches from the chair and stays on it
   EXPECT_EQ(PlanText("tabletop_demo", "put your left hand on the table"),
-            "table000|board|left hand|contact|up");
-  EXPECT_EQ(PlanText("tabletop_demo", "both hands reach the table"),
-            "table000|board|left hand|contact|up, table000|board|right hand|contact|up");
+            "chair007|seat surface|pelvis|contact|up, table000|board|left hand|contact|none");
   EXPECT_EQ(PlanText("office", "touch the screen of the laptop with your right hand"),
             "laptop001|none|none|none|front / laptop001|screen|right hand|contact|front");
   EXPECT_EQ(PlanText("living_room", "touch the left armrest of the sofa with your left hand"),
@@ -522,8 +527,9 @@ TEST(OfflinePlannerTest, TabletopInstrumentsEllipsisAndGrasps) {
             "box001|top|@box003:body|contact|up, box003|body|right hand|contact|none");
   // picking up is the grasp of a put: the body, direction none
   EXPECT_EQ(SortedPlan("tabletop_demo", "pick up the green sphere with your left hand"),
-            "sphere006|body|left hand|contact|none");
-  EXPECT_EQ(SortedPlan("tabletop_demo", "touch the red box"), "box001|top|right hand|contact|up");
+            "chair007|seat surface|pelvis|contact|up, sphere006|body|left hand|contact|none");
+  EXPECT_EQ(SortedPlan("tabletop_demo", "touch the red box"),
+            "box001|top|right hand|contact|none, chair007|seat surface|pelvis|contact|up");
 }
 
 TEST(OfflinePlannerTest, SpatialReferences) {

@@ -477,17 +477,21 @@ SceneSpec Office() {
 // 0.8-1.2, centroids >= 0.25 m apart; the yellow box stays flat (commands call it "the flat box")
 SceneSpec TabletopDemo() {
   double table_h = DefaultSizes("table").at("height");
+  // seated at the table with a dexterous right hand, as DASH (TabletopBaseScene()), so that
+  // `simhuman run` carries its commands out with the tabletop pipeline; its chair comes last
+  SceneSpec base = TabletopBaseScene("tabletop_demo");
   SceneSpec s;
-  s.name = "tabletop_demo";
-  s.objects.push_back(Obj("table000", "table", 1.0, 0.0, 180));
+  s.name = base.name;
+  s.objects.push_back(base.objects[0]);
   struct Item {
     const char* color;
     double x, y, d, w, h, mass_kg, friction;
   };
-  const Item items[] = {{"red", 0.85, 0.30, 0.072, 0.072, 0.16, 2.5, 1.0},
-                        {"green", 0.85, 0.0, 0.064, 0.064, 0.18, 1.5, 0.9},
-                        {"blue", 0.85, -0.30, 0.072, 0.072, 0.15, 3.0, 1.1},
-                        {"yellow", 1.10, 0.15, 0.08, 0.08, 0.05, 1.0, 1.0}};
+  // two rows within the seated right arm's reach (the generator's region, world/tabletop.h)
+  const Item items[] = {{"red", 0.72, 0.28, 0.072, 0.072, 0.16, 2.5, 1.0},
+                        {"green", 0.72, 0.0, 0.064, 0.064, 0.18, 1.5, 0.9},
+                        {"blue", 0.72, -0.28, 0.072, 0.072, 0.15, 3.0, 1.1},
+                        {"yellow", 0.97, 0.14, 0.08, 0.08, 0.05, 1.0, 1.0}};
   int n = 1;
   for (const Item& it : items) {
     char id[16];
@@ -500,21 +504,22 @@ SceneSpec TabletopDemo() {
     s.objects.push_back(o);
   }
   // a blue cylinder left of a green sphere (as the human, facing +x, sees them)
-  ObjectSpec cylinder = Obj("cylinder005", "cylinder", 1.1, -0.15, 0, table_h);
+  ObjectSpec cylinder = Obj("cylinder005", "cylinder", 0.97, -0.14, 0, table_h);
   cylinder.color = "blue";
   cylinder.size = {{"radius", 0.045}, {"height", 0.15}};
   cylinder.mass_kg = 2.0;
   cylinder.friction = 0.9;
   s.objects.push_back(cylinder);
-  ObjectSpec sphere = Obj("sphere006", "sphere", 1.1, -0.4, 0, table_h);
+  ObjectSpec sphere = Obj("sphere006", "sphere", 0.97, -0.40, 0, table_h);
   sphere.color = "green";
   sphere.size = {{"radius", 0.06}};
   sphere.mass_kg = 1.2;
   sphere.friction = 1.1;
   s.objects.push_back(sphere);
-  // standing, not seated as in DASH (TabletopBaseScene()): seated, the offline planner would
-  // stand up and walk to the object before every tabletop command
-  s.humans.push_back(Human(0.2, 0.0, 0));
+  ObjectSpec chair = base.objects[1];
+  chair.id = "chair007";
+  s.objects.push_back(chair);
+  s.humans = base.humans;
   return s;
 }
 

@@ -362,13 +362,26 @@ TEST(TabletopTest, ZeroShotObjectsReplaceTheTaskObjectAndStandIntegration) {
 }
 
 // the built-in tabletop_demo keeps DASH's sizes, masses, friction and spacing (its flat yellow
-// box, which commands call "the flat box", excepted)
+// box, which commands call "the flat box", excepted), its objects within the generator's
+// region, and seats the human at the table as DASH does (so `run` uses the tabletop pipeline)
 TEST(TabletopTest, TabletopDemoIsDashSized) {
   core::StatusOr<SceneSpec> demo = BuiltinScene("tabletop_demo");
   ASSERT_TRUE(demo.ok()) << demo.status();
+  const SceneSpec base = TabletopBaseScene("tabletop_demo");
+  ASSERT_EQ(demo->humans.size(), 1u);
+  EXPECT_EQ(demo->humans[0].posture, "sit");
+  EXPECT_EQ(demo->humans[0].kind, base.humans[0].kind);
+  EXPECT_TRUE(demo->humans[0].pos_xy.isApprox(base.humans[0].pos_xy));
+  const TabletopOptions region;
   std::vector<const ObjectSpec*> items;
   for (const ObjectSpec& o : demo->objects) {
-    if (o.type == "table") continue;
+    if (o.type == "table" || o.type == "chair") continue;
+    const Eigen::Vector3d t = WorldToTable(o.pos);
+    if (o.type != "sphere") {  // the sphere lies just right of the region, out of the way
+      EXPECT_TRUE(In(t.x(), region.region_x_lo_m, region.region_x_hi_m) &&
+                  In(t.y(), region.region_y_lo_m, region.region_y_hi_m))
+          << o.id << " at table (" << t.x() << ", " << t.y() << ")";
+    }
     items.push_back(&o);
     const std::string& id = o.id;
     EXPECT_TRUE(o.mass_kg && In(*o.mass_kg, kMassLo, kMassHi)) << id;
