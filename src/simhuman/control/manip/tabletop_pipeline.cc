@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace simhuman::control::manip {
@@ -570,6 +571,18 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
   if (!tracker.ok()) return Fail(TabletopStage::kReach, std::string(tracker.status().message()));
   ArmTracker& tr = *tracker;
   int attempts = 0;
+  if (2 * g_.half_width_m > o_.max_grip_width_m) {
+    std::string name = mj_id2name(m_, mjOBJ_BODY, g_.object_body)
+                           ? mj_id2name(m_, mjOBJ_BODY, g_.object_body)
+                           : "the object";
+    if (name.rfind("obj/", 0) == 0) name = name.substr(4);
+    char why[256];
+    std::snprintf(why, sizeof(why),
+                  "too wide for the hand: %s is %.1f cm across where the hand would hold it; "
+                  "the hand closes around objects up to %.1f cm",
+                  name.c_str(), 200 * g_.half_width_m, 100 * o_.max_grip_width_m);
+    return Fail(TabletopStage::kGrasp, why);
+  }
   auto finish = [&](TabletopResult r) {
     r.final_pos = ObjectCom();
     r.sim_steps = steps_;

@@ -84,6 +84,12 @@ struct TabletopOptions {
   double palm_behind_m = 0.025;
   double palm_behind_margin_m = 0.005;
   int grasp_policy_steps = 60;  ///< 1.5 s at 40 Hz
+  /// The widest object (across where the palm holds it: a box's side, a cylinder's or sphere's
+  /// diameter) the hand is asked to close around; a wider one ends the run before anything moves
+  /// ("too wide for the hand"). From `simhuman run` on tabletop_demo with one object widened
+  /// (session 37): a 10 cm cylinder (DASH's widest) was stacked, a 12 cm one lifted and dropped
+  /// in transport, 14 and 16 cm ones never closed around.
+  double max_grip_width_m = 0.12;
   /// Grasp attempts: after a miss (the object does not rise with the hand) the hand opens,
   /// backs away, and, when the object still stands upright on its support where the controllers
   /// see it, reaches for it again from there with a fresh grasp policy, as a person tries again.

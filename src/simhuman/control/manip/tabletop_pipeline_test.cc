@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "simhuman/control/manip/scripted_grasp.h"
 #include "simhuman/world/objects.h"
@@ -51,6 +52,24 @@ Scene BoxScene(double width, double mass) {
   s.goal.planned_pos = base;
   s.goal.target = base + Eigen::Vector3d(0.0, 0.2, 0);
   return s;
+}
+
+// an object wider than the hand closes around ends the run before anything moves, named
+TEST(TabletopPipelineTest, AnObjectTooWideForTheHandIsRefusedBeforeAnythingMoves) {
+  Scene s = BoxScene(0.16, 2.0);
+  const TabletopOptions o;
+  const std::vector<double> qpos0(s.world->data()->qpos,
+                                  s.world->data()->qpos + s.world->model()->nq);
+  const TabletopResult r = RunTabletop(
+      *s.world, s.ix, s.goal, [](const TabletopGoal&) { return GraspPolicyFn(); }, o);
+  EXPECT_FALSE(r.success);
+  EXPECT_FALSE(r.plan_failure);
+  EXPECT_EQ(r.failed_stage, TabletopStage::kGrasp);
+  EXPECT_EQ(r.end_reason,
+            "too wide for the hand: box002 is 16.0 cm across where the hand would hold it; the "
+            "hand closes around objects up to 12.0 cm");
+  EXPECT_EQ(r.sim_steps, 0);
+  for (int i = 0; i < s.world->model()->nq; ++i) EXPECT_EQ(s.world->data()->qpos[i], qpos0[i]);
 }
 
 // a fresh scripted grasp for each attempt
