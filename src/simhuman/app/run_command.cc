@@ -199,12 +199,15 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   core::StatusOr<std::vector<world::AgentSpec>> placements = eval::AgentSpecs(*scene);
   if (!placements.ok()) return ReportError(err, kCommand, placements.status());
 
+  core::StatusOr<std::unique_ptr<world::SimWorld>> sim = eval::BuildWorld(*scene, *catalog);
+  if (!sim.ok()) return ReportError(err, kCommand, sim.status());
+  if (absl::Status s = eval::CheckSeatedTabletopPlan(*chain, **sim); !s.ok()) {
+    return ReportError(err, kCommand, s);
+  }
+
   absl::Status dir = MakeOutputDir(flags.out);
   if (!dir.ok()) return ReportError(err, kCommand, dir);
   const std::filesystem::path out_dir(flags.out);
-
-  core::StatusOr<std::unique_ptr<world::SimWorld>> sim = eval::BuildWorld(*scene, *catalog);
-  if (!sim.ok()) return ReportError(err, kCommand, sim.status());
   core::StatusOr<std::vector<std::unique_ptr<control::MpcController>>> controllers =
       eval::MakeControllers(**sim, *config, flags.seed);
   if (!controllers.ok()) return ReportError(err, kCommand, controllers.status());

@@ -514,11 +514,33 @@ std::string DefaultGraspPolicy(const std::string& flag) {
   return std::filesystem::exists(shipped) ? shipped : "scripted";
 }
 
+bool IsSeatedTabletopWorld(const world::SimWorld& w) {
+  return w.num_agents() >= 1 && w.model()->neq >= 1 &&
+         mj_name2id(w.model(), mjOBJ_JOINT, "right_forearm_rot") >= 0;
+}
+
+core::Status CheckSeatedTabletopPlan(const plan::ContactChain& chain, const world::SimWorld& w) {
+  if (!IsSeatedTabletopWorld(w) || IsTabletopRun(chain, w)) return absl::OkStatus();
+  for (size_t k = 0; k < chain.steps.size(); ++k) {
+    for (const plan::ContactPair& p : chain.steps[k].pairs) {
+      if (!p.IsGetClose()) continue;  // a get-close step: stand up or walk
+      return absl::InvalidArgumentError(
+          "plan failure: step " + std::to_string(k + 1) + " of " +
+          std::to_string(chain.steps.size()) + " gets close to " + p.object +
+          " (standing up or walking), but the human sits at the table with a dexterous right "
+          "hand and its trunk held where it sits; such a scene runs a step grasping an object "
+          "within reach of the seat with the right hand, then a step putting it on another "
+          "object (the planner found an object of this command out of reach from the seat: move "
+          "it nearer)");
+    }
+  }
+  return absl::OkStatus();
+}
+
 bool IsTabletopRun(const plan::ContactChain& chain, const world::SimWorld& w) {
-  if (w.num_agents() < 1 || w.model()->neq < 1 || chain.steps.empty()) return false;
-  const int forearm = mj_name2id(w.model(), mjOBJ_JOINT, "right_forearm_rot");
+  if (!IsSeatedTabletopWorld(w) || chain.steps.empty()) return false;
   const plan::ContactStep& first = chain.steps.front();
-  return forearm >= 0 && first.pairs.size() == 1 && first.pairs[0].joint &&
+  return first.pairs.size() == 1 && first.pairs[0].joint &&
          *first.pairs[0].joint == core::BodyJoint::kRightHand &&
          w.catalog().Find(first.pairs[0].object) &&
          w.catalog().Find(first.pairs[0].object)->movable;

@@ -140,6 +140,16 @@ core::StatusOr<control::manip::TabletopGoal> TabletopGoalFromPlan(const plan::Co
 /// hands to the pipeline instead of the MPC.
 bool IsTabletopRun(const plan::ContactChain& chain, const world::SimWorld& world);
 
+/// Whether agent 0 of `world` sits at the table with a dexterous right hand, its trunk held
+/// where it sits: only the tabletop pipeline can move it (it cannot stand up or walk).
+bool IsSeatedTabletopWorld(const world::SimWorld& world);
+
+/// OK unless `world` is a seated tabletop world (IsSeatedTabletopWorld) and `chain` is not a
+/// tabletop plan: then InvalidArgument naming the plan's first step, the object it needed to
+/// get close to, and what such a scene runs (e.g. an object beyond the seated arm's reach made
+/// the planner stand the human up and walk it over).
+core::Status CheckSeatedTabletopPlan(const plan::ContactChain& chain, const world::SimWorld& world);
+
 /// Runs a tabletop plan through the pipeline (`grasp_policy`: a file or "scripted"; a non-empty
 /// `vision_model`: the head camera plans and watches, eval/tabletop_vision.h), recording
 /// `trajectory` at 30 frames/s (step 0 until the grasp holds, then step 1). The result reads as

@@ -7,6 +7,7 @@
 
 #include "simhuman/control/manip/scripted_grasp.h"
 #include "simhuman/core/rng.h"
+#include "simhuman/eval/episode.h"
 #include "simhuman/world/seating.h"
 
 namespace simhuman::eval {
@@ -148,6 +149,49 @@ TEST(TabletopEvalTest, TheDescentKeepsAnObjectUprightInTheHandIntegration) {
   const control::manip::TabletopResult neither = run(0, false);
   EXPECT_FALSE(neither.success);
   EXPECT_THAT(neither.end_reason, HasSubstr("tipped over"));
+}
+
+// seated at the table with the trunk held, a plan that stands up or walks is refused before
+// anything moves, naming the step; the tabletop plan and a hand-only step are not
+TEST(TabletopEvalTest, ASeatedTabletopHumanIsNotAskedToStandUp) {
+  auto spec = world::BuiltinScene("tabletop_demo");
+  ASSERT_TRUE(spec.ok()) << spec.status();
+  auto catalog = world::BuildCatalog(*spec);
+  ASSERT_TRUE(catalog.ok()) << catalog.status();
+  auto w = BuildWorld(*spec, *catalog);
+  ASSERT_TRUE(w.ok()) << w.status();
+  ASSERT_TRUE(IsSeatedTabletopWorld(**w));
+  plan::ContactPair grasp;
+  grasp.object = "box001";
+  grasp.part = "body";
+  grasp.joint = core::BodyJoint::kRightHand;
+  plan::ContactPair on;
+  on.object = "cylinder005";
+  on.part = "top";
+  on.subject_object = "box001";
+  on.subject_part = "body";
+  on.direction = plan::Direction::kUp;
+  plan::ContactPair walk;
+  walk.object = "box001";
+  walk.part = "none";
+  auto chain = [](const std::vector<std::vector<plan::ContactPair>>& steps) {
+    plan::ContactChain c;
+    for (const auto& pairs : steps) {
+      plan::ContactStep s;
+      s.pairs = pairs;
+      c.steps.push_back(s);
+    }
+    return c;
+  };
+  const plan::ContactChain tabletop = chain({{grasp}, {grasp, on}});
+  const plan::ContactChain hand_only = chain({{grasp}});
+  const plan::ContactChain walking = chain({{walk}, {grasp}, {grasp, on}});
+  EXPECT_TRUE(CheckSeatedTabletopPlan(tabletop, **w).ok());
+  EXPECT_TRUE(CheckSeatedTabletopPlan(hand_only, **w).ok());
+  const core::Status refused = CheckSeatedTabletopPlan(walking, **w);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_THAT(refused.message(), HasSubstr("step 1 of 3 gets close to box001"));
+  EXPECT_THAT(refused.message(), HasSubstr("move it nearer"));
 }
 
 // Single grasp attempts whose palm never touched (issue 15 session 37). Episode 110: the reach
