@@ -571,6 +571,15 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
   if (!tracker.ok()) return Fail(TabletopStage::kReach, std::string(tracker.status().message()));
   ArmTracker& tr = *tracker;
   int attempts = 0;
+  auto finish = [&](TabletopResult r) {
+    r.final_pos = ObjectCom();
+    r.sim_steps = steps_;
+    r.grasp_attempts = attempts;
+    r.release_tilt_deg = release_tilt_deg_;
+    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    r.cpu_s = ThreadCpuSeconds() - cpu0;
+    return r;
+  };
   if (2 * g_.half_width_m > o_.max_grip_width_m) {
     std::string name = mj_id2name(m_, mjOBJ_BODY, g_.object_body)
                            ? mj_id2name(m_, mjOBJ_BODY, g_.object_body)
@@ -581,17 +590,8 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
                   "too wide for the hand: %s is %.1f cm across where the hand would hold it; "
                   "the hand closes around objects up to %.1f cm",
                   name.c_str(), 200 * g_.half_width_m, 100 * o_.max_grip_width_m);
-    return Fail(TabletopStage::kGrasp, why);
+    return finish(Fail(TabletopStage::kGrasp, why));
   }
-  auto finish = [&](TabletopResult r) {
-    r.final_pos = ObjectCom();
-    r.sim_steps = steps_;
-    r.grasp_attempts = attempts;
-    r.release_tilt_deg = release_tilt_deg_;
-    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    r.cpu_s = ThreadCpuSeconds() - cpu0;
-    return r;
-  };
   for (;;) {
     if (auto f = Reach(tr)) {
       // a later attempt that finds no way to the object stays the grasp miss it follows
