@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "simhuman/control/manip/table_world.h"
 #include "simhuman/control/manip/tabletop_pipeline.h"
 #include "simhuman/control/runner.h"
 #include "simhuman/core/scene_catalog.h"
@@ -110,19 +111,10 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
 
 nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e);
 
-/// A generated table scene (GenerateTabletop(seed, kind)) built into a world with the seated
-/// dexterous human, forwarded.
-struct TableWorld {
-  world::TabletopScene ts;
-  core::SceneCatalog catalog;
-  std::unique_ptr<world::SimWorld> world;
-};
-core::StatusOr<TableWorld> MakeTableWorld(uint64_t seed, const std::string& kind);
-
-/// The pipeline's goal for a generated scene's task in `world` (built from that scene): the
-/// object's body, shape, sizes and planned base position, the target and the support body.
-core::StatusOr<control::manip::TabletopGoal> TabletopSceneGoal(const world::TabletopScene& ts,
-                                                               const world::SimWorld& world);
+// The generated table scenes and their goals (control/manip/table_world.h), as eval names them.
+using control::manip::MakeTableWorld;
+using control::manip::TabletopSceneGoal;
+using control::manip::TableWorld;
 
 /// The grasp policy to use: `flag` when given, else assets/policies/grasp.pt when the checkout
 /// has it, else "scripted".

@@ -3,7 +3,7 @@
 namespace simhuman::learn {
 
 std::vector<std::string> TaskNames() {
-  return {"walk", "reach", "carry", "grasp", "grasp-residual"};
+  return {"walk", "reach", "carry", "grasp", "grasp-residual", "place"};
 }
 
 bool TaskHasSolverChoice(std::string_view name) { return name == "walk"; }

@@ -2,6 +2,7 @@
 
 #include "simhuman/learn/carry_env.h"
 #include "simhuman/learn/grasp_env.h"
+#include "simhuman/learn/place_env.h"
 #include "simhuman/learn/reach_env.h"
 #include "simhuman/learn/walk_env.h"
 
@@ -51,6 +52,14 @@ const std::vector<TaskDef>& Tasks() {
        "started from a training-free grasp)",
        [](int envs, const TaskOptions&) -> core::StatusOr<std::unique_ptr<VecTask>> {
          SH_ASSIGN_OR_RETURN(std::unique_ptr<GraspTask> t, GraspTask::Create(envs, true));
+         return std::unique_ptr<VecTask>(std::move(t));
+       },
+       "", false},
+      {"place",
+       "DASH's placing stage: corrections to the scripted placing's segments (aim, upright, "
+       "descent speed), each episode a generated table scene run through the whole pipeline",
+       [](int envs, const TaskOptions&) -> core::StatusOr<std::unique_ptr<VecTask>> {
+         SH_ASSIGN_OR_RETURN(std::unique_ptr<PlaceTask> t, PlaceTask::Create(envs));
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "", false},

@@ -77,8 +77,8 @@ Eigen::Matrix3d Rot(const mjData* d, int body) {
 class Run {
  public:
   Run(world::SimWorld& w, const GraspIndex& ix, const TabletopGoal& g, const TabletopOptions& o,
-      const StepHook& hook)
-      : w_(w), m_(w.model()), d_(w.data()), ix_(ix), g_(g), o_(o), hook_(hook) {
+      const StepHook& hook, const PlacePolicyFn& place)
+      : w_(w), m_(w.model()), d_(w.data()), ix_(ix), g_(g), o_(o), hook_(hook), place_(place) {
     scratch_ = mj_makeData(m_);
     for (int i = 0; i < kGraspDofs; ++i) s_.target[i] = d_->qpos[ix_.qpos[i]];
     s_.object_body = g_.object_body;
@@ -91,7 +91,10 @@ class Run {
   }
   ~Run() { mj_deleteData(scratch_); }
 
-  TabletopResult Go(const GraspPolicyFactory& make_policy);
+  /// The whole pipeline; with `stop_at_place`, up to where placing begins (that state kept there)
+  TabletopResult Go(const GraspPolicyFactory& make_policy, PlaceStart* stop_at_place = nullptr);
+  /// Placing, release and settle from a kept state
+  TabletopResult GoFrom(const PlaceStart& start);
 
  private:
   // one physics step: the arm by the tracker (or the grasp targets), the fingers by their
@@ -230,7 +233,11 @@ class Run {
   std::optional<TabletopResult> Transport(ArmTracker& tr);
   std::optional<TabletopResult> GraspAndLift(ArmTracker& tr, const GraspPolicyFn& policy);
   bool LetGo(ArmTracker& tr);
-  bool Align(ArmTracker& tr);
+  TabletopResult Place(ArmTracker& tr);
+  TabletopResult Finish(TabletopResult r) const;  // the counters and times filled in
+  bool Align(ArmTracker& tr, const PlaceAdjust& adjust);
+  // the place policy's corrections for the next segment (none without a policy)
+  PlaceAdjust AskPlacePolicy(double lowered_frac);
   std::optional<std::string> ReadyForRetry(ArmTracker& tr);
   static constexpr double kRetrySettleS = 0.5;  // the object comes to rest before the next look
 
@@ -241,9 +248,13 @@ class Run {
   const GraspIndex& ix_;
   TabletopGoal g_;  // a copy: a new attempt plans from where the object now stands
   const TabletopOptions& o_;
-  const StepHook& hook_;
+  StepHook hook_;
+  PlacePolicyFn place_;
   GraspState s_;
   int steps_ = 0;
+  int attempts_ = 0;  // grasps begun
+  std::chrono::steady_clock::time_point wall0_ = std::chrono::steady_clock::now();
+  double cpu0_ = ThreadCpuSeconds();
   double release_tilt_deg_ = -1;  // the object's tilt when the release began
   int lean_act_ = -1;             // the trunk's forward lean actuator (abdomen_y), -1 without one
   int lean_ = -1;                 // the index into o_.lean_deg the trunk last leaned to, -1 upright
@@ -500,18 +511,20 @@ std::optional<TabletopResult> Run::GraspAndLift(ArmTracker& tr, const GraspPolic
 }
 
 // the held object upright with its centre of mass over the target, turning the hand about that
-// centre: up to align_passes moves, reading the object's pose before each
-bool Run::Align(ArmTracker& tr) {
+// centre: up to align_passes moves, reading the object's pose before each; `adjust` (a place
+// policy's) moves the aim and the upright direction
+bool Run::Align(ArmTracker& tr, const PlaceAdjust& adjust) {
+  const Eigen::Vector3d aim = g_.target + Eigen::Vector3d(adjust.aim.x(), adjust.aim.y(), 0);
+  const Eigen::Vector3d up_goal = PlaceUpGoal(adjust);
   for (int k = 0; k < o_.align_passes; ++k) {
     const ObjectView seen = ObserveObject(g_, d_, true);
     const Eigen::Vector3d c = seen.centre;
-    Eigen::Vector3d err = g_.target - c;
+    Eigen::Vector3d err = aim - c;
     err.z() = 0;
     const Eigen::Matrix3d turn =
         g_.shape == GraspShape::kSphere
             ? Eigen::Matrix3d::Identity()
-            : Eigen::Quaterniond::FromTwoVectors(seen.up, Eigen::Vector3d::UnitZ())
-                  .toRotationMatrix();
+            : Eigen::Quaterniond::FromTwoVectors(seen.up, up_goal).toRotationMatrix();
     if (err.norm() < o_.align_tol_m && Eigen::AngleAxisd(turn).angle() < o_.align_tilt_rad) break;
     const Eigen::Vector3d p(d_->site_xpos + 3 * ix_.arm.palm_site);
     if (!MovePalm(tr, c + turn * (p - c) - p + err, o_.align_s, {}, &turn, true,
@@ -520,6 +533,14 @@ bool Run::Align(ArmTracker& tr) {
     }
   }
   return true;
+}
+
+PlaceAdjust Run::AskPlacePolicy(double lowered_frac) {
+  if (!place_) return {};
+  float obs[kPlaceObsDim], act[kPlaceActDim];
+  PlaceObservation(m_, d_, ix_, g_, ObserveObject(g_, d_, true), lowered_frac, Supported(), obs);
+  place_(obs, act);
+  return PlaceAdjustFromAction(act);
 }
 
 // the fingers open over release_s while the arm holds, then the palm backs away from the object
@@ -564,22 +585,21 @@ std::optional<std::string> Run::ReadyForRetry(ArmTracker& tr) {
   return std::nullopt;
 }
 
-TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  const double cpu0 = ThreadCpuSeconds();
+TabletopResult Run::Finish(TabletopResult r) const {
+  r.final_pos = ObjectCom();
+  r.sim_steps = steps_;
+  r.grasp_attempts = attempts_;
+  r.release_tilt_deg = release_tilt_deg_;
+  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
+  r.cpu_s = ThreadCpuSeconds() - cpu0_;
+  return r;
+}
+
+TabletopResult Run::Go(const GraspPolicyFactory& make_policy, PlaceStart* stop_at_place) {
   core::StatusOr<ArmTracker> tracker = ArmTracker::Create(m_, ix_.arm, o_.tracker);
   if (!tracker.ok()) return Fail(TabletopStage::kReach, std::string(tracker.status().message()));
   ArmTracker& tr = *tracker;
-  int attempts = 0;
-  auto finish = [&](TabletopResult r) {
-    r.final_pos = ObjectCom();
-    r.sim_steps = steps_;
-    r.grasp_attempts = attempts;
-    r.release_tilt_deg = release_tilt_deg_;
-    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    r.cpu_s = ThreadCpuSeconds() - cpu0;
-    return r;
-  };
+  auto finish = [&](TabletopResult r) { return Finish(std::move(r)); };
   if (2 * g_.half_width_m > o_.max_grip_width_m) {
     std::string name = mj_id2name(m_, mjOBJ_BODY, g_.object_body)
                            ? mj_id2name(m_, mjOBJ_BODY, g_.object_body)
@@ -595,17 +615,17 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
   for (;;) {
     if (auto f = Reach(tr)) {
       // a later attempt that finds no way to the object stays the grasp miss it follows
-      if (attempts > 0 && f->plan_failure) {
+      if (attempts_ > 0 && f->plan_failure) {
         f->failed_stage = TabletopStage::kGrasp;
         f->plan_failure = false;
         f->end_reason = "grasp miss, then no new reach: " + f->end_reason;
       }
       return finish(*f);
     }
-    ++attempts;
+    ++attempts_;
     std::optional<TabletopResult> miss = GraspAndLift(tr, make_policy(g_));
     if (!miss) break;
-    if (miss->failed_stage != TabletopStage::kGrasp || attempts >= o_.grasp_attempts)
+    if (miss->failed_stage != TabletopStage::kGrasp || attempts_ >= o_.grasp_attempts)
       return finish(*miss);
     if (std::optional<std::string> why = ReadyForRetry(tr)) {
       miss->end_reason += "; no new attempt: " + *why;
@@ -613,33 +633,61 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
     }
   }
   if (auto f = Transport(tr)) return finish(*f);
-  // place: the object upright (it tilts in the grip on the way) with its centre of mass over the
-  // target, then down until it bears on its support, straightened again every `lower_segment_m`
-  // (it tilts in the grip on the way down too)
+  if (stop_at_place) {
+    stop_at_place->data.reset(mj_makeData(m_), mj_deleteData);
+    mj_copyData(stop_at_place->data.get(), m_, d_);
+    stop_at_place->grasp = s_;
+    stop_at_place->tracker = tr;
+    stop_at_place->goal = g_;
+    stop_at_place->lean = lean_;
+    stop_at_place->steps = steps_;
+    stop_at_place->attempts = attempts_;
+    TabletopResult r = Fail(TabletopStage::kPlace, "stopped where placing begins");
+    return finish(r);
+  }
+  return finish(Place(tr));
+}
+
+TabletopResult Run::GoFrom(const PlaceStart& start) {
+  mj_copyData(d_, m_, start.data.get());
+  s_ = start.grasp;
+  g_ = start.goal;
+  lean_ = start.lean;
+  steps_ = start.steps;
+  attempts_ = start.attempts;
+  ArmTracker tr = *start.tracker;
+  return Finish(Place(tr));
+}
+
+// place: the object upright (it tilts in the grip on the way) with its centre of mass over the
+// target, then down until it bears on its support, straightened again every `lower_segment_m`
+// (it tilts in the grip on the way down too); release, retract, settle, and DASH's success rule
+TabletopResult Run::Place(ArmTracker& tr) {
   const double drop = o_.carry_clearance_m + 0.04;
   const double segment = o_.lower_segment_m > 0 ? o_.lower_segment_m : drop;
   for (double lowered = 0; lowered < drop - 1e-9 && (lowered == 0 || !Supported());
        lowered += segment) {
-    if (!Align(tr)) return finish(Fail(TabletopStage::kPlace, StepError()));
+    const PlaceAdjust adjust = AskPlacePolicy(lowered / drop);
+    if (!Align(tr, adjust)) return (Fail(TabletopStage::kPlace, StepError()));
     if (!InHand()) {
-      return finish(Fail(TabletopStage::kPlace,
-                         "drop at place: the object fell out of the hand over the target"));
+      return (Fail(TabletopStage::kPlace,
+                   "drop at place: the object fell out of the hand over the target"));
     }
     const double dz = std::min(segment, drop - lowered);
     if (!MovePalm(
-            tr, Eigen::Vector3d(0, 0, -dz), dz / o_.lower_speed_mps, [&] { return Supported(); },
-            nullptr, true)) {
-      return finish(Fail(TabletopStage::kPlace, StepError()));
+            tr, Eigen::Vector3d(0, 0, -dz), dz / (o_.lower_speed_mps * adjust.speed_scale),
+            [&] { return Supported(); }, nullptr, true)) {
+      return (Fail(TabletopStage::kPlace, StepError()));
     }
   }
   release_tilt_deg_ = std::acos(std::clamp(Rot(d_, g_.object_body)(2, 2), -1.0, 1.0)) * 180 / M_PI;
   // release and retract
-  if (!LetGo(tr)) return finish(Fail(TabletopStage::kRelease, StepError()));
+  if (!LetGo(tr)) return (Fail(TabletopStage::kRelease, StepError()));
   // settle
   const Eigen::VectorXd rest = ix_.arm.Get(d_);
   const double t1 = d_->time;
   while (d_->time - t1 < o_.settle_s) {
-    if (!Step([&] { tr.Hold(rest, d_); })) return finish(Fail(TabletopStage::kSettle, StepError()));
+    if (!Step([&] { tr.Hold(rest, d_); })) return (Fail(TabletopStage::kSettle, StepError()));
   }
   const Eigen::Vector3d c = ObjectCom();
   mjtNum vel[6];
@@ -660,7 +708,7 @@ TabletopResult Run::Go(const GraspPolicyFactory& make_policy) {
     r.success = true;
     r.end_reason = "success";
   }
-  return finish(r);
+  return r;
 }
 
 }  // namespace
@@ -673,9 +721,30 @@ double ThreadCpuSeconds() {
 
 TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const TabletopGoal& goal,
                            const GraspPolicyFactory& make_policy, const TabletopOptions& options,
-                           const StepHook& hook) {
-  Run run(world, ix, goal, options, hook);
+                           const StepHook& hook, const PlacePolicyFn& place_policy) {
+  Run run(world, ix, goal, options, hook, place_policy);
   return run.Go(make_policy);
+}
+
+TabletopResult RunTabletopToPlace(world::SimWorld& world, const GraspIndex& ix,
+                                  const TabletopGoal& goal, const GraspPolicyFactory& make_policy,
+                                  const TabletopOptions& options, PlaceStart* start) {
+  *start = PlaceStart();
+  Run run(world, ix, goal, options, {}, {});
+  return run.Go(make_policy, start);
+}
+
+TabletopResult RunTabletopPlace(world::SimWorld& world, const GraspIndex& ix,
+                                const PlaceStart& start, const TabletopOptions& options,
+                                const PlacePolicyFn& place_policy) {
+  if (!start.ready()) {
+    TabletopResult r;
+    r.failed_stage = TabletopStage::kPlace;
+    r.end_reason = "no state where placing begins (RunTabletopToPlace did not reach it)";
+    return r;
+  }
+  Run run(world, ix, start.goal, options, {}, place_policy);
+  return run.GoFrom(start);
 }
 
 ObjectView ObserveObject(const TabletopGoal& g, const mjData* d, bool held) {

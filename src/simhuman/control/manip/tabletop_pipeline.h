@@ -12,10 +12,13 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "simhuman/control/manip/grasp_task.h"
+#include "simhuman/control/manip/place_task.h"
 #include "simhuman/control/manip/reach.h"
 #include "simhuman/core/status.h"
 #include "simhuman/world/sim_world.h"
@@ -212,9 +215,36 @@ using GraspPolicyFactory = std::function<GraspPolicyFn(const TabletopGoal& goal)
 /// Runs the pipeline on `world` (its data is stepped), agent `ix.arm.agent`. The body's other
 /// servos keep their targets. Success is DASH's rule: the object's centre within 10 cm of the
 /// target in x and y, its centre of mass at least 5 cm above the target's z, plus ours: at rest
-/// (speed < 5 cm/s) `settle_s` after the release.
+/// (speed < 5 cm/s) `settle_s` after the release. `place_policy` (place_task.h; empty: the
+/// scripted placing) corrects each descent segment.
 TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const TabletopGoal& goal,
                            const GraspPolicyFactory& make_policy, const TabletopOptions& options,
-                           const StepHook& hook = {});
+                           const StepHook& hook = {}, const PlacePolicyFn& place_policy = {});
+
+/// The pipeline's state where placing begins (the object held over the target after transport):
+/// the simulation's data, the fingers' targets, the arm's tracker (its integral carries the
+/// object's load), the goal and the counters. RunTabletopToPlace keeps it; RunTabletopPlace runs
+/// placing from it as often as wanted (the place training's episodes).
+struct PlaceStart {
+  std::shared_ptr<mjData> data;
+  GraspState grasp;
+  std::optional<ArmTracker> tracker;
+  TabletopGoal goal;
+  int lean = -1, steps = 0, attempts = 0;
+  bool ready() const { return data != nullptr && tracker.has_value(); }
+};
+
+/// RunTabletop up to where placing begins: the result of a stage that failed before it, or,
+/// with `start` ready, a kPlace result "stopped where placing begins".
+TabletopResult RunTabletopToPlace(world::SimWorld& world, const GraspIndex& ix,
+                                  const TabletopGoal& goal, const GraspPolicyFactory& make_policy,
+                                  const TabletopOptions& options, PlaceStart* start);
+
+/// Placing, release and settle (RunTabletop's end, with its success rule) from `start` (made in
+/// the same `world`'s model), the simulation's data reset to it first. The step and grasp counts
+/// go on from the start's; the times are this call's.
+TabletopResult RunTabletopPlace(world::SimWorld& world, const GraspIndex& ix,
+                                const PlaceStart& start, const TabletopOptions& options,
+                                const PlacePolicyFn& place_policy = {});
 
 }  // namespace simhuman::control::manip

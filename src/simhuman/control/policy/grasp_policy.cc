@@ -33,22 +33,7 @@ core::StatusOr<GraspPolicyMaker> LoadGraspPolicy(const std::string& name_or_path
         std::to_string(manip::kGraspObsDim) + " and " + std::to_string(manip::kGraspActDim) +
         " (train one with: simhuman train --task grasp-residual), or use 'scripted'");
   }
-  auto policy = std::make_shared<LoadedPolicy>(std::move(loaded));
-  const manip::GraspPolicyFn learned = [policy](const float* obs, float* act) {
-    std::fill(act, act + manip::kGraspActDim, 0.0f);
-    for (int i = 0; i < manip::kGraspObsDim; ++i) {
-      if (!std::isfinite(obs[i])) return;
-    }
-    try {
-      torch::NoGradGuard ng;
-      torch::Tensor x =
-          torch::from_blob(const_cast<float*>(obs), {1, manip::kGraspObsDim}, torch::kFloat32);
-      torch::Tensor a = policy->actor->forward(policy->norm.Normalize(x)).contiguous();
-      std::copy(a.data_ptr<float>(), a.data_ptr<float>() + manip::kGraspActDim, act);
-    } catch (const c10::Error&) {
-      std::fill(act, act + manip::kGraspActDim, 0.0f);
-    }
-  };
+  const manip::GraspPolicyFn learned = MeanActionFn(std::move(loaded));
   if (!residual) {
     return GraspPolicyMaker([learned](const mjModel*, const mjData*, const manip::GraspIndex&,
                                       const manip::TabletopGoal&,

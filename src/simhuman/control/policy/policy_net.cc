@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <memory>
 
 namespace simhuman::control {
 
@@ -180,6 +181,25 @@ core::StatusOr<LoadedPolicy> LoadPolicyFile(const std::string& path) {
   } catch (const std::exception& e) {
     return absl::DataLossError(path + ": corrupt or unreadable policy file: " + e.what());
   }
+}
+
+std::function<void(const float* obs, float* act)> MeanActionFn(LoadedPolicy loaded) {
+  auto policy = std::make_shared<LoadedPolicy>(std::move(loaded));
+  return [policy](const float* obs, float* act) {
+    const int n = policy->meta.obs_dim, k = policy->meta.act_dim;
+    std::fill(act, act + k, 0.0f);
+    for (int i = 0; i < n; ++i) {
+      if (!std::isfinite(obs[i])) return;
+    }
+    try {
+      torch::NoGradGuard ng;
+      torch::Tensor x = torch::from_blob(const_cast<float*>(obs), {1, n}, torch::kFloat32);
+      torch::Tensor a = policy->actor->forward(policy->norm.Normalize(x)).contiguous();
+      std::copy(a.data_ptr<float>(), a.data_ptr<float>() + k, act);
+    } catch (const c10::Error&) {
+      std::fill(act, act + k, 0.0f);
+    }
+  };
 }
 
 }  // namespace simhuman::control

@@ -12,6 +12,7 @@
 
 #include <torch/torch.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,10 @@ struct LoadedPolicy {
   ObsNormalizer norm;
 };
 core::StatusOr<LoadedPolicy> LoadPolicyFile(const std::string& path);
+
+/// The policy's mean action for one observation (meta.obs_dim floats in, meta.act_dim out):
+/// zeros for a non-finite observation or a Torch error. Not thread-safe.
+std::function<void(const float* obs, float* act)> MeanActionFn(LoadedPolicy policy);
 
 /// Reads the metadata keys from an open archive.
 core::StatusOr<PolicyMeta> ReadPolicyMeta(torch::serialize::InputArchive& ar);
