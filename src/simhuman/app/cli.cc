@@ -159,6 +159,11 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
                        "tabletop, place, stack: grasp policy file or 'scripted' (default "
                        "assets/policies/grasp.pt if present, else scripted)");
   eval_cmd
+      ->add_option("--place-policy", ev->place_policy,
+                   "tabletop, place, stack: place policy file (simhuman train --task place: "
+                   "corrections to the scripted placing) or 'scripted'")
+      ->capture_default_str();
+  eval_cmd
       ->add_option("--grasp-attempts", ev->grasp_attempts,
                    "tabletop, place, stack: grasps tried on one object before a miss ends the "
                    "episode (1: no second try, as DASH)")

@@ -135,6 +135,12 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
                  {"--jobs", "not in range 1 to 64"});
   ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--first-episode", "-1"}),
                  {"--first-episode", "not in range 0 to 1000000"});
+  ExpectBadInput(
+      Cli({"eval", "--suite", "stack", "--place-policy", out + "/none.pt", "--out", out + "/pp"}),
+      {out + "/none.pt"});
+  EXPECT_FALSE(std::filesystem::exists(out + "/pp"));
+  ExpectBadInput(Cli({"eval", "--suite", "walk", "--place-policy", "p.pt"}),
+                 {"--place-policy applies to the tabletop suites"});
   ExpectBadInput(Cli({"eval", "--suite", "sit", "--first-episode", "200"}),
                  {"--first-episode applies to the tabletop suites", "--resume"});
   ExpectBadInput(Cli({"eval", "--suite", "sit", "--jobs", "2"}),

@@ -347,6 +347,13 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
                            "stack), not --suite " +
                            flags.suite + "; the plan suites continue a run with --resume"));
   }
+  if (flags.place_policy != "scripted" && suite->controller != eval::SuiteController::kTabletop) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--place-policy applies to the tabletop suites (tabletop, place, "
+                           "stack), not --suite " +
+                           flags.suite));
+  }
   if ((!flags.zero_shot.empty() || !flags.zero_shot_mesh.empty()) &&
       suite->controller != eval::SuiteController::kTabletop) {
     return ReportError(

@@ -35,6 +35,8 @@ struct EvalFlags {
   /// Tabletop suites: a grasp policy file, or "scripted"; empty: assets/policies/grasp.pt when
   /// it exists, else "scripted".
   std::string grasp_policy;
+  /// Tabletop suites: a place policy file (simhuman train --task place), or "scripted".
+  std::string place_policy = "scripted";
   /// Tabletop suites: grasps tried on one object (control::manip::TabletopOptions).
   int grasp_attempts = 2;
   std::string zero_shot;       ///< tabletop, place, stack: eval::TabletopEvalOptions::zero_shot

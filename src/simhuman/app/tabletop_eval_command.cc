@@ -6,6 +6,7 @@
 
 #include "simhuman/app/common.h"
 #include "simhuman/app/vision_command.h"
+#include "simhuman/control/policy/place_policy.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/tabletop_eval.h"
 
@@ -31,6 +32,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   o.first_episode = flags.first_episode;
   o.seed = flags.seed;
   o.grasp = eval::DefaultGraspPolicy(flags.grasp_policy);
+  o.place = flags.place_policy;
   o.perception = flags.perception;
   o.grasp_attempts = flags.grasp_attempts;
   o.zero_shot = flags.zero_shot;
@@ -53,6 +55,9 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
       return ReportError(err, kCommand, s);
     }
   }
+  if (absl::Status s = control::LoadPlacePolicy(o.place).status(); !s.ok()) {
+    return ReportError(err, kCommand, s);
+  }
   const std::string dir = flags.out.empty() ? "out/eval_" + flags.suite : flags.out;
   absl::Status made = MakeOutputDir(dir);
   if (!made.ok()) return ReportError(err, kCommand, made);
@@ -60,7 +65,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes"
       << (o.first_episode > 0 ? " from episode " + std::to_string(o.first_episode) : "")
       << ", seed " << o.seed << ", grasp " << o.grasp << " (" << o.grasp_attempts
-      << " attempts), perception " << o.perception
+      << " attempts), place " << o.place << ", perception " << o.perception
       << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string())
       << (o.zero_shot.empty() ? std::string()
                               : ", zero-shot " + o.zero_shot +
@@ -78,6 +83,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   summary["seed"] = o.seed;
   summary["first_episode"] = o.first_episode;
   summary["grasp"] = o.grasp;
+  summary["place"] = o.place;
   summary["grasp_attempts"] = o.grasp_attempts;
   if (!o.zero_shot.empty()) summary["zero_shot"] = o.zero_shot;
   if (o.zero_shot == "mesh") summary["zero_shot_mesh"] = o.zero_shot_mesh;

@@ -12,6 +12,7 @@
 #include "simhuman/control/manip/scripted_grasp.h"
 #include "simhuman/control/manip/tabletop_pipeline.h"
 #include "simhuman/control/policy/grasp_policy.h"
+#include "simhuman/control/policy/place_policy.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/eval/tabletop_vision.h"
 #include "simhuman/world/objects.h"
@@ -139,6 +140,7 @@ struct EpisodeOutcome {
 // what one worker thread keeps across its episodes (the renderer and the vision model)
 struct Worker {
   std::unique_ptr<TabletopVision> vision;
+  std::optional<control::manip::PlacePolicyFn> place;  // loaded at the worker's first episode
 };
 
 core::StatusOr<EpisodeOutcome> RunEpisode(const TabletopEvalOptions& o, int i,
@@ -181,7 +183,10 @@ core::StatusOr<EpisodeOutcome> RunEpisode(const TabletopEvalOptions& o, int i,
     const control::manip::GraspPolicyFactory grasp = [&](const control::manip::TabletopGoal& g) {
       return make_grasp(w->model(), w->data(), ix, g, pipeline);
     };
-    r = control::manip::RunTabletop(*w, ix, goal, grasp, pipeline, hook);
+    if (!worker->place) {
+      SH_ASSIGN_OR_RETURN(worker->place, control::LoadPlacePolicy(o.place));
+    }
+    r = control::manip::RunTabletop(*w, ix, goal, grasp, pipeline, hook, *worker->place);
     if (!seen.ok()) return seen;  // the renderer failed mid-episode
   } else {
     out.perception_failure = true;
@@ -304,6 +309,8 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   }
   SH_ASSIGN_OR_RETURN(const control::GraspPolicyMaker make_grasp,
                       control::LoadGraspPolicy(o.grasp));
+  // the place policy file is checked here, before any episode; each worker loads its own copy
+  SH_RETURN_IF_ERROR(control::LoadPlacePolicy(o.place).status());
   control::manip::TabletopOptions pipeline;
   pipeline.grasp_attempts = o.grasp_attempts;
   const int jobs = std::min(o.jobs, o.episodes);

@@ -34,6 +34,8 @@ struct TabletopEvalOptions {
   /// A grasp policy file (simhuman train --task grasp), or "scripted" for the training-free
   /// grasp.
   std::string grasp = "scripted";
+  /// A place policy file (simhuman train --task place), or "scripted" for the scripted placing.
+  std::string place = "scripted";
   /// "truth": the pipeline reads the objects' true state; "vision": the head camera and the
   /// vision model `vision_model` (eval/tabletop_vision.h).
   std::string perception = "truth";
