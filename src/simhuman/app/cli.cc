@@ -122,6 +122,10 @@ CLI::App* AddRunCommand(CLI::App& app, RunFlags* run, CLI::Option** preset) {
   run_cmd->add_option("--grasp-policy", run->grasp_policy,
                       "Tabletop plans: grasp policy file or 'scripted' (default "
                       "assets/policies/grasp.pt if present, else scripted)");
+  run_cmd
+      ->add_option("--place-policy", run->place_policy,
+                   "Tabletop plans: place policy file (simhuman train --task place) or 'scripted'")
+      ->capture_default_str();
   run_cmd->add_option("--start", run->start,
                       "Where the first human starts, standing: X,Y[,YAW_DEG] (m, degrees; "
                       "overrides the scene)");

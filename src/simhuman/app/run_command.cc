@@ -233,10 +233,10 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   if (eval::IsTabletopRun(*chain, **sim)) {
     // seated at the table with a dexterous hand: DASH's pipeline instead of the MPC
     grasp_policy = eval::DefaultGraspPolicy(flags.grasp_policy);
-    out << "tabletop pipeline, grasping with " << grasp_policy << ", perception "
-        << flags.perception << std::endl;
-    run_result =
-        eval::RunTabletopPlan(**sim, *chain, grasp_policy, &trajectory, VisionModelFor(flags));
+    out << "tabletop pipeline, grasping with " << grasp_policy << ", placing with "
+        << flags.place_policy << ", perception " << flags.perception << std::endl;
+    run_result = eval::RunTabletopPlan(**sim, *chain, grasp_policy, &trajectory,
+                                       VisionModelFor(flags), flags.place_policy);
   } else {
     run_result = eval::RunWithWalkPolicy(**sim, *chain, *controllers, walk_policy, options,
                                          &trajectory, carry_policy);
@@ -256,7 +256,10 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   j["settle_s"] = flags.settle_s;
   j["walk_policy"] = walk_policy;
   j["carry_policy"] = carry_policy;
-  if (!grasp_policy.empty()) j["grasp_policy"] = grasp_policy;
+  if (!grasp_policy.empty()) {
+    j["grasp_policy"] = grasp_policy;
+    j["place_policy"] = flags.place_policy;
+  }
   j["motion"] = MotionJson(**sim, trajectory);
   // a last stand-up or walk-to step: whether its human stands at the end (UniHSI's rule, which
   // `success` follows, reads the pelvis's position only; the eval suites also need this)

@@ -33,6 +33,7 @@ struct RunFlags {
   /// Tabletop plans (a seated human with a dexterous hand): grasp policy file or "scripted";
   /// empty: assets/policies/grasp.pt when it exists, else "scripted".
   std::string grasp_policy;
+  std::string place_policy = "scripted";  ///< tabletop plans: a place policy file or "scripted"
   /// Tabletop plans: "truth" (the objects' true state) or "vision" (the head camera and
   /// `vision_model`, empty: assets/vision/vision.pt).
   std::string perception = "truth";

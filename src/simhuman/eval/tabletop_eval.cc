@@ -432,8 +432,11 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
                                                        const plan::ContactChain& chain,
                                                        const std::string& grasp_policy,
                                                        control::Trajectory* trajectory,
-                                                       const std::string& vision_model) {
+                                                       const std::string& vision_model,
+                                                       const std::string& place_policy) {
   SH_ASSIGN_OR_RETURN(control::manip::TabletopGoal goal, TabletopGoalFromPlan(chain, w));
+  SH_ASSIGN_OR_RETURN(const control::manip::PlacePolicyFn place,
+                      control::LoadPlacePolicy(place_policy));
   SH_ASSIGN_OR_RETURN(control::manip::GraspIndex ix, control::manip::MakeGraspIndex(w, 0, true));
   std::unique_ptr<TabletopVision> vision;
   if (!vision_model.empty()) {
@@ -473,7 +476,7 @@ core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& w,
   };
   const double t0 = w.data()->time;
   const control::manip::TabletopResult r =
-      control::manip::RunTabletop(w, ix, goal, grasp, options, hook);
+      control::manip::RunTabletop(w, ix, goal, grasp, options, hook, place);
   SH_RETURN_IF_ERROR(seen);
   control::EpisodeResult out;
   out.success = r.success;

@@ -144,15 +144,15 @@ bool IsSeatedTabletopWorld(const world::SimWorld& world);
 /// the planner stand the human up and walk it over).
 core::Status CheckSeatedTabletopPlan(const plan::ContactChain& chain, const world::SimWorld& world);
 
-/// Runs a tabletop plan through the pipeline (`grasp_policy`: a file or "scripted"; a non-empty
-/// `vision_model`: the head camera plans and watches, eval/tabletop_vision.h), recording
+/// Runs a tabletop plan through the pipeline (`grasp_policy`, `place_policy`: a file or
+/// "scripted"; a non-empty `vision_model`: the head camera plans and watches,
+/// eval/tabletop_vision.h), recording
 /// `trajectory` at 30 frames/s (step 0 until the grasp holds, then step 1). The result reads as
 /// an episode's: success, steps completed, the pipeline's end reason. Errors: the plan
 /// (TabletopGoalFromPlan), an unloadable policy.
-core::StatusOr<control::EpisodeResult> RunTabletopPlan(world::SimWorld& world,
-                                                       const plan::ContactChain& chain,
-                                                       const std::string& grasp_policy,
-                                                       control::Trajectory* trajectory,
-                                                       const std::string& vision_model = "");
+core::StatusOr<control::EpisodeResult> RunTabletopPlan(
+    world::SimWorld& world, const plan::ContactChain& chain, const std::string& grasp_policy,
+    control::Trajectory* trajectory, const std::string& vision_model = "",
+    const std::string& place_policy = "scripted");
 
 }  // namespace simhuman::eval
