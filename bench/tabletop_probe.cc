@@ -52,7 +52,7 @@ struct Args {
   double trace_from = -1, trace_to = -1, trace_dt = 0.02;  ///< the trace's window and step (s)
   bool trace_contacts = false, trace_arm = false;
   // pipeline and scripted-grasp settings (negative or 0: the default)
-  bool touch_gap0 = true, hold_behind = true;
+  bool touch_gap0 = true, hold_behind = true, lean_to_lower = true;
   double behind_tol = 0.01, push_gain = 0.15;
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
@@ -117,7 +117,8 @@ Args Parse(int argc, char** argv) {
       {"--hold-rotation", &a.hold_rotation},   {"--press-closing", &a.press_closing},
       {"--carried-check", &a.carried_check},   {"--top-grasp", &a.top_grasp},
       {"--no-spheres", &a.no_spheres},         {"--touch-gap0", &a.touch_gap0},
-      {"--hold-behind", &a.hold_behind},       {"--profile", &a.profile}};
+      {"--hold-behind", &a.hold_behind},       {"--profile", &a.profile},
+      {"--lean-to-lower", &a.lean_to_lower}};
   const std::map<std::string, std::string*> strings = {{"--shape", &a.shape},
                                                        {"--kind", &a.kind},
                                                        {"--sheet-dir", &a.sheet_dir},
@@ -307,6 +308,7 @@ int main(int argc, char** argv) {
     if (a.release_s > 0) pipeline.release_s = a.release_s;
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
     if (a.grasp_attempts > 0) pipeline.grasp_attempts = a.grasp_attempts;
+    pipeline.lean_to_lower = a.lean_to_lower;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
     if (a.object_clearance >= 0) pipeline.motion.object_clearance_m = a.object_clearance;
@@ -409,9 +411,9 @@ int main(int argc, char** argv) {
                   tt.x(), tt.y(), tt.z());
     }
     const Eigen::Vector3d at = sh::world::WorldToTable(g.planned_pos);
-    std::printf("ep %3d %-5s %-8s w=%.3f h=%.3f m=%.2f at (%5.2f %5.2f)  %s\n", i, kind.c_str(),
-                ShapeName(g.shape), 2 * g.half_width_m, g.height_m, m->body_mass[g.object_body],
-                at.x(), at.y(),
+    std::printf("ep %3d %-5s %-8s w=%.3f h=%.3f m=%.2f at (%5.2f %5.2f) gap %5.3f  %s\n", i,
+                kind.c_str(), ShapeName(g.shape), 2 * g.half_width_m, g.height_m,
+                m->body_mass[g.object_body], at.x(), at.y(), res.release_gap_m,
                 (std::string(sh::control::manip::TabletopStageName(res.failed_stage)) + ": " +
                  res.end_reason)
                     .c_str());

@@ -256,10 +256,8 @@ int RunCommand(const RunFlags& flags, std::ostream& out, std::ostream& err) {
   j["settle_s"] = flags.settle_s;
   j["walk_policy"] = walk_policy;
   j["carry_policy"] = carry_policy;
-  if (!grasp_policy.empty()) {
-    j["grasp_policy"] = grasp_policy;
-    j["place_policy"] = flags.place_policy;
-  }
+  if (!grasp_policy.empty()) j["grasp_policy"] = grasp_policy;
+  if (!grasp_policy.empty()) j["place_policy"] = flags.place_policy;
   j["motion"] = MotionJson(**sim, trajectory);
   // a last stand-up or walk-to step: whether its human stands at the end (UniHSI's rule, which
   // `success` follows, reads the pelvis's position only; the eval suites also need this)

@@ -120,6 +120,7 @@ nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
           {"sim_steps", e.sim_steps},
           {"grasp_attempts", e.grasp_attempts},
           {"release_tilt_deg", e.release_tilt_deg},
+          {"release_gap_m", e.release_gap_m},
           {"wall_s", e.wall_s},
           {"cpu_s", e.cpu_s}};
 }
@@ -208,6 +209,7 @@ core::StatusOr<EpisodeOutcome> RunEpisode(const TabletopEvalOptions& o, int i,
   e.sim_steps = r.sim_steps;
   e.grasp_attempts = r.grasp_attempts;
   e.release_tilt_deg = r.release_tilt_deg;
+  e.release_gap_m = r.release_gap_m;
   e.wall_s = r.wall_s;
   e.cpu_s = r.cpu_s;
   out.sim_s = r.sim_steps * w->model()->opt.timestep;

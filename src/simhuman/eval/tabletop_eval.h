@@ -67,6 +67,8 @@ struct TabletopEpisode {
   int grasp_attempts = 0;  ///< grasps begun
   /// The object's tilt from upright (degrees) when the release began; -1: not reached
   double release_tilt_deg = -1;
+  /// The object's base above the target (m) when the release began; -1: not reached
+  double release_gap_m = -1;
   double wall_s = 0, cpu_s = 0;
 };
 

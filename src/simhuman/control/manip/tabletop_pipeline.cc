@@ -234,6 +234,11 @@ class Run {
   std::optional<TabletopResult> GraspAndLift(ArmTracker& tr, const GraspPolicyFn& policy);
   bool LetGo(ArmTracker& tr);
   TabletopResult Place(ArmTracker& tr);
+  // the descent over the target in segments (each asks the place policy, then aligns), `drop`
+  // at most, until the object bears on its support; a failure when the object leaves the hand
+  std::optional<TabletopResult> Lower(ArmTracker& tr, double drop);
+  // the held object's base above the target, as the controllers see it
+  double GapAboveTarget() const;
   TabletopResult Finish(TabletopResult r) const;  // the counters and times filled in
   bool Align(ArmTracker& tr, const PlaceAdjust& adjust);
   // the place policy's corrections for the next segment (none without a policy)
@@ -255,6 +260,7 @@ class Run {
   int attempts_ = 0;  // grasps begun
   std::chrono::steady_clock::time_point wall0_ = std::chrono::steady_clock::now();
   double cpu0_ = ThreadCpuSeconds();
+  double release_gap_m_ = -1;     // the object's base above the target when the release began
   double release_tilt_deg_ = -1;  // the object's tilt when the release began
   int lean_act_ = -1;             // the trunk's forward lean actuator (abdomen_y), -1 without one
   int lean_ = -1;                 // the index into o_.lean_deg the trunk last leaned to, -1 upright
@@ -590,6 +596,7 @@ TabletopResult Run::Finish(TabletopResult r) const {
   r.sim_steps = steps_;
   r.grasp_attempts = attempts_;
   r.release_tilt_deg = release_tilt_deg_;
+  r.release_gap_m = release_gap_m_;
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
   r.cpu_s = ThreadCpuSeconds() - cpu0_;
   return r;
@@ -662,24 +669,47 @@ TabletopResult Run::GoFrom(const PlaceStart& start) {
 // place: the object upright (it tilts in the grip on the way) with its centre of mass over the
 // target, then down until it bears on its support, straightened again every `lower_segment_m`
 // (it tilts in the grip on the way down too); release, retract, settle, and DASH's success rule
-TabletopResult Run::Place(ArmTracker& tr) {
-  const double drop = o_.carry_clearance_m + 0.04;
+std::optional<TabletopResult> Run::Lower(ArmTracker& tr, double drop) {
   const double segment = o_.lower_segment_m > 0 ? o_.lower_segment_m : drop;
   for (double lowered = 0; lowered < drop - 1e-9 && (lowered == 0 || !Supported());
        lowered += segment) {
     const PlaceAdjust adjust = AskPlacePolicy(lowered / drop);
-    if (!Align(tr, adjust)) return (Fail(TabletopStage::kPlace, StepError()));
+    if (!Align(tr, adjust)) return Fail(TabletopStage::kPlace, StepError());
     if (!InHand()) {
-      return (Fail(TabletopStage::kPlace,
-                   "drop at place: the object fell out of the hand over the target"));
+      return Fail(TabletopStage::kPlace,
+                  "drop at place: the object fell out of the hand over the target");
     }
     const double dz = std::min(segment, drop - lowered);
     if (!MovePalm(
             tr, Eigen::Vector3d(0, 0, -dz), dz / (o_.lower_speed_mps * adjust.speed_scale),
             [&] { return Supported(); }, nullptr, true)) {
-      return (Fail(TabletopStage::kPlace, StepError()));
+      return Fail(TabletopStage::kPlace, StepError());
     }
   }
+  return std::nullopt;
+}
+
+double Run::GapAboveTarget() const { return ObserveObject(g_, d_, true).base.z() - g_.target.z(); }
+
+TabletopResult Run::Place(ArmTracker& tr) {
+  const double drop = o_.carry_clearance_m + 0.04;
+  if (auto f = Lower(tr, drop)) return *f;
+  // the object still hangs over its support (the arm at the edge of its reach, or sagging under
+  // a heavy object, took it no lower): the trunk leans further and the descent goes on
+  for (int lean = lean_ + 1;
+       o_.lean_to_lower && lean_act_ >= 0 && lean < static_cast<int>(o_.lean_deg.size()) &&
+       !Supported() && GapAboveTarget() > o_.lower_gap_tol_m;
+       ++lean) {
+    // the hand keeps its place while the trunk leans (with the arm's angles held, the object
+    // would swing forward and down onto the support's edge)
+    d_->ctrl[lean_act_] = o_.lean_deg[lean] * M_PI / 180;
+    lean_ = lean;
+    if (!MovePalm(tr, Eigen::Vector3d::Zero(), 0.4, {}, nullptr, true)) {
+      return Fail(TabletopStage::kPlace, StepError());
+    }
+    if (auto f = Lower(tr, std::max(GapAboveTarget(), 0.0) + 0.04)) return *f;
+  }
+  release_gap_m_ = GapAboveTarget();
   release_tilt_deg_ = std::acos(std::clamp(Rot(d_, g_.object_body)(2, 2), -1.0, 1.0)) * 180 / M_PI;
   // release and retract
   if (!LetGo(tr)) return (Fail(TabletopStage::kRelease, StepError()));

@@ -24,15 +24,8 @@ core::StatusOr<GraspPolicyMaker> LoadGraspPolicy(const std::string& name_or_path
   const std::string& path = name_or_path;
   SH_ASSIGN_OR_RETURN(LoadedPolicy loaded, LoadPolicyFile(path));
   const bool residual = loaded.meta.task == "grasp-residual";
-  if ((loaded.meta.task != "grasp" && !residual) || loaded.meta.obs_dim != manip::kGraspObsDim ||
-      loaded.meta.act_dim != manip::kGraspActDim) {
-    return absl::InvalidArgumentError(
-        "grasp policy '" + path + "' is a '" + loaded.meta.task + "' policy with " +
-        std::to_string(loaded.meta.obs_dim) + " observations and " +
-        std::to_string(loaded.meta.act_dim) + " actions; a grasp or grasp-residual policy has " +
-        std::to_string(manip::kGraspObsDim) + " and " + std::to_string(manip::kGraspActDim) +
-        " (train one with: simhuman train --task grasp-residual), or use 'scripted'");
-  }
+  SH_RETURN_IF_ERROR(CheckPolicyKind(loaded, path, "grasp", {"grasp", "grasp-residual"},
+                                     manip::kGraspObsDim, manip::kGraspActDim, "scripted"));
   const manip::GraspPolicyFn learned = MeanActionFn(std::move(loaded));
   if (!residual) {
     return GraspPolicyMaker([learned](const mjModel*, const mjData*, const manip::GraspIndex&,

@@ -8,15 +8,8 @@ core::StatusOr<manip::PlacePolicyFn> LoadPlacePolicy(const std::string& name_or_
   if (name_or_path == "scripted") return manip::PlacePolicyFn();
   const std::string& path = name_or_path;
   SH_ASSIGN_OR_RETURN(LoadedPolicy loaded, LoadPolicyFile(path));
-  if (loaded.meta.task != "place" || loaded.meta.obs_dim != manip::kPlaceObsDim ||
-      loaded.meta.act_dim != manip::kPlaceActDim) {
-    return absl::InvalidArgumentError(
-        "place policy '" + path + "' is a '" + loaded.meta.task + "' policy with " +
-        std::to_string(loaded.meta.obs_dim) + " observations and " +
-        std::to_string(loaded.meta.act_dim) + " actions; a place policy has " +
-        std::to_string(manip::kPlaceObsDim) + " and " + std::to_string(manip::kPlaceActDim) +
-        " (train one with: simhuman train --task place), or use 'scripted'");
-  }
+  SH_RETURN_IF_ERROR(CheckPolicyKind(loaded, path, "place", {"place"}, manip::kPlaceObsDim,
+                                     manip::kPlaceActDim, "scripted"));
   return manip::PlacePolicyFn(MeanActionFn(std::move(loaded)));
 }
 

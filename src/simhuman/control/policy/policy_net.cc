@@ -183,6 +183,24 @@ core::StatusOr<LoadedPolicy> LoadPolicyFile(const std::string& path) {
   }
 }
 
+absl::Status CheckPolicyKind(const LoadedPolicy& loaded, const std::string& path,
+                             const std::string& stage, const std::vector<std::string>& tasks,
+                             int obs_dim, int act_dim, const std::string& use_instead) {
+  const PolicyMeta& meta = loaded.meta;
+  if (std::find(tasks.begin(), tasks.end(), meta.task) != tasks.end() && meta.obs_dim == obs_dim &&
+      meta.act_dim == act_dim) {
+    return absl::OkStatus();
+  }
+  std::string kinds;
+  for (const std::string& t : tasks) kinds += (kinds.empty() ? "" : " or ") + t;
+  return absl::InvalidArgumentError(
+      stage + " policy '" + path + "' is a '" + meta.task + "' policy with " +
+      std::to_string(meta.obs_dim) + " observations and " + std::to_string(meta.act_dim) +
+      " actions; a " + kinds + " policy has " + std::to_string(obs_dim) + " and " +
+      std::to_string(act_dim) + " (train one with: simhuman train --task " + tasks.back() +
+      "), or use '" + use_instead + "'");
+}
+
 std::function<void(const float* obs, float* act)> MeanActionFn(LoadedPolicy loaded) {
   auto policy = std::make_shared<LoadedPolicy>(std::move(loaded));
   return [policy](const float* obs, float* act) {

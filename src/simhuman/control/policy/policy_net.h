@@ -101,6 +101,13 @@ struct LoadedPolicy {
 };
 core::StatusOr<LoadedPolicy> LoadPolicyFile(const std::string& path);
 
+/// InvalidArgument unless `loaded` (read from `path`) is a policy of one of `tasks` with `obs_dim`
+/// observations and `act_dim` actions; the error names the file, what it holds, what the `stage`
+/// needs, the task to train (the last of `tasks`) and `use_instead`.
+absl::Status CheckPolicyKind(const LoadedPolicy& loaded, const std::string& path,
+                             const std::string& stage, const std::vector<std::string>& tasks,
+                             int obs_dim, int act_dim, const std::string& use_instead);
+
 /// The policy's mean action for one observation (meta.obs_dim floats in, meta.act_dim out):
 /// zeros for a non-finite observation or a Torch error. Not thread-safe.
 std::function<void(const float* obs, float* act)> MeanActionFn(LoadedPolicy policy);
