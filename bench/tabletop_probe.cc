@@ -52,7 +52,7 @@ struct Args {
   double trace_from = -1, trace_to = -1, trace_dt = 0.02;  ///< the trace's window and step (s)
   bool trace_contacts = false, trace_arm = false;
   // pipeline and scripted-grasp settings (negative or 0: the default)
-  bool touch_gap0 = true, hold_behind = true, lean_to_lower = true;
+  bool touch_gap0 = true, hold_behind = true;
   double behind_tol = 0.01, push_gain = 0.15;
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
@@ -117,8 +117,7 @@ Args Parse(int argc, char** argv) {
       {"--hold-rotation", &a.hold_rotation},   {"--press-closing", &a.press_closing},
       {"--carried-check", &a.carried_check},   {"--top-grasp", &a.top_grasp},
       {"--no-spheres", &a.no_spheres},         {"--touch-gap0", &a.touch_gap0},
-      {"--hold-behind", &a.hold_behind},       {"--profile", &a.profile},
-      {"--lean-to-lower", &a.lean_to_lower}};
+      {"--hold-behind", &a.hold_behind},       {"--profile", &a.profile}};
   const std::map<std::string, std::string*> strings = {{"--shape", &a.shape},
                                                        {"--kind", &a.kind},
                                                        {"--sheet-dir", &a.sheet_dir},
@@ -308,7 +307,6 @@ int main(int argc, char** argv) {
     if (a.release_s > 0) pipeline.release_s = a.release_s;
     if (a.grasp_steps > 0) pipeline.grasp_policy_steps = a.grasp_steps;
     if (a.grasp_attempts > 0) pipeline.grasp_attempts = a.grasp_attempts;
-    pipeline.lean_to_lower = a.lean_to_lower;
     if (a.squeeze >= 0) pipeline.finger_squeeze_rad = a.squeeze;
     if (a.clearance >= 0) pipeline.carry_clearance_m = a.clearance;
     if (a.object_clearance >= 0) pipeline.motion.object_clearance_m = a.object_clearance;

@@ -694,30 +694,15 @@ double Run::GapAboveTarget() const { return ObserveObject(g_, d_, true).base.z()
 TabletopResult Run::Place(ArmTracker& tr) {
   const double drop = o_.carry_clearance_m + 0.04;
   if (auto f = Lower(tr, drop)) return *f;
-  // the object still hangs over its support (the arm at the edge of its reach, or sagging under
-  // a heavy object, took it no lower): the trunk leans further and the descent goes on
-  for (int lean = lean_ + 1;
-       o_.lean_to_lower && lean_act_ >= 0 && lean < static_cast<int>(o_.lean_deg.size()) &&
-       !Supported() && GapAboveTarget() > o_.lower_gap_tol_m;
-       ++lean) {
-    // the hand keeps its place while the trunk leans (with the arm's angles held, the object
-    // would swing forward and down onto the support's edge)
-    d_->ctrl[lean_act_] = o_.lean_deg[lean] * M_PI / 180;
-    lean_ = lean;
-    if (!MovePalm(tr, Eigen::Vector3d::Zero(), 0.4, {}, nullptr, true)) {
-      return Fail(TabletopStage::kPlace, StepError());
-    }
-    if (auto f = Lower(tr, std::max(GapAboveTarget(), 0.0) + 0.04)) return *f;
-  }
   release_gap_m_ = GapAboveTarget();
   release_tilt_deg_ = std::acos(std::clamp(Rot(d_, g_.object_body)(2, 2), -1.0, 1.0)) * 180 / M_PI;
   // release and retract
-  if (!LetGo(tr)) return (Fail(TabletopStage::kRelease, StepError()));
+  if (!LetGo(tr)) return Fail(TabletopStage::kRelease, StepError());
   // settle
   const Eigen::VectorXd rest = ix_.arm.Get(d_);
   const double t1 = d_->time;
   while (d_->time - t1 < o_.settle_s) {
-    if (!Step([&] { tr.Hold(rest, d_); })) return (Fail(TabletopStage::kSettle, StepError()));
+    if (!Step([&] { tr.Hold(rest, d_); })) return Fail(TabletopStage::kSettle, StepError());
   }
   const Eigen::Vector3d c = ObjectCom();
   mjtNum vel[6];

@@ -143,12 +143,6 @@ struct TabletopOptions {
   /// segment and undid the alignment (docs/BENCHMARKS.md, issue 15 session 36).
   /// (Kept through the transport's planned trajectory too, stacks fell from 85.7 % to 81.4 %.)
   bool keep_load_integral = true;
-  /// When the descent ends with the object still this far above its support and not bearing on
-  /// it (the arm at the edge of its reach or sagging under a heavy object took it no lower), the
-  /// trunk leans further (lean_deg) and the descent goes on (`lean_to_lower`); released from
-  /// 8 cm, a 4 kg box toppled off a cylinder (tabletop suite, episode 69)
-  bool lean_to_lower = true;
-  double lower_gap_tol_m = 0.015;
   double align_tol_m = 0.005;
   double align_tilt_rad = 0.05;
   int ik_every_steps = 6;  ///< straight palm moves (lift, lower, retract) re-solve IK so often
