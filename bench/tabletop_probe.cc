@@ -4,7 +4,7 @@
 // tried on a fixed sample and looked at.
 //
 //   simhuman_tabletop_probe --seed 1 --from 0 --to 80 [--shape sphere] [--kind place]
-//                           [--sheet-dir /tmp/sheets] [--frame-s 0.2]
+//                           [--sheet-dir /tmp/sheets] [--frame-s 0.2] [--place-policy FILE]
 // The episodes are those of `simhuman eval --suite tabletop --seed S` (same seeds, same kinds).
 
 #include <chrono>
@@ -18,6 +18,7 @@
 
 #include "simhuman/control/manip/scripted_grasp.h"
 #include "simhuman/control/manip/tabletop_pipeline.h"
+#include "simhuman/control/policy/place_policy.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/eval/tabletop_eval.h"
 #include "simhuman/eval/tabletop_vision.h"
@@ -64,8 +65,9 @@ struct Args {
   int grasp_attempts = 0;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
-  std::string zero_shot;  // a shape of world::ZeroShotShapes() replaces the task object
-  std::string vision;     // a vision model file: the pipeline sees through the head camera
+  std::string zero_shot;           // a shape of world::ZeroShotShapes() replaces the task object
+  std::string vision;              // a vision model file: the pipeline sees through the head camera
+  std::string place = "scripted";  // a place policy file (simhuman train --task place)
 };
 
 // every flag takes one value; booleans are "1" (true) or anything else (false)
@@ -118,11 +120,9 @@ Args Parse(int argc, char** argv) {
       {"--carried-check", &a.carried_check},   {"--top-grasp", &a.top_grasp},
       {"--no-spheres", &a.no_spheres},         {"--touch-gap0", &a.touch_gap0},
       {"--hold-behind", &a.hold_behind},       {"--profile", &a.profile}};
-  const std::map<std::string, std::string*> strings = {{"--shape", &a.shape},
-                                                       {"--kind", &a.kind},
-                                                       {"--sheet-dir", &a.sheet_dir},
-                                                       {"--zero-shot", &a.zero_shot},
-                                                       {"--vision", &a.vision}};
+  const std::map<std::string, std::string*> strings = {
+      {"--shape", &a.shape},         {"--kind", &a.kind},     {"--sheet-dir", &a.sheet_dir},
+      {"--zero-shot", &a.zero_shot}, {"--vision", &a.vision}, {"--place-policy", &a.place}};
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if (k == "--seed") {
@@ -251,6 +251,11 @@ sh::control::manip::StepHook TraceHook(const Args& a, const mjModel* m,
 
 int main(int argc, char** argv) {
   const Args a = Parse(argc, argv);
+  const auto place = sh::control::LoadPlacePolicy(a.place);
+  if (!place.ok()) {
+    std::fprintf(stderr, "%s\n", std::string(place.status().message()).c_str());
+    return 2;
+  }
   int done = 0, ran = 0;
   for (int i = a.from; i < a.to; ++i) {
     const uint64_t seed = sh::core::DeriveSeed(a.seed, 0x7ab1e, static_cast<uint64_t>(i));
@@ -380,7 +385,7 @@ int main(int argc, char** argv) {
       };
     }
     if (a.profile) mjcb_time = ClockUs;
-    const auto res = sh::control::manip::RunTabletop(**w, *ix, g, grasp, pipeline, hook);
+    const auto res = sh::control::manip::RunTabletop(**w, *ix, g, grasp, pipeline, hook, *place);
     if (a.profile) {
       const mjData* dd = (*w)->data();
       auto us = [&](int t) { return dd->timer[t].duration / std::max(1, dd->timer[t].number); };
