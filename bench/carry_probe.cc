@@ -54,6 +54,7 @@ struct Args {
   bool contacts = false;  // print every contact and its normal force
   bool hold = false;      // start holding the box (the carry phase's reference-state start)
   bool grip = false;      // the hands grip the box while they hold it ("humanoid_grip")
+  bool support = false;   // quasi-static support in the squats (carry_support.h)
   std::string gait;       // the walking reference gait (control::WalkGait)
   int mpc = 0;            // > 0: the lift MPC with this many samples drives the action
   double mpc_sigma = -1, mpc_horizon = -1, mpc_whands = -1, mpc_wtrack = -1, mpc_wbal = -1;
@@ -98,6 +99,8 @@ Args Parse(int argc, char** argv) {
       a.torsion = std::atof(v);
     else if (k == "--hold")
       a.hold = std::atoi(v) != 0;
+    else if (k == "--support")
+      a.support = std::atoi(v) != 0;
     else if (k == "--grip")
       a.grip = std::atoi(v) != 0;
     else if (k == "--gait")
@@ -525,6 +528,7 @@ int main(int argc, char** argv) {
   }
   p.t = t->get();
   p.t->SetEvaluation(100000);
+  p.t->set_squat_support(a.support);
   sh::control::CarryParams& params = p.t->params();
   if (a.stand_gap >= 0) params.stand_gap_m = a.stand_gap;
   if (a.grasp_frac >= 0) params.grasp_frac = a.grasp_frac;

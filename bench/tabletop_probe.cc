@@ -7,7 +7,9 @@
 //                           [--sheet-dir /tmp/sheets] [--frame-s 0.2] [--place-policy FILE]
 // The episodes are those of `simhuman eval --suite tabletop --seed S` (same seeds, same kinds).
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -47,6 +49,9 @@ struct Args {
   uint64_t seed = 1;
   int from = 0, to = 40;
   std::string shape, kind, sheet_dir;
+  bool raise = false;    // the hand rises over the table's edge first (SeatedRaiseViaRad)
+  double reshape = -1;   // ArmMotionOptions::reshape_fraction
+  int planner_seed = 0;  // > 0: PlannerOptions::seed of every arm plan
   double frame_s = 0.2;
   double cam_distance_m = 0.55, cam_azimuth_deg = 150, cam_elevation_deg = -25;
   double t_from = 0, t_to = 1e9;                           ///< frames only in this window (s)
@@ -103,6 +108,8 @@ Args Parse(int argc, char** argv) {
 
                                                   {"--lower-speed", &a.lower_speed},
                                                   {"--release-s", &a.release_s},
+                                                  {"--reshape", &a.reshape},
+
                                                   {"--hold-rate", &a.hold_rate},
                                                   {"--behind-margin", &a.margin},
                                                   {"--behind-tol", &a.behind_tol},
@@ -110,19 +117,26 @@ Args Parse(int argc, char** argv) {
   const std::map<std::string, int*> ints = {{"--from", &a.from},
                                             {"--to", &a.to},
                                             {"--shortcuts", &a.shortcuts},
+                                            {"--planner-seed", &a.planner_seed},
                                             {"--approach-steps", &a.approach_steps},
                                             {"--thumb-delay", &a.thumb_delay},
                                             {"--grasp-steps", &a.grasp_steps},
                                             {"--grasp-attempts", &a.grasp_attempts}};
-  const std::map<std::string, bool*> bools = {
-      {"--trace-contacts", &a.trace_contacts}, {"--trace-arm", &a.trace_arm},
-      {"--hold-rotation", &a.hold_rotation},   {"--press-closing", &a.press_closing},
-      {"--carried-check", &a.carried_check},   {"--top-grasp", &a.top_grasp},
-      {"--no-spheres", &a.no_spheres},         {"--touch-gap0", &a.touch_gap0},
-      {"--hold-behind", &a.hold_behind},       {"--profile", &a.profile}};
+  const std::map<std::string, bool*> bools = {{"--trace-contacts", &a.trace_contacts},
+                                              {"--trace-arm", &a.trace_arm},
+                                              {"--hold-rotation", &a.hold_rotation},
+                                              {"--press-closing", &a.press_closing},
+                                              {"--carried-check", &a.carried_check},
+                                              {"--top-grasp", &a.top_grasp},
+                                              {"--no-spheres", &a.no_spheres},
+                                              {"--touch-gap0", &a.touch_gap0},
+                                              {"--hold-behind", &a.hold_behind},
+                                              {"--profile", &a.profile},
+                                              {"--raise", &a.raise}};
   const std::map<std::string, std::string*> strings = {
       {"--shape", &a.shape},         {"--kind", &a.kind},     {"--sheet-dir", &a.sheet_dir},
-      {"--zero-shot", &a.zero_shot}, {"--vision", &a.vision}, {"--place-policy", &a.place}};
+      {"--zero-shot", &a.zero_shot}, {"--vision", &a.vision}, {"--place-policy", &a.place},
+  };
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if (k == "--seed") {
@@ -322,6 +336,9 @@ int main(int argc, char** argv) {
     if (a.terminal_speed >= 0) pipeline.motion.terminal_palm_speed_mps = a.terminal_speed;
     if (a.min_inertia >= 0) pipeline.tracker.min_inertia = a.min_inertia;
     if (a.path_speed > 0) pipeline.motion.mean_path_speed = a.path_speed;
+    if (a.raise) pipeline.raise_via_rad = sh::control::manip::SeatedRaiseViaRad();
+    if (a.reshape >= 0) pipeline.motion.reshape_fraction = a.reshape;
+    if (a.planner_seed > 0) pipeline.motion.planner.seed = static_cast<uint64_t>(a.planner_seed);
     sh::control::manip::ScriptedGraspOptions so;
     so.hold_rotation = a.hold_rotation;
     so.press_while_closing = a.press_closing;
@@ -384,6 +401,29 @@ int main(int argc, char** argv) {
         if (inner) inner(d);
       };
     }
+    // the reach's directness: the palm's path until it first comes within 12 cm of the object,
+    // against the straight line between its ends
+    auto reach = std::make_shared<std::array<double, 4>>();  // path, start x y z (-1: done)
+    (*reach)[1] = std::nan("");
+    hook = [inner = hook, reach, site = ix->arm.palm_site, ob = g.object_body](const mjData* d) {
+      if (inner) inner(d);
+      auto& rc = *reach;
+      if (rc[0] < 0) return;
+      const Eigen::Vector3d p(d->site_xpos + 3 * site);
+      static thread_local Eigen::Vector3d last;
+      if (std::isnan(rc[1])) {
+        rc[1] = p.x(), rc[2] = p.y(), rc[3] = p.z();
+      } else {
+        rc[0] += (p - last).norm();
+      }
+      last = p;
+      if ((p - Eigen::Vector3d(d->xipos + 3 * ob)).norm() < 0.12) {
+        const double straight = (p - Eigen::Vector3d(rc[1], rc[2], rc[3])).norm();
+        std::printf("  reach path %.2f m, straight %.2f m, ratio %.2f\n", rc[0], straight,
+                    rc[0] / std::max(straight, 1e-3));
+        rc[0] = -1;
+      }
+    };
     if (a.profile) mjcb_time = ClockUs;
     const auto res = sh::control::manip::RunTabletop(**w, *ix, g, grasp, pipeline, hook, *place);
     if (a.profile) {

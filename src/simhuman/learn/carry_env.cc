@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "simhuman/control/arm_servo.h"
+#include "simhuman/control/policy/carry_support.h"
 #include "simhuman/core/check.h"
 #include "simhuman/core/geometry.h"
 #include "simhuman/learn/walk_env.h"
@@ -26,6 +27,8 @@ constexpr double kMaxApproachSeconds = 20;
 // CarryParams::arrive_dwell_s of reaching it)
 constexpr double kMaxCarrySeconds = 15;  // training destinations lie 1-3 m away
 constexpr double kBuiltBoxSide = 0.5;    // the box is built as this cube; ShapeBox scales it
+// the squats' ankle strategy (control::BalanceAnkles): 0.6-1.2 and 0.2-0.5 s measured alike
+constexpr double kSupportBalanceGain = 0.8, kSupportBalanceDampingS = 0.25;
 
 Eigen::Vector3d Vec(const mjtNum* x) { return Eigen::Vector3d(x[0], x[1], x[2]); }
 
@@ -419,8 +422,17 @@ void CarryTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   control::CarryTargets(ix_, e.s, action, ctrl);
   control::SetCarryGrip(ix_, e.s, d);
   double power = 0;
+  const bool support = squat_support_ && Squatting(e.s.phase);
   for (int k = 0; k < control::kWalkSubsteps; ++k) {
     for (int j = 0; j < kWalkActDim; ++j) d->ctrl[a.actuator[j]] = ctrl[j];
+    if (support) {
+      double tau[kWalkActDim], held[kWalkActDim];
+      control::StaticSupportTorques(e.m, d, ix_, tau);
+      std::copy(ctrl, ctrl + kWalkActDim, held);
+      control::AddSupportToTargets(e.m, ix_, tau, held);
+      control::BalanceAnkles(e.m, d, ix_, kSupportBalanceGain, kSupportBalanceDampingS, held);
+      for (int j = 0; j < kWalkActDim; ++j) d->ctrl[a.actuator[j]] = held[j];
+    }
     mj_step(e.m, d);
     for (int j = 0; j < kWalkActDim; ++j) {
       power += std::abs(d->actuator_force[a.actuator[j]] * d->qvel[a.hinge_qvel[j]]);

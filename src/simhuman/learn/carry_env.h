@@ -111,6 +111,13 @@ class CarryTask : public VecTask {
   void set_put_down_start_fraction(double f);
   double put_down_start_fraction() const { return put_down_start_fraction_; }
 
+  /// Quasi-static support in the squats (control/policy/carry_support.h): while lifting and
+  /// putting down, the servo targets carry the torques that hold the pose on the feet, and the
+  /// ankles keep the centre of mass over them (a model-based lift; off by default, the probe's
+  /// --support 1; docs/BENCHMARKS.md, issue 17, session 39).
+  void set_squat_support(bool on) { squat_support_ = on; }
+  bool squat_support() const { return squat_support_; }
+
   /// Evaluation starts: no episode starts holding the box, at the box or inside the lift (Reset
   /// always walks up from 1-2 m, up to 5 m at curriculum 1), and episodes are cut after `max_steps`
   /// policy steps.
@@ -144,6 +151,7 @@ class CarryTask : public VecTask {
   int box_geom_ = -1, box_body_ = -1, box_qpos_ = -1;
   double curriculum_ = 0;
   bool evaluation_ = false;
+  bool squat_support_ = false;
   int max_steps_ = kMaxSteps;
   double held_start_fraction_ = kDefaultHeldStartFraction;
   double put_down_start_fraction_ = kDefaultPutDownStartFraction;

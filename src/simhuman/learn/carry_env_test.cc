@@ -365,6 +365,36 @@ TEST(CarryMpc, KeepsTheSquatBalancedWhereTheReferenceAloneFallsIntegration) {
   EXPECT_LT(z, 0.65);  // squatting, not standing straight
 }
 
+// The squat's quasi-static support (carry_support.h), zero action, a 0.45 m 5 kg box, posed
+// where the squeeze begins: the reference alone sinks far below its keyframe under the body's
+// weight (0.27 m in 0.5 s when written); with the feedforward less than half as far (0.12).
+TEST(CarrySupport, TheSquatHoldsItsKeyframeHeightWithTheFeedforwardIntegration) {
+  auto sag = [](bool support) {
+    auto t = CarryTask::Create(1, "human", true);
+    EXPECT_TRUE(t.ok()) << t.status();
+    (*t)->SetEvaluation(100000);
+    (*t)->set_squat_support(support);
+    std::vector<float> obs((*t)->obs_dim()), act((*t)->act_dim(), 0.f);
+    (*t)->Reset(0, 3000, obs.data());
+    BoxAhead(**t, 0.45, 5.0, 0.225, 2.0, obs.data());
+    (*t)->StartLiftNow(0, obs.data(), 1.3);  // posed where the squeeze begins
+    const double keyframe_z = (*t)->state(0).poses.squat_pelvis_z;
+    double lowest = 1e9;
+    for (int k = 0; k < 15; ++k) {  // 0.5 s of the squeeze
+      StepInfo info;
+      (*t)->Step(0, act.data(), obs.data(), &info);
+      lowest = std::min(lowest, (*t)->data(0)->xpos[3 * (*t)->index().walk.agent.pelvis_body + 2]);
+      if (info.terminated) break;
+    }
+    return keyframe_z - lowest;
+  };
+  const double without = sag(false), with = sag(true);
+  std::printf("pelvis below the squat keyframe: %.3f m without the support, %.3f m with it\n",
+              without, with);
+  EXPECT_GT(without, 0.04);
+  EXPECT_LT(with, 0.5 * without);
+}
+
 }  // namespace
 }  // namespace simhuman::learn
 

@@ -123,9 +123,10 @@ core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, m
   // a joint pressed against its (soft) limit may sit a hair beyond it: plan from the limit
   Eigen::VectorXd start = arm.Get(d);
   for (int i = 0; i < ArmChain::kDofs; ++i) start[i] = std::clamp(start[i], arm.lo[i], arm.hi[i]);
-  // the wrist's rest is straight (forearm, flexion, deviation at 0); the shoulder and elbow
-  // keep where they are
-  Eigen::VectorXd rest = start;
+  // the goals' IK starts from `seed`; the wrist's rest is straight (forearm, flexion,
+  // deviation at 0), the shoulder and elbow keep where they are
+  const Eigen::VectorXd seed = o.ik_from.size() == ArmChain::kDofs ? arm.Clamp(o.ik_from) : start;
+  Eigen::VectorXd rest = seed;
   rest.tail<3>().setZero();
   std::vector<Candidate> free;
   FreePoseCount count;
@@ -133,10 +134,10 @@ core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, m
   // found), again from spread-out seeds (an arm reaching far forward is often beyond a local
   // solve from a hanging arm, or its first solution collides), so the common case costs one
   // solve per pose
-  CollectFreePoses(m, s, arm, goals, start, rest, o, carried, collider, 0, &free, &count);
+  CollectFreePoses(m, s, arm, goals, seed, rest, o, carried, collider, 0, &free, &count);
   bool restarted = false;
   if (free.empty() && o.ik_restarts > 0) {
-    CollectFreePoses(m, s, arm, goals, start, rest, o, carried, collider, 1, &free, &count);
+    CollectFreePoses(m, s, arm, goals, seed, rest, o, carried, collider, 1, &free, &count);
     restarted = true;
   }
   if (free.empty()) {
@@ -173,7 +174,7 @@ core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, m
     // the poses found from the current arm lie where no path reaches them: others, once
     std::vector<Candidate> more;
     FreePoseCount ignored;
-    CollectFreePoses(m, s, arm, goals, start, rest, o, carried, collider, 1, &more, &ignored);
+    CollectFreePoses(m, s, arm, goals, seed, rest, o, carried, collider, 1, &more, &ignored);
     if (!more.empty()) {
       free = best(more);
       plan = search();
@@ -241,6 +242,56 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
       PlanArmMotionOnce(m, d, s, arm, goals, approach_dirs, touching);
   if (closer.ok()) closer->clearance_kept = false;
   return closer;
+}
+
+core::StatusOr<ArmMotion> PlanArmThrough(const mjModel* m, const mjData* d, mjData* s,
+                                         const ArmChain& arm,
+                                         const std::vector<Eigen::VectorXd>& vias,
+                                         const ArmMotionOptions& o) {
+  SH_RETURN_IF_ERROR(o.planner.Validate());
+  if (vias.empty()) return absl::InvalidArgumentError("plan failure: no arm angles to pass");
+  const auto t0 = std::chrono::steady_clock::now();
+  mju_copy(s->qpos, d->qpos, m->nq);
+  const Carried carried = Carried::From(m, d, arm, o.carried_body);
+  const ArmCollider collider(m, arm, carried.body);
+  const ValidityFn valid = [&](const Eigen::VectorXd& q) {
+    return Contacts(m, s, arm, q, o, carried, collider) == 0;
+  };
+  Eigen::VectorXd lo(ArmChain::kDofs), hi(ArmChain::kDofs), from = arm.Get(d);
+  for (int i = 0; i < ArmChain::kDofs; ++i) {
+    lo[i] = arm.lo[i];
+    hi[i] = arm.hi[i];
+    from[i] = std::clamp(from[i], lo[i], hi[i]);
+  }
+  const PlannerOptions& po = o.planner;
+  JointPath path;
+  path.waypoints.push_back(from);
+  for (size_t k = 0; k < vias.size(); ++k) {
+    if (vias[k].size() != ArmChain::kDofs) {
+      return absl::InvalidArgumentError("plan failure: via " + std::to_string(k) + " has " +
+                                        std::to_string(vias[k].size()) + " arm angles, not " +
+                                        std::to_string(ArmChain::kDofs));
+    }
+    const Eigen::VectorXd via = arm.Clamp(vias[k]);
+    if (!valid(via)) {
+      return absl::FailedPreconditionError("plan failure: via " + std::to_string(k) +
+                                           " is in collision");
+    }
+    // straight in joint space (a search could wander anywhere between two vias)
+    if (!SegmentValid(from, via, valid, po.resolution_rad)) {
+      return absl::NotFoundError("plan failure: no straight path to via " + std::to_string(k));
+    }
+    path.waypoints.push_back(via);
+    from = via;
+  }
+  if (path.Length() < 1e-6) path.waypoints.push_back(path.waypoints.back());
+  RetimeOptions ro;
+  ro.dt_s = m->opt.timestep;
+  ro.mean_speed = o.mean_path_speed;
+  ro.max_velocity = Eigen::VectorXd::Constant(ArmChain::kDofs, o.max_joint_speed);
+  core::StatusOr<Trajectory> traj = Retime(path, ro);
+  if (!traj.ok()) return core::Annotate(traj.status(), "plan failure: retiming");
+  return ArmMotion{*std::move(traj), -1, from, 0, Seconds(t0)};
 }
 
 core::StatusOr<ArmTracker> ArmTracker::Create(const mjModel* m, const ArmChain& arm,

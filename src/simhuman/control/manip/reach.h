@@ -45,6 +45,10 @@ struct ArmMotionOptions {
   int approach_body = -1;  ///< the object reached for (-1: none): it may come closer
   IkOptions ik;            ///< the goal poses' inverse kinematics
   int ik_restarts = 8;     ///< further IK seeds per goal when no goal is free from the current arm
+  /// The arm angles the goals' IK starts from and prefers (empty: the current arm's). A hand
+  /// raised before the reach (PlanArmThrough) keeps the arm poses a reach from the hanging
+  /// arm would end in, so the hand meets the object as it would have.
+  Eigen::VectorXd ik_from;
   /// Bodies whose contacts with the arm do not count (the object in the hand during transport).
   std::vector<int> ignore_bodies;
   /// The object in the hand (transport; -1: none): it moves with the hand, its pose relative to
@@ -77,6 +81,18 @@ core::StatusOr<ArmMotion> PlanArmMotion(const mjModel* m, const mjData* d, mjDat
                                         const ArmChain& arm, const std::vector<PalmPose>& goals,
                                         const std::vector<Eigen::Vector3d>& approach_dirs,
                                         const ArmMotionOptions& options = {});
+
+/// Plans the arm of `arm` from its pose in `d` through the arm angles `vias` in turn, straight
+/// in joint space from each to the next, ending at rest at the last (PlanArmMotion's collision
+/// rules and clearance). A seated person lifts a hand hanging beside the thigh over the table's
+/// edge with the elbow drawn back; a path searched straight for the object swings the arm out
+/// round the edge instead. Errors: FailedPrecondition "plan failure: via N is in collision",
+/// NotFound "plan failure: no straight path to via N", InvalidArgument for bad options or a via
+/// of the wrong size.
+core::StatusOr<ArmMotion> PlanArmThrough(const mjModel* m, const mjData* d, mjData* scratch,
+                                         const ArmChain& arm,
+                                         const std::vector<Eigen::VectorXd>& vias,
+                                         const ArmMotionOptions& options = {});
 
 /// Tracks an arm trajectory through the arm's position servos: each physics step, the desired
 /// acceleration (JointTracker: feed-forward plus PID) becomes joint torques by inverse dynamics,

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "simhuman/control/manip/grasp_task.h"
+#include "simhuman/control/manip/tabletop_pipeline.h"
 #include "simhuman/world/objects.h"
 #include "simhuman/world/scene.h"
 #include "simhuman/world/seating.h"
@@ -132,6 +133,56 @@ TEST(ReachTest, ACarriedObjectMovesWithTheHandInTheCollisionCheck) {
   ASSERT_FALSE(carried.ok());
   EXPECT_NE(carried.status().message().find("1 in collision"), std::string::npos)
       << carried.status();
+  mj_deleteData(s);
+}
+
+TEST(ReachTest, TheHangingHandRisesOverTheTableEdgeThroughTheRaiseVias) {
+  auto w = TableScene(Eigen::Vector3d(0.05, 0.2, 0));
+  const mjModel* m = w->model();
+  mjData* d = w->data();
+  const GraspIndex gi = OpenTheHand(*w);
+  const ArmChain& arm = gi.arm;
+  // the arm settles where it hangs, the hand open, as the pipeline's pre-shape leaves it
+  for (int k = 0; k < kGraspDofs; ++k) d->ctrl[gi.actuator[k]] = d->qpos[gi.qpos[k]];
+  for (int k = 0; k < 60; ++k) mj_step(m, d);
+  mjData* s = mj_makeData(m);
+  const double table_top = world::TableToWorld(Eigen::Vector3d::Zero()).z();
+  ASSERT_LT(d->site_xpos[3 * arm.palm_site + 2], table_top) << "the hand hangs below the board";
+  std::vector<Eigen::VectorXd> vias;
+  for (const std::vector<double>& v : SeatedRaiseViaRad())
+    vias.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<int>(v.size())));
+  auto raise = PlanArmThrough(m, d, s, arm, vias, {});
+  ASSERT_TRUE(raise.ok()) << raise.status();
+  // the path passes every via (straight segments between) and ends at rest at the last
+  const Trajectory& t = raise->trajectory;
+  EXPECT_LT((t.Sample(t.duration_s()).q - arm.Clamp(vias.back())).norm(), 1e-6);
+  EXPECT_LT(t.Sample(t.duration_s()).qdot.norm(), 1e-6);
+  arm.Set(s, arm.Clamp(vias.back()));
+  mj_kinematics(m, s);
+  EXPECT_GT(s->site_xpos[3 * arm.palm_site + 2], table_top + 0.03)
+      << "the palm ends over the board";
+  // the palm never swings out: within 40 cm of the shoulder's vertical line all the way
+  const Eigen::Vector3d shoulder(d->site_xpos + 3 * gi.shoulder_site);
+  double widest = 0;
+  for (double at = 0; at <= t.duration_s(); at += 0.02) {
+    arm.Set(s, t.Sample(at).q);
+    mj_kinematics(m, s);
+    widest = std::max(
+        widest, (Eigen::Vector3d(s->site_xpos + 3 * arm.palm_site) - shoulder).head<2>().norm());
+  }
+  EXPECT_LT(widest, 0.4);
+  // a via inside the board, and a via of the wrong size, are refused by name
+  Eigen::VectorXd into = arm.Clamp(vias.back());
+  into[1] = 1.2;  // the shoulder flexed, the forearm pointing down through the board
+  into[3] = 0.3;
+  auto blocked = PlanArmThrough(m, d, s, arm, {vias[0], into}, {});
+  ASSERT_FALSE(blocked.ok());
+  EXPECT_NE(blocked.status().message().find("via 1 is in collision"), std::string::npos)
+      << blocked.status();
+  auto short_via = PlanArmThrough(m, d, s, arm, {Eigen::VectorXd::Zero(3)}, {});
+  ASSERT_FALSE(short_via.ok());
+  EXPECT_NE(short_via.status().message().find("via 0 has 3 arm angles, not 7"), std::string::npos)
+      << short_via.status();
   mj_deleteData(s);
 }
 

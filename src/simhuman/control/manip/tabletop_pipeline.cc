@@ -33,6 +33,11 @@ const char* TabletopStageName(TabletopStage s) {
   return "?";
 }
 
+std::vector<std::vector<double>> SeatedRaiseViaRad() {
+  return {
+      {0.5, 0, 0, 0.4, 0, 0, 0}, {0.5, -0.7, 0, 1.2, 0, -0.8, 0}, {0.3, -0.7, 0, 2.6, 0, -0.8, 0}};
+}
+
 double GripHeightM(const TabletopGoal& g, const TabletopOptions& o) {
   if (g.grip_height_m >= 0) return g.grip_height_m;
   const double z =
@@ -265,6 +270,7 @@ class Run {
   int lean_act_ = -1;             // the trunk's forward lean actuator (abdomen_y), -1 without one
   int lean_ = -1;                 // the index into o_.lean_deg the trunk last leaned to, -1 upright
   int twist_act_ = -1;            // the trunk's turn about the spine (abdomen_z), -1 without one
+  Eigen::VectorXd raised_from_;   // the hanging arm's angles before the hand rose (else empty)
   std::string step_error_ = "unstable simulation";
 };
 
@@ -314,6 +320,16 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   for (int k = 0; k < 60; ++k) {
     if (!Step([&] { tr.Hold(still, d_); })) return Fail(TabletopStage::kReach, StepError());
   }
+  if (!o_.raise_via_rad.empty() && d_->site_xpos[3 * ix_.arm.palm_site + 2] < g_.planned_pos.z()) {
+    std::vector<Eigen::VectorXd> vias;
+    for (const std::vector<double>& v : o_.raise_via_rad)
+      vias.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<int>(v.size())));
+    const core::StatusOr<ArmMotion> raise =
+        PlanArmThrough(m_, d_, scratch_, ix_.arm, vias, o_.motion);
+    if (raise.ok()) raised_from_ = still;
+    if (raise.ok() && !Follow(tr, raise->trajectory, 0.05))
+      return Fail(TabletopStage::kReach, StepError());
+  }
   Eigen::Vector3d centre = g_.planned_pos + Eigen::Vector3d(0, 0, GripHeightM(g_, o_));
   // palm poses around the object at the given approach angles
   auto poses = [&](const std::vector<double>& thetas) {
@@ -353,6 +369,7 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   std::pair<std::vector<PalmPose>, std::vector<Eigen::Vector3d>> face_goals, around_goals;
   ArmMotionOptions mo = o_.motion;
   mo.approach_body = g_.object_body;
+  mo.ik_from = raised_from_;
   auto plan = [&]() {
     if (!faces.empty()) {
       core::StatusOr<ArmMotion> on_face =

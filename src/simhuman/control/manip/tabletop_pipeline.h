@@ -167,7 +167,20 @@ struct TabletopOptions {
   /// left), trying these turns nearest-shoulder first and skipping any that takes the shoulder
   /// further from the object (or the target) than it is.
   std::vector<double> twist_deg = {20, -20, 35, -35};
+  /// A reach that starts with the palm below the table's top first lifts the hand over the
+  /// table's edge through these arm angles (each: shoulder abduction, flexion, rotation, elbow,
+  /// forearm, wrist flexion, deviation; PlanArmThrough), the goals' arm poses still solved from
+  /// the hanging arm. Empty (the default), or no straight way through them: the reach goes for
+  /// the object from the hanging arm, which swings the arm out round the table's edge.
+  /// SeatedRaiseViaRad() looks human but measures lower (docs/BENCHMARKS.md, issue 15, session
+  /// 39).
+  std::vector<std::vector<double>> raise_via_rad;
 };
+
+/// The seated human's raise over the table's edge (TabletopOptions::raise_via_rad): the arm
+/// out a little, then the elbow drawn back and bent with the wrist extended, the hand rising in
+/// front of the shoulder.
+std::vector<std::vector<double>> SeatedRaiseViaRad();
 
 /// How high above the object's base the palm's centre grips it (TabletopOptions' grip_*).
 double GripHeightM(const TabletopGoal& goal, const TabletopOptions& options);
