@@ -174,6 +174,12 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
       ->check(CLI::Range(1, 5))
       ->capture_default_str();
   eval_cmd
+      ->add_option("--planner-seed", ev->planner_seed,
+                   "tabletop, place, stack: the seed of every arm plan's search (RRTConnect); "
+                   "the outcome of some episodes turns on it, so compare runs over several")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  eval_cmd
       ->add_option("--zero-shot", ev->zero_shot,
                    "tabletop, place, stack: the task object becomes a shape the pipeline was not "
                    "made for (cone, hourglass, or mesh: an OBJ file, --zero-shot-mesh); ground "

@@ -141,6 +141,10 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
   EXPECT_FALSE(std::filesystem::exists(out + "/pp"));
   ExpectBadInput(Cli({"eval", "--suite", "walk", "--place-policy", "p.pt"}),
                  {"--place-policy applies to the tabletop suites"});
+  ExpectBadInput(Cli({"eval", "--suite", "lie", "--planner-seed", "2"}),
+                 {"--planner-seed applies to the tabletop suites"});
+  ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--planner-seed", "0"}),
+                 {"--planner-seed", "not in range 1 to 1000000"});
   ExpectBadInput(Cli({"eval", "--suite", "sit", "--first-episode", "200"}),
                  {"--first-episode applies to the tabletop suites", "--resume"});
   ExpectBadInput(Cli({"eval", "--suite", "sit", "--jobs", "2"}),

@@ -333,34 +333,27 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
                                                   flags.suite + "; valid: the walk suites and " +
                                                   core::JoinNames(eval::ScalableSuites())));
   }
-  if (flags.jobs > 1 && suite->controller != eval::SuiteController::kTabletop) {
+  // flags of the tabletop suites alone: {set, the flag(s), what the other suites have instead}
+  const struct {
+    bool set;
+    const char* flag;
+    const char* instead;
+  } tabletop_only[] = {
+      {flags.jobs > 1, "--jobs applies", "; the plan suites run in parallel with mpirun -n N"},
+      {flags.first_episode != 0, "--first-episode applies",
+       "; the plan suites continue a run with --resume"},
+      {flags.place_policy != "scripted", "--place-policy applies", ""},
+      {!flags.zero_shot.empty() || !flags.zero_shot_mesh.empty(),
+       "--zero-shot and --zero-shot-mesh apply", ""},
+      {flags.planner_seed != 1, "--planner-seed applies", ""},
+  };
+  for (const auto& f : tabletop_only) {
+    if (!f.set || suite->controller == eval::SuiteController::kTabletop) continue;
     return ReportError(err, kCommand,
-                       absl::InvalidArgumentError(
-                           "--jobs applies to the tabletop suites (tabletop, place, stack), not "
-                           "--suite " +
-                           flags.suite + "; the plan suites run in parallel with mpirun -n N"));
-  }
-  if (flags.first_episode != 0 && suite->controller != eval::SuiteController::kTabletop) {
-    return ReportError(err, kCommand,
-                       absl::InvalidArgumentError(
-                           "--first-episode applies to the tabletop suites (tabletop, place, "
-                           "stack), not --suite " +
-                           flags.suite + "; the plan suites continue a run with --resume"));
-  }
-  if (flags.place_policy != "scripted" && suite->controller != eval::SuiteController::kTabletop) {
-    return ReportError(err, kCommand,
-                       absl::InvalidArgumentError(
-                           "--place-policy applies to the tabletop suites (tabletop, place, "
-                           "stack), not --suite " +
-                           flags.suite));
-  }
-  if ((!flags.zero_shot.empty() || !flags.zero_shot_mesh.empty()) &&
-      suite->controller != eval::SuiteController::kTabletop) {
-    return ReportError(
-        err, kCommand,
-        absl::InvalidArgumentError("--zero-shot and --zero-shot-mesh apply to the tabletop suites "
-                                   "(tabletop, place, stack), not --suite " +
-                                   flags.suite));
+                       absl::InvalidArgumentError(std::string(f.flag) +
+                                                  " to the tabletop suites (tabletop, place, "
+                                                  "stack), not --suite " +
+                                                  flags.suite + f.instead));
   }
   if (!flags.approach_policy.empty() && suite->controller != eval::SuiteController::kCarryPolicy) {
     return ReportError(err, kCommand,

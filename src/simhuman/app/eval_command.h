@@ -39,6 +39,8 @@ struct EvalFlags {
   std::string place_policy = "scripted";
   /// Tabletop suites: grasps tried on one object (control::manip::TabletopOptions).
   int grasp_attempts = 2;
+  /// Tabletop suites: the arm planner's seed (eval::TabletopEvalOptions::planner_seed).
+  int planner_seed = 1;
   std::string zero_shot;       ///< tabletop, place, stack: eval::TabletopEvalOptions::zero_shot
   std::string zero_shot_mesh;  ///< its OBJ file for "mesh" (empty: world::kZeroShotMeshFile)
   int jobs = 1;

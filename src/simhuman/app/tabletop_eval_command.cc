@@ -35,6 +35,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   o.place = flags.place_policy;
   o.perception = flags.perception;
   o.grasp_attempts = flags.grasp_attempts;
+  o.planner_seed = static_cast<uint64_t>(flags.planner_seed);
   o.zero_shot = flags.zero_shot;
   if (!flags.zero_shot_mesh.empty()) o.zero_shot_mesh = flags.zero_shot_mesh;
   if (!o.zero_shot.empty() && o.perception == "vision") {
@@ -65,8 +66,8 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   out << "simhuman eval: suite " << flags.suite << ", " << o.episodes << " episodes"
       << (o.first_episode > 0 ? " from episode " + std::to_string(o.first_episode) : "")
       << ", seed " << o.seed << ", grasp " << o.grasp << " (" << o.grasp_attempts
-      << " attempts), place " << o.place << ", perception " << o.perception
-      << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string())
+      << " attempts), planner seed " << o.planner_seed << ", place " << o.place << ", perception "
+      << o.perception << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string())
       << (o.zero_shot.empty() ? std::string()
                               : ", zero-shot " + o.zero_shot +
                                     (o.zero_shot == "mesh" ? " (" + o.zero_shot_mesh + ")" : ""))
@@ -85,6 +86,7 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   summary["grasp"] = o.grasp;
   summary["place"] = o.place;
   summary["grasp_attempts"] = o.grasp_attempts;
+  summary["planner_seed"] = o.planner_seed;
   if (!o.zero_shot.empty()) summary["zero_shot"] = o.zero_shot;
   if (o.zero_shot == "mesh") summary["zero_shot_mesh"] = o.zero_shot_mesh;
   if (o.perception == "vision") summary["vision_model"] = o.vision_model;

@@ -315,6 +315,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   SH_RETURN_IF_ERROR(control::LoadPlacePolicy(o.place).status());
   control::manip::TabletopOptions pipeline;
   pipeline.grasp_attempts = o.grasp_attempts;
+  pipeline.motion.planner.seed = o.planner_seed;
   const int jobs = std::min(o.jobs, o.episodes);
   std::vector<Worker> workers(jobs);
   TabletopEvalSummary sum;

@@ -43,6 +43,9 @@ struct TabletopEvalOptions {
   /// Grasps tried on one object before a miss ends the episode
   /// (control::manip::TabletopOptions::grasp_attempts).
   int grasp_attempts = 2;
+  /// The seed of every arm plan's RRTConnect search (control::manip::PlannerOptions::seed). The
+  /// suite's outcome moves with it by a few episodes (docs/BENCHMARKS.md, issue 15, session 39).
+  uint64_t planner_seed = 1;
   /// Zero-shot runs (world::MakeZeroShot): every episode's task object becomes this shape of
   /// world::ZeroShotShapes(); "" keeps the generator's box, cylinder or sphere. Ground truth
   /// only, as DASH's zero-shot demonstrations.

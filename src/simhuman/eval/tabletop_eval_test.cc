@@ -100,6 +100,26 @@ TEST(TabletopEvalTest, JobsRunEpisodesAtOnceWithTheSameResultsIntegration) {
   EXPECT_THAT(bad.status().message(), HasSubstr("--jobs 0 must be >= 1"));
 }
 
+// the planner seed reaches every arm plan: other seeds, other paths (the episodes' step counts
+// differ), the same seed the same episodes
+TEST(TabletopEvalTest, ThePlannerSeedChangesThePathsIntegration) {
+  TabletopEvalOptions o;
+  o.episodes = 2;
+  o.seed = 3;
+  o.grasp = "scripted";
+  auto steps = [&](uint64_t planner_seed) {
+    o.planner_seed = planner_seed;
+    std::vector<int> out;
+    auto s = RunTabletopEval(o, [&](const TabletopEpisode& e) { out.push_back(e.sim_steps); });
+    EXPECT_TRUE(s.ok()) << s.status();
+    return out;
+  };
+  const std::vector<int> one = steps(1), two = steps(2);
+  ASSERT_EQ(one.size(), 2u);
+  EXPECT_NE(one, two);
+  EXPECT_EQ(steps(1), one);
+}
+
 TEST(TabletopEvalTest, AnUnloadableGraspPolicyIsNamed) {
   TabletopEvalOptions o;
   o.episodes = 1;
