@@ -104,6 +104,23 @@ void CollectFreePoses(const mjModel* m, mjData* s, const ArmChain& arm,
   }
 }
 
+// the arm's current angles; a joint pressed against its (soft) limit may sit a hair beyond
+// it: a plan starts from the limit
+Eigen::VectorXd ArmStart(const ArmChain& arm, const mjData* d) {
+  Eigen::VectorXd q = arm.Get(d);
+  for (int i = 0; i < ArmChain::kDofs; ++i) q[i] = std::clamp(q[i], arm.lo[i], arm.hi[i]);
+  return q;
+}
+
+// the retiming of an arm path at the model's time step and `o`'s speeds (ending at rest)
+RetimeOptions ArmRetime(const mjModel* m, const ArmMotionOptions& o) {
+  RetimeOptions ro;
+  ro.dt_s = m->opt.timestep;
+  ro.mean_speed = o.mean_path_speed;
+  ro.max_velocity = Eigen::VectorXd::Constant(ArmChain::kDofs, o.max_joint_speed);
+  return ro;
+}
+
 // PlanArmMotion with the clearance of `o` as given
 core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, mjData* s,
                                             const ArmChain& arm, const std::vector<PalmPose>& goals,
@@ -120,9 +137,7 @@ core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, m
   mju_copy(s->qpos, d->qpos, m->nq);
   const Carried carried = Carried::From(m, d, arm, o.carried_body);
   const ArmCollider collider(m, arm, carried.body);
-  // a joint pressed against its (soft) limit may sit a hair beyond it: plan from the limit
-  Eigen::VectorXd start = arm.Get(d);
-  for (int i = 0; i < ArmChain::kDofs; ++i) start[i] = std::clamp(start[i], arm.lo[i], arm.hi[i]);
+  const Eigen::VectorXd start = ArmStart(arm, d);
   // the goals' IK starts from `seed`; the wrist's rest is straight (forearm, flexion,
   // deviation at 0), the shoulder and elbow keep where they are
   const Eigen::VectorXd seed = o.ik_from.size() == ArmChain::kDofs ? arm.Clamp(o.ik_from) : start;
@@ -205,10 +220,7 @@ core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, m
       if (shaped.ok() && PathValid(*shaped, valid, po.resolution_rad)) path = *shaped;
     }
   }
-  RetimeOptions ro;
-  ro.dt_s = m->opt.timestep;
-  ro.mean_speed = o.mean_path_speed;
-  ro.max_velocity = Eigen::VectorXd::Constant(ArmChain::kDofs, o.max_joint_speed);
+  RetimeOptions ro = ArmRetime(m, o);
   if (o.terminal_palm_speed_mps > 0 && path.Length() > 1e-6) {
     core::StatusOr<double> v =
         PathSpeedForPalmSpeed(J, EndDirection(path), o.terminal_palm_speed_mps);
@@ -257,13 +269,7 @@ core::StatusOr<ArmMotion> PlanArmThrough(const mjModel* m, const mjData* d, mjDa
   const ValidityFn valid = [&](const Eigen::VectorXd& q) {
     return Contacts(m, s, arm, q, o, carried, collider) == 0;
   };
-  Eigen::VectorXd lo(ArmChain::kDofs), hi(ArmChain::kDofs), from = arm.Get(d);
-  for (int i = 0; i < ArmChain::kDofs; ++i) {
-    lo[i] = arm.lo[i];
-    hi[i] = arm.hi[i];
-    from[i] = std::clamp(from[i], lo[i], hi[i]);
-  }
-  const PlannerOptions& po = o.planner;
+  Eigen::VectorXd from = ArmStart(arm, d);
   JointPath path;
   path.waypoints.push_back(from);
   for (size_t k = 0; k < vias.size(); ++k) {
@@ -278,18 +284,14 @@ core::StatusOr<ArmMotion> PlanArmThrough(const mjModel* m, const mjData* d, mjDa
                                            " is in collision");
     }
     // straight in joint space (a search could wander anywhere between two vias)
-    if (!SegmentValid(from, via, valid, po.resolution_rad)) {
+    if (!SegmentValid(from, via, valid, o.planner.resolution_rad)) {
       return absl::NotFoundError("plan failure: no straight path to via " + std::to_string(k));
     }
     path.waypoints.push_back(via);
     from = via;
   }
   if (path.Length() < 1e-6) path.waypoints.push_back(path.waypoints.back());
-  RetimeOptions ro;
-  ro.dt_s = m->opt.timestep;
-  ro.mean_speed = o.mean_path_speed;
-  ro.max_velocity = Eigen::VectorXd::Constant(ArmChain::kDofs, o.max_joint_speed);
-  core::StatusOr<Trajectory> traj = Retime(path, ro);
+  core::StatusOr<Trajectory> traj = Retime(path, ArmRetime(m, o));
   if (!traj.ok()) return core::Annotate(traj.status(), "plan failure: retiming");
   return ArmMotion{*std::move(traj), -1, from, 0, Seconds(t0)};
 }
