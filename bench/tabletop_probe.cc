@@ -60,6 +60,7 @@ struct Args {
   // pipeline and scripted-grasp settings (negative or 0: the default)
   bool touch_gap0 = true, hold_behind = true;
   double behind_tol = 0.01, push_gain = 0.15;
+  double tilt_guard_deg = -1, tilt_backoff = -1, thumb_clear = -1;
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
   double grip_frac = -1, grip_max = -1;
@@ -67,7 +68,7 @@ struct Args {
   double lower_segment = -1, extra_lean = -1, lower_speed = -1, release_s = -1;
   double palm_behind = -1, pregrasp_gap = -1, close_rate = -1, hold_rate = -1, margin = -9;
   double squeeze = -1, path_speed = 0, clearance = -1, min_inertia = -1, object_clearance = -1;
-  int grasp_attempts = 0;
+  int grasp_attempts = 0, guard_steps = -1;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
   std::string zero_shot;           // a shape of world::ZeroShotShapes() replaces the task object
@@ -113,7 +114,10 @@ Args Parse(int argc, char** argv) {
                                                   {"--hold-rate", &a.hold_rate},
                                                   {"--behind-margin", &a.margin},
                                                   {"--behind-tol", &a.behind_tol},
-                                                  {"--push-gain", &a.push_gain}};
+                                                  {"--push-gain", &a.push_gain},
+                                                  {"--tilt-guard-deg", &a.tilt_guard_deg},
+                                                  {"--tilt-backoff", &a.tilt_backoff},
+                                                  {"--thumb-clear", &a.thumb_clear}};
   const std::map<std::string, int*> ints = {{"--from", &a.from},
                                             {"--to", &a.to},
                                             {"--shortcuts", &a.shortcuts},
@@ -121,7 +125,8 @@ Args Parse(int argc, char** argv) {
                                             {"--approach-steps", &a.approach_steps},
                                             {"--thumb-delay", &a.thumb_delay},
                                             {"--grasp-steps", &a.grasp_steps},
-                                            {"--grasp-attempts", &a.grasp_attempts}};
+                                            {"--grasp-attempts", &a.grasp_attempts},
+                                            {"--guard-steps", &a.guard_steps}};
   const std::map<std::string, bool*> bools = {{"--trace-contacts", &a.trace_contacts},
                                               {"--trace-arm", &a.trace_arm},
                                               {"--hold-rotation", &a.hold_rotation},
@@ -346,6 +351,10 @@ int main(int argc, char** argv) {
     so.hold_behind = a.hold_behind;
     so.behind_tol_m = a.behind_tol;
     so.push_gain = a.push_gain;
+    if (a.tilt_guard_deg >= 0) so.tilt_guard_rad = a.tilt_guard_deg * M_PI / 180;
+    if (a.tilt_backoff >= 0) so.tilt_backoff_m = a.tilt_backoff;
+    if (a.guard_steps >= 0) so.tilt_guard_steps = a.guard_steps;
+    if (a.thumb_clear >= 0) so.thumb_clear_step_m = a.thumb_clear;
     if (a.press_m >= 0) so.press_m = a.press_m;
     if (a.close_rate > 0) so.close_rate = static_cast<float>(a.close_rate);
     if (a.hold_rate >= 0) so.hold_rate = static_cast<float>(a.hold_rate);

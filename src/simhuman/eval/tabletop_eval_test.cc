@@ -239,6 +239,31 @@ TEST(TabletopEvalTest, TheScriptedGraspBringsThePalmOntoTheObjectIntegration) {
   EXPECT_THAT(not_pushed.end_reason, HasSubstr("no palm"));
 }
 
+// Grasps that pushed the object over before the hand closed (issue 15 session 40). Episode 6:
+// the palm pressing on a 2.6 kg cylinder 6.7 cm wide tipped it; the palm now backs off once the
+// object tilts. Episode 283: the thumb's base met the box's near edge before the palm and
+// pushed it over as the palm closed in; the hand now slides away from the thumb's side.
+TEST(TabletopEvalTest, TheScriptedGraspDoesNotPushTheObjectOverIntegration) {
+  auto run = [](int index, const std::string& kind, double guard_rad, double thumb_step_m) {
+    control::manip::ScriptedGraspOptions so;
+    so.tilt_guard_rad = guard_rad;
+    so.thumb_clear_step_m = thumb_step_m;
+    return RunSuiteEpisode(index, kind, control::manip::TabletopOptions{}, so);
+  };
+  const control::manip::ScriptedGraspOptions shipped;
+  ASSERT_GT(shipped.tilt_guard_rad, 0);
+  ASSERT_GT(shipped.thumb_clear_step_m, 0);
+  const double guard = shipped.tilt_guard_rad, thumb = shipped.thumb_clear_step_m;
+  const control::manip::TabletopResult guarded = run(6, "place", guard, thumb);
+  EXPECT_TRUE(guarded.success) << guarded.end_reason;
+  const control::manip::TabletopResult unguarded = run(6, "place", 0, thumb);
+  EXPECT_THAT(unguarded.end_reason, HasSubstr("tipped over"));
+  const control::manip::TabletopResult cleared = run(283, "stack", guard, thumb);
+  EXPECT_TRUE(cleared.success) << cleared.end_reason;
+  const control::manip::TabletopResult blocked = run(283, "stack", guard, 0);
+  EXPECT_THAT(blocked.end_reason, HasSubstr("grasp miss"));
+}
+
 // episode 172's place target lies beyond the arm even with the trunk leant furthest; turned
 // about the spine as well, the trunk brings the shoulder near enough to set the object down
 // (with the grasp of session 36: where the hand holds the object decides the transport's poses)

@@ -35,8 +35,12 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     double grip_z = 0;      // the palm's height: where the reach left it
     bool have_goal = false;
     bool palm_touched = false;
-    double push = 0;      // ScriptedGraspOptions::push_gain's accumulated push (m)
-    double last_gap = 0;  // the palm's gap to the object's side at the previous step
+    double push = 0;             // ScriptedGraspOptions::push_gain's accumulated push (m)
+    double last_gap = 0;         // the palm's gap to the object's side at the previous step
+    double tilt0 = 0;            // the object's tilt when the grasp began
+    double thumb_clear = 0;      // ScriptedGraspOptions::thumb_clear_step_m's accumulated shift
+    bool backing_off = false;    // the tilt guard holds the palm back
+    Eigen::Vector3d backed_off;  // where: behind the palm as the guard first saw the tilt
     Eigen::Vector3d palm_goal;
     Eigen::Matrix3d hand_rot;  // the hand's rotation as the reach left it
     std::shared_ptr<mjData> scratch;
@@ -65,9 +69,17 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     // the reach may take a far object higher than the default grip height
     const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> hand_rot(
         d->xmat + 9 * ix.arm.hand_body);
+    const double tilt = std::acos(std::clamp(seen.up.z(), -1.0, 1.0));
     if (st->step == 0) {
       st->grip_z = std::abs(p.z() - grip_z) < 0.02 ? grip_z : p.z();
       st->hand_rot = hand_rot;
+      st->tilt0 = tilt;
+    }
+    const bool guarding = st->closing_from < 0 || st->step - st->closing_from < o.tilt_guard_steps;
+    const bool tipping = guarding && o.tilt_guard_rad > 0 && tilt - st->tilt0 > o.tilt_guard_rad;
+    const bool thumb = touch[15] > 0 || touch[16] > 0;
+    if (thumb && !st->palm_touched) {
+      st->thumb_clear = std::min(st->thumb_clear + o.thumb_clear_step_m, o.thumb_clear_max_m);
     }
     if (!st->have_goal || st->closing_from < 0 || o.press_while_closing) {
       if (top) {
@@ -91,7 +103,11 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
           st->push = std::min(st->push + o.push_gain * (gap + o.press_m), o.push_max_m);
         }
         st->last_gap = gap;
-        st->palm_goal = p + n * (gap + o.press_m + st->push);
+        if (tipping && !st->backing_off) st->backed_off = p - n * o.tilt_backoff_m;
+        st->backing_off = tipping;
+        if (tipping) st->push = 0;
+        st->palm_goal =
+            tipping ? st->backed_off : Eigen::Vector3d(p + n * (gap + o.press_m + st->push));
         if (o.hold_behind && !st->palm_touched) {
           // along the fingers (level, square to the normal): the object's axis `side_behind`
           // ahead of the palm's centre
@@ -100,7 +116,7 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
           f -= f.dot(n) * n;
           if (f.norm() > 1e-6) {
             f.normalize();
-            const double off = (c - p).dot(f) - side_behind;
+            const double off = (c - p).dot(f) - side_behind - st->thumb_clear;
             st->palm_goal += f * std::copysign(std::max(0.0, std::abs(off) - o.behind_tol_m), off);
           }
         }

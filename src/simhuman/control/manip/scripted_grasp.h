@@ -10,6 +10,8 @@
 /// object). With TabletopOptions::sphere_top_grasp a sphere is taken from above: the palm comes
 /// down on its top and the thumb closes with the fingers.
 
+#include <cmath>
+
 #include "simhuman/control/manip/tabletop_pipeline.h"
 
 namespace simhuman::control::manip {
@@ -50,6 +52,22 @@ struct ScriptedGraspOptions {
   double push_gain = 0.15;
   double push_max_m = 0.03;
   double stall_m = 0.0005;
+  /// Once the object has tilted this much more than when the grasp began (the hand is pushing
+  /// it over before the fingers hold it), the palm's goal stays `tilt_backoff_m` behind where the
+  /// palm was when the tilt was first seen, instead of pressing on, until the object stands
+  /// again. A palm or a finger pressing on one side tipped tall boxes and cylinders before the
+  /// hand closed (issue 15 session 40). The guard watches until `tilt_guard_steps` after the
+  /// hand starts closing: a later tilt comes from the fingers' own wrap, and backing off then
+  /// loosened the grip (a 4 kg box was set down 6 degrees off upright). 0: no guard.
+  double tilt_guard_rad = 4 * M_PI / 180;
+  double tilt_backoff_m = 0.003;
+  int tilt_guard_steps = 20;
+  /// While the thumb touches the object before the palm does (the thumb's base, shaped into a
+  /// C, meets the object's near edge and pushes it over as the palm closes in), the object's
+  /// axis is taken this much further along the fingers each step (at most
+  /// `thumb_clear_max_m`): the hand slides away from the thumb's side. 0: off.
+  double thumb_clear_step_m = 0.002;
+  double thumb_clear_max_m = 0.02;
 };
 
 /// The scripted grasp of `goal`'s object by arm `ix` in the simulation `m`/`d` (read at each
