@@ -435,7 +435,7 @@ Eigen::Vector2d SlowForTurn(const RouteFollower& follower, const Eigen::Vector2d
   const Eigen::Vector2d beyond = follower.PointAhead(lookahead_m + kTurnSlowLookM) - carrot;
   const double dist = way.norm();
   if (dist <= kTurnSlowMinM || beyond.norm() < 1e-3) return carrot;
-  const double bend = std::acos(std::clamp(way.normalized().dot(beyond.normalized()), -1.0, 1.0));
+  const double bend = core::AngleFromCos(way.normalized().dot(beyond.normalized()));
   if (bend <= kTurnSlowFromRad) return carrot;
   // from the full lead at kTurnSlowFromRad down to kTurnSlowMinM at a right angle
   const double f =

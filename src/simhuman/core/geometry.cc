@@ -13,6 +13,8 @@ double WrapAngle(double a) {
   return a <= -M_PI ? a + 2.0 * M_PI : a;
 }
 
+double AngleFromCos(double c) { return std::acos(std::clamp(c, -1.0, 1.0)); }
+
 Pose Pose::FromYaw(const Eigen::Vector3d& pos, double yaw_rad) {
   Pose p;
   p.pos = pos;

@@ -55,6 +55,10 @@ double ShapeVolume(const Shape& shape);
 /// `a` (radians) wrapped to (-pi, pi]. The one angle wrap of the code base.
 double WrapAngle(double a);
 
+/// The angle (radians, [0, pi]) whose cosine is `c`, with `c` clamped into [-1, 1] first (the
+/// dot product of two unit vectors can round past 1). The one such angle of the code base.
+double AngleFromCos(double c);
+
 /// Nearest point of the solid `shape` (placed at `world_from_parent`) to `p_world`; returns
 /// `p_world` itself when the point is inside the solid. A mesh answers with its bounding box.
 Eigen::Vector3d NearestPointOnShape(const Shape& shape, const Pose& world_from_parent,

@@ -1,7 +1,10 @@
-// Frustums (cones, an hourglass's halves) and meshes: nearest points, surfaces, bounds, volumes.
+// Frustums (cones, an hourglass's halves) and meshes: nearest points, surfaces, bounds, volumes;
+// angles from cosines.
 #include "simhuman/core/geometry.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace simhuman::core {
 namespace {
@@ -24,6 +27,14 @@ std::shared_ptr<const Mesh> UnitCube() {
   m->lo = Eigen::Vector3d::Zero();
   m->hi = Eigen::Vector3d::Ones();
   return m;
+}
+
+TEST(AngleFromCosTest, ACosineRoundedPastOneGivesTheEndAngleNotNan) {
+  EXPECT_NEAR(AngleFromCos(0.5), M_PI / 3, kTol);
+  EXPECT_EQ(AngleFromCos(1.0 + 1e-12), 0.0);
+  EXPECT_NEAR(AngleFromCos(-1.0 - 1e-12), M_PI, kTol);
+  const Eigen::Vector3d a = Eigen::Vector3d(1, 2, 3).normalized();
+  EXPECT_FALSE(std::isnan(AngleFromCos(a.dot(a))));
 }
 
 TEST(FrustumTest, NearestPointsOnAConeFromEverySide) {

@@ -7,6 +7,7 @@
 
 #include "absl/strings/str_cat.h"
 #include "simhuman/core/field_table.h"
+#include "simhuman/core/geometry.h"
 #include "simhuman/perceive/vision/associate.h"
 
 namespace simhuman::eval {
@@ -246,7 +247,7 @@ void ScoreFrame(const VisionFrame& f, const std::vector<perceive::ObjectEstimate
       ++m->yaw_count;
     }
     if (t.shape != 2) {
-      m->up_err_deg += std::acos(std::clamp(e.up.dot(t.up), -1.0, 1.0)) * 180 / M_PI;
+      m->up_err_deg += core::AngleFromCos(e.up.dot(t.up)) * 180 / M_PI;
       ++m->up_count;
     }
   }

@@ -6,6 +6,7 @@
 #include "simhuman/control/policy/policy_controller.h"
 #include "simhuman/control/policy/walk_task.h"
 #include "simhuman/control/runner.h"
+#include "simhuman/core/geometry.h"
 #include "simhuman/core/rng.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/replay.h"
@@ -91,7 +92,7 @@ double HigherArmRaise(const mjData* d, const WalkIds& ids) {
                       d->xpos[3 * b[1] + 1] - d->xpos[3 * b[0] + 1],
                       d->xpos[3 * b[1] + 2] - d->xpos[3 * b[0] + 2]);
     if (u.norm() < 1e-6) continue;
-    raise = std::max(raise, std::acos(std::clamp(-u.z() / u.norm(), -1.0, 1.0)));
+    raise = std::max(raise, core::AngleFromCos(-u.z() / u.norm()));
   }
   return raise;
 }

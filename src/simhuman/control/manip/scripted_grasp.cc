@@ -4,6 +4,8 @@
 #include <cmath>
 #include <memory>
 
+#include "simhuman/core/geometry.h"
+
 namespace simhuman::control::manip {
 
 namespace {
@@ -69,7 +71,7 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     // the reach may take a far object higher than the default grip height
     const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> hand_rot(
         d->xmat + 9 * ix.arm.hand_body);
-    const double tilt = std::acos(std::clamp(seen.up.z(), -1.0, 1.0));
+    const double tilt = core::AngleFromCos(seen.up.z());
     if (st->step == 0) {
       st->grip_z = std::abs(p.z() - grip_z) < 0.02 ? grip_z : p.z();
       st->hand_rot = hand_rot;

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <optional>
 
+#include "simhuman/core/geometry.h"
+
 namespace simhuman::control::manip {
 
 const char* TabletopStageName(TabletopStage s) {
@@ -712,7 +714,7 @@ TabletopResult Run::Place(ArmTracker& tr) {
   const double drop = o_.carry_clearance_m + 0.04;
   if (auto f = Lower(tr, drop)) return *f;
   release_gap_m_ = GapAboveTarget();
-  release_tilt_deg_ = std::acos(std::clamp(Rot(d_, g_.object_body)(2, 2), -1.0, 1.0)) * 180 / M_PI;
+  release_tilt_deg_ = core::AngleFromCos(Rot(d_, g_.object_body)(2, 2)) * 180 / M_PI;
   // release and retract
   if (!LetGo(tr)) return Fail(TabletopStage::kRelease, StepError());
   // settle
