@@ -49,9 +49,10 @@ struct Args {
   uint64_t seed = 1;
   int from = 0, to = 40;
   std::string shape, kind, sheet_dir;
-  bool raise = false;    // the hand rises over the table's edge first (SeatedRaiseViaRad)
-  double reshape = -1;   // ArmMotionOptions::reshape_fraction
-  int planner_seed = 0;  // > 0: PlannerOptions::seed of every arm plan
+  bool raise = false;       // the hand rises over the table's edge first (SeatedRaiseViaRad)
+  double reshape = -1;      // ArmMotionOptions::reshape_fraction
+  double raise_tail_m = 0;  // TabletopOptions::raise_tail_m
+  int planner_seed = 0;     // > 0: PlannerOptions::seed of every arm plan
   double frame_s = 0.2;
   double cam_distance_m = 0.55, cam_azimuth_deg = 150, cam_elevation_deg = -25;
   double t_from = 0, t_to = 1e9;                           ///< frames only in this window (s)
@@ -110,6 +111,7 @@ Args Parse(int argc, char** argv) {
                                                   {"--lower-speed", &a.lower_speed},
                                                   {"--release-s", &a.release_s},
                                                   {"--reshape", &a.reshape},
+                                                  {"--raise-tail", &a.raise_tail_m},
 
                                                   {"--hold-rate", &a.hold_rate},
                                                   {"--behind-margin", &a.margin},
@@ -343,6 +345,7 @@ int main(int argc, char** argv) {
     if (a.path_speed > 0) pipeline.motion.mean_path_speed = a.path_speed;
     if (a.raise) pipeline.raise_via_rad = sh::control::manip::SeatedRaiseViaRad();
     if (a.reshape >= 0) pipeline.motion.reshape_fraction = a.reshape;
+    pipeline.raise_tail_m = a.raise_tail_m;
     if (a.planner_seed > 0) pipeline.motion.planner.seed = static_cast<uint64_t>(a.planner_seed);
     sh::control::manip::ScriptedGraspOptions so;
     so.hold_rotation = a.hold_rotation;
@@ -411,13 +414,31 @@ int main(int argc, char** argv) {
       };
     }
     // the reach's directness: the palm's path until it first comes within 12 cm of the object,
-    // against the straight line between its ends
-    auto reach = std::make_shared<std::array<double, 4>>();  // path, start x y z (-1: done)
+    // against the straight line between its ends; and how far the elbow swings out to the side
+    // on the way (along the chest's sideways axis, outward from the shoulder: the largest offset,
+    // and the largest angle of the upper arm from hanging, seen from the front: 90 degrees is
+    // the arm held out level to the side)
+    // path, start x y z, elbow out, side angle, out now
+    auto reach = std::make_shared<std::array<double, 7>>();
     (*reach)[1] = std::nan("");
-    hook = [inner = hook, reach, site = ix->arm.palm_site, ob = g.object_body](const mjData* d) {
+    (*reach)[4] = -1;
+    (*reach)[5] = -180;
+    const int upper = m->dof_bodyid[ix->arm.dof[0]];
+    const int lower = m->dof_bodyid[ix->arm.dof[3]];
+    const int chest = m->body_parentid[upper];
+    const double outward = ix->arm.right ? -1.0 : 1.0;
+    hook = [inner = hook, reach, site = ix->arm.palm_site, ob = g.object_body, upper, lower, chest,
+            outward](const mjData* d) {
       if (inner) inner(d);
       auto& rc = *reach;
       if (rc[0] < 0) return;
+      const Eigen::Vector3d e =
+          Eigen::Vector3d(d->xpos + 3 * lower) - Eigen::Vector3d(d->xpos + 3 * upper);
+      const Eigen::Vector3d side(d->xmat[9 * chest + 1], d->xmat[9 * chest + 4],
+                                 d->xmat[9 * chest + 7]);
+      rc[6] = outward * e.dot(side);
+      rc[4] = std::max(rc[4], rc[6]);
+      rc[5] = std::max(rc[5], std::atan2(rc[6], -e.z()) * 180 / M_PI);
       const Eigen::Vector3d p(d->site_xpos + 3 * site);
       static thread_local Eigen::Vector3d last;
       if (std::isnan(rc[1])) {
@@ -428,8 +449,10 @@ int main(int argc, char** argv) {
       last = p;
       if ((p - Eigen::Vector3d(d->xipos + 3 * ob)).norm() < 0.12) {
         const double straight = (p - Eigen::Vector3d(rc[1], rc[2], rc[3])).norm();
-        std::printf("  reach path %.2f m, straight %.2f m, ratio %.2f\n", rc[0], straight,
-                    rc[0] / std::max(straight, 1e-3));
+        std::printf(
+            "  reach path %.2f m, straight %.2f m, ratio %.2f, elbow out %.2f m, side angle %.0f "
+            "deg, out at the end %.2f m\n",
+            rc[0], straight, rc[0] / std::max(straight, 1e-3), rc[4], rc[5], rc[6]);
         rc[0] = -1;
       }
     };
@@ -463,12 +486,13 @@ int main(int argc, char** argv) {
                   tt.x(), tt.y(), tt.z());
     }
     const Eigen::Vector3d at = sh::world::WorldToTable(g.planned_pos);
-    std::printf("ep %3d %-5s %-8s w=%.3f h=%.3f m=%.2f at (%5.2f %5.2f) gap %5.3f  %s\n", i,
+    std::printf("ep %3d %-5s %-8s w=%.3f h=%.3f m=%.2f at (%5.2f %5.2f) gap %5.3f  %s [%s]\n", i,
                 kind.c_str(), ShapeName(g.shape), 2 * g.half_width_m, g.height_m,
                 m->body_mass[g.object_body], at.x(), at.y(), res.release_gap_m,
                 (std::string(sh::control::manip::TabletopStageName(res.failed_stage)) + ": " +
                  res.end_reason)
-                    .c_str());
+                    .c_str(),
+                res.reach_route.c_str());
     std::fflush(stdout);
     if (!frames.empty()) {
       const std::string path = a.sheet_dir + "/ep" + std::to_string(i) + ".png";

@@ -65,6 +65,22 @@ int Contacts(const mjModel* m, mjData* s, const ArmChain& arm, const Eigen::Vect
                         o.approach_body);
 }
 
+// the palm's positional Jacobian over the arm's joints at arm angles `q` (the rest of the body
+// as in `s`)
+Eigen::MatrixXd PalmJacobian(const mjModel* m, mjData* s, const ArmChain& arm,
+                             const Eigen::VectorXd& q) {
+  arm.Set(s, q);
+  mj_kinematics(m, s);
+  mj_comPos(m, s);
+  std::vector<mjtNum> jacp(3 * m->nv);
+  mj_jacSite(m, s, jacp.data(), nullptr, arm.palm_site);
+  Eigen::MatrixXd J(3, ArmChain::kDofs);
+  for (int i = 0; i < ArmChain::kDofs; ++i) {
+    for (int k = 0; k < 3; ++k) J(k, i) = jacp[k * m->nv + arm.dof[i]];
+  }
+  return J;
+}
+
 struct Candidate {
   Eigen::VectorXd q;
   int goal;
@@ -201,15 +217,7 @@ core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, m
   JointPath path = plan->path;
   const Candidate& reached = free[plan->goal_index];
   // the final part arrives along the palm's approach direction
-  arm.Set(s, reached.q);
-  mj_kinematics(m, s);
-  mj_comPos(m, s);
-  std::vector<mjtNum> jacp(3 * m->nv);
-  mj_jacSite(m, s, jacp.data(), nullptr, arm.palm_site);
-  Eigen::MatrixXd J(3, ArmChain::kDofs);
-  for (int i = 0; i < ArmChain::kDofs; ++i) {
-    for (int k = 0; k < 3; ++k) J(k, i) = jacp[k * m->nv + arm.dof[i]];
-  }
+  const Eigen::MatrixXd J = PalmJacobian(m, s, arm, reached.q);
   const Eigen::Vector3d approach = reached.goal < static_cast<int>(approach_dirs.size())
                                        ? approach_dirs[reached.goal]
                                        : Eigen::Vector3d::Zero();
@@ -294,6 +302,96 @@ core::StatusOr<ArmMotion> PlanArmThrough(const mjModel* m, const mjData* d, mjDa
   core::StatusOr<Trajectory> traj = Retime(path, ArmRetime(m, o));
   if (!traj.ok()) return core::Annotate(traj.status(), "plan failure: retiming");
   return ArmMotion{*std::move(traj), -1, from, 0, Seconds(t0)};
+}
+
+JointPath PathTail(const mjModel* m, const mjData* d, mjData* s, const ArmChain& arm,
+                   const JointPath& path, double palm_m, double step_rad) {
+  if (path.size() < 2 || step_rad <= 0) return path;
+  mju_copy(s->qpos, d->qpos, m->nq);
+  auto palm = [&](const Eigen::VectorXd& q) {
+    arm.Set(s, q);
+    mj_kinematics(m, s);
+    return Eigen::Vector3d(s->site_xpos + 3 * arm.palm_site);
+  };
+  const std::vector<double> cum = CumulativeLengths(path);
+  const double length = cum.back();
+  const Eigen::Vector3d end = palm(path.waypoints.back());
+  double cut = -1;
+  for (double at = length - step_rad; at > 0; at -= step_rad) {
+    if ((palm(PointAt(path, at, &cum)) - end).norm() >= palm_m) {
+      cut = at;
+      break;
+    }
+  }
+  if (cut <= 0) return path;
+  JointPath tail;
+  tail.waypoints.push_back(PointAt(path, cut, &cum));
+  for (int i = 0; i < path.size(); ++i) {
+    if (cum[i] > cut + 1e-9) tail.waypoints.push_back(path.waypoints[i]);
+  }
+  return tail;
+}
+
+namespace {
+
+// PlanArmOnto with the clearance of `o` as given
+core::StatusOr<ArmMotion> PlanArmOntoOnce(const mjModel* m, const mjData* d, mjData* s,
+                                          const ArmChain& arm, const JointPath& tail,
+                                          const ArmMotionOptions& o) {
+  SH_RETURN_IF_ERROR(o.planner.Validate());
+  if (tail.size() < 1) return absl::InvalidArgumentError("plan failure: an empty tail to join");
+  const auto t0 = std::chrono::steady_clock::now();
+  mju_copy(s->qpos, d->qpos, m->nq);
+  const Carried carried = Carried::From(m, d, arm, o.carried_body);
+  const ArmCollider collider(m, arm, carried.body);
+  const ValidityFn valid = [&](const Eigen::VectorXd& q) {
+    return Contacts(m, s, arm, q, o, carried, collider) == 0;
+  };
+  if (!valid(tail.waypoints.front()) || !PathValid(tail, valid, o.planner.resolution_rad)) {
+    return absl::FailedPreconditionError("plan failure: the tail is in collision");
+  }
+  Eigen::VectorXd lo(ArmChain::kDofs), hi(ArmChain::kDofs);
+  for (int i = 0; i < ArmChain::kDofs; ++i) {
+    lo[i] = arm.lo[i];
+    hi[i] = arm.hi[i];
+  }
+  PlannerOptions po = o.planner;
+  if (po.start_escape_rad <= 0) po.start_escape_rad = 0.05;
+  core::StatusOr<PlanResult> plan =
+      PlanJointPath(ArmStart(arm, d), {tail.waypoints.front()}, lo, hi, valid, po);
+  if (!plan.ok()) return core::Annotate(plan.status(), "plan failure");
+  JointPath path = plan->path;
+  for (int i = 1; i < tail.size(); ++i) path.waypoints.push_back(tail.waypoints[i]);
+  const Eigen::VectorXd goal = path.waypoints.back();
+  RetimeOptions ro = ArmRetime(m, o);
+  if (o.terminal_palm_speed_mps > 0 && path.Length() > 1e-6) {
+    core::StatusOr<double> v = PathSpeedForPalmSpeed(PalmJacobian(m, s, arm, goal),
+                                                     EndDirection(path), o.terminal_palm_speed_mps);
+    if (v.ok()) ro.terminal_speed = std::min(*v, o.max_joint_speed);
+  }
+  if (path.Length() < 1e-6) path.waypoints.push_back(path.waypoints.back());
+  core::StatusOr<Trajectory> traj = Retime(path, ro);
+  if (!traj.ok()) return core::Annotate(traj.status(), "plan failure: retiming");
+  return ArmMotion{*std::move(traj), -1, goal, 0, Seconds(t0)};
+}
+
+}  // namespace
+
+core::StatusOr<ArmMotion> PlanArmOnto(const mjModel* m, const mjData* d, mjData* s,
+                                      const ArmChain& arm, const JointPath& tail,
+                                      const ArmMotionOptions& o) {
+  core::StatusOr<ArmMotion> r = PlanArmOntoOnce(m, d, s, arm, tail, o);
+  if (r.ok() || o.object_clearance_m <= 0 ||
+      !(absl::IsFailedPrecondition(r.status()) || absl::IsNotFound(r.status()))) {
+    return r;
+  }
+  // the tail was planned in another state (the objects may have moved a little since): one that
+  // only avoids touching them
+  ArmMotionOptions touching = o;
+  touching.object_clearance_m = 0;
+  core::StatusOr<ArmMotion> closer = PlanArmOntoOnce(m, d, s, arm, tail, touching);
+  if (closer.ok()) closer->clearance_kept = false;
+  return closer;
 }
 
 core::StatusOr<ArmTracker> ArmTracker::Create(const mjModel* m, const ArmChain& arm,

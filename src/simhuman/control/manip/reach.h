@@ -94,6 +94,26 @@ core::StatusOr<ArmMotion> PlanArmThrough(const mjModel* m, const mjData* d, mjDa
                                          const std::vector<Eigen::VectorXd>& vias,
                                          const ArmMotionOptions& options = {});
 
+/// The last part of `path` from where the palm (`arm`'s palm site) is `palm_m` in a straight
+/// line from where it ends (the path searched back from its end every `step_rad` of arc
+/// length), the body otherwise as in `d`; the whole path when the palm is nowhere that far.
+/// `scratch` is overwritten.
+JointPath PathTail(const mjModel* m, const mjData* d, mjData* scratch, const ArmChain& arm,
+                   const JointPath& path, double palm_m, double step_rad = 0.01);
+
+/// Plans the arm from its pose in `d` to the start of `tail` (the last part of a path planned
+/// from elsewhere, e.g. PathTail of a reach planned from the hanging arm), searched as
+/// PlanArmMotion's, then along `tail` to its end; retimed as one path, arriving with the
+/// terminal palm speed of `options`. A hand raised in front of the shoulder then arrives as the
+/// reach from the hanging arm would have. As PlanArmMotion, when no path keeps
+/// `options.object_clearance_m` it plans one that only avoids touching (clearance_kept false).
+/// Errors: InvalidArgument for an empty tail or bad options, FailedPrecondition "plan failure: the
+/// tail is in collision", NotFound "plan failure: no collision-free path ..." (the planner's
+/// message).
+core::StatusOr<ArmMotion> PlanArmOnto(const mjModel* m, const mjData* d, mjData* scratch,
+                                      const ArmChain& arm, const JointPath& tail,
+                                      const ArmMotionOptions& options = {});
+
 /// Tracks an arm trajectory through the arm's position servos: each physics step, the desired
 /// acceleration (JointTracker: feed-forward plus PID) becomes joint torques by inverse dynamics,
 /// and the servos are given the targets that produce those torques (ctrl = q + tau / kp; the

@@ -186,6 +186,80 @@ TEST(ReachTest, TheHangingHandRisesOverTheTableEdgeThroughTheRaiseVias) {
   mj_deleteData(s);
 }
 
+TEST(ReachTest, TheRaisedHandJoinsTheLastPartOfAReachFromTheHangingArmIntegration) {
+  auto w = TableScene(Eigen::Vector3d(0.05, 0.2, 0));
+  const mjModel* m = w->model();
+  mjData* d = w->data();
+  const GraspIndex gi = OpenTheHand(*w);
+  const ArmChain& arm = gi.arm;
+  for (int k = 0; k < kGraspDofs; ++k) d->ctrl[gi.actuator[k]] = d->qpos[gi.qpos[k]];
+  for (int k = 0; k < 60; ++k) mj_step(m, d);
+  mjData* s = mj_makeData(m);
+  // the reach planned from the hanging arm, and its part from 20 cm out
+  const Eigen::Vector3d centre = world::TableToWorld(Eigen::Vector3d(0.05, 0.2, 0.055));
+  const std::vector<PalmPose> goals = Around(centre, 0.08);
+  std::vector<Eigen::Vector3d> approach;
+  for (const PalmPose& g : goals) approach.push_back(g.rot.col(1));
+  ArmMotionOptions o;  // the can is what the hand goes for, as in the pipeline
+  o.approach_body = mj_name2id(m, mjOBJ_BODY, world::ObjectBodyName("cylinder002").c_str());
+  auto reach = PlanArmMotion(m, d, s, arm, goals, approach, o);
+  ASSERT_TRUE(reach.ok()) << reach.status();
+  const JointPath& whole = reach->trajectory.path();
+  const JointPath tail = PathTail(m, d, s, arm, whole, 0.2);
+  auto palm_at = [&](const Eigen::VectorXd& q) {
+    arm.Set(s, q);
+    mj_kinematics(m, s);
+    return Eigen::Vector3d(s->site_xpos + 3 * arm.palm_site);
+  };
+  const Eigen::Vector3d end = palm_at(whole.waypoints.back());
+  ASSERT_GE(tail.size(), 2);
+  EXPECT_NEAR((palm_at(tail.waypoints.front()) - end).norm(), 0.2, 0.01);
+  EXPECT_LT(tail.Length(), whole.Length());
+  EXPECT_EQ(tail.waypoints.back(), whole.waypoints.back());
+  EXPECT_EQ(PathTail(m, d, s, arm, whole, 5.0).size(), whole.size()) << "nowhere 5 m out";
+  // the hand raised over the board's edge, then onto that part and along it
+  std::vector<Eigen::VectorXd> vias;
+  for (const std::vector<double>& v : SeatedRaiseViaRad())
+    vias.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<int>(v.size())));
+  arm.Set(d, arm.Clamp(vias.back()));
+  mj_forward(m, d);
+  auto onto = PlanArmOnto(m, d, s, arm, tail, o);
+  ASSERT_TRUE(onto.ok()) << onto.status();
+  const Trajectory& t = onto->trajectory;
+  EXPECT_LT((t.Sample(0).q - arm.Clamp(vias.back())).norm(), 1e-6);
+  const JointPath& joined = t.path();
+  ASSERT_GE(joined.size(), tail.size());
+  for (int i = 0; i < tail.size(); ++i) {
+    EXPECT_EQ(joined.waypoints[joined.size() - tail.size() + i], tail.waypoints[i]) << i;
+  }
+  // arriving with DASH's terminal palm speed
+  const Trajectory::Point last = t.Sample(t.duration_s());
+  arm.Set(s, last.q);
+  mj_kinematics(m, s);
+  mj_comPos(m, s);
+  std::vector<mjtNum> jacp(3 * m->nv);
+  mj_jacSite(m, s, jacp.data(), nullptr, arm.palm_site);
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (int i = 0; i < ArmChain::kDofs; ++i) {
+    for (int k = 0; k < 3; ++k) v[k] += jacp[k * m->nv + arm.dof[i]] * last.qdot[i];
+  }
+  EXPECT_NEAR(v.norm(), 0.4, 0.05);
+  // an empty part, and a part through the board, are refused by name
+  auto empty = PlanArmOnto(m, d, s, arm, JointPath{}, {});
+  ASSERT_FALSE(empty.ok());
+  EXPECT_NE(empty.status().message().find("empty tail"), std::string::npos) << empty.status();
+  Eigen::VectorXd into = arm.Clamp(vias.back());
+  into[1] = 1.2;
+  into[3] = 0.3;
+  JointPath blocked_tail;
+  blocked_tail.waypoints = {into, tail.waypoints.back()};
+  auto blocked = PlanArmOnto(m, d, s, arm, blocked_tail, o);
+  ASSERT_FALSE(blocked.ok());
+  EXPECT_NE(blocked.status().message().find("the tail is in collision"), std::string::npos)
+      << blocked.status();
+  mj_deleteData(s);
+}
+
 // Holding the arm reached out over the table while a load the inverse dynamics does not know
 // about comes on at once (30 N, an object of 3 kg, 6 cm out of the palm, as the table stops
 // bearing it): the largest sag of the forearm and wrist joints in the next 0.5 s.

@@ -1,7 +1,5 @@
 #include "simhuman/control/manip/tabletop_pipeline.h"
 
-#include <time.h>
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
@@ -13,49 +11,15 @@
 
 namespace simhuman::control::manip {
 
-const char* TabletopStageName(TabletopStage s) {
-  switch (s) {
-    case TabletopStage::kReach:
-      return "reach";
-    case TabletopStage::kGrasp:
-      return "grasp";
-    case TabletopStage::kLift:
-      return "lift";
-    case TabletopStage::kTransport:
-      return "transport";
-    case TabletopStage::kPlace:
-      return "place";
-    case TabletopStage::kRelease:
-      return "release";
-    case TabletopStage::kSettle:
-      return "settle";
-    case TabletopStage::kDone:
-      return "done";
-  }
-  return "?";
-}
-
-std::vector<std::vector<double>> SeatedRaiseViaRad() {
-  return {
-      {0.5, 0, 0, 0.4, 0, 0, 0}, {0.5, -0.7, 0, 1.2, 0, -0.8, 0}, {0.3, -0.7, 0, 2.6, 0, -0.8, 0}};
-}
-
-double GripHeightM(const TabletopGoal& g, const TabletopOptions& o) {
-  if (g.grip_height_m >= 0) return g.grip_height_m;
-  const double z =
-      g.shape == GraspShape::kSphere ? g.half_width_m : g.height_m * o.grip_height_frac;
-  return std::clamp(z, o.grip_min_m, o.grip_max_m);
-}
-
-double PalmBehindM(const TabletopGoal& g, const TabletopOptions& o) {
-  return std::max(o.palm_behind_m, g.half_width_m - o.palm_behind_margin_m);
-}
-
-bool TopGrasp(const TabletopGoal& g, const TabletopOptions& o) {
-  return o.sphere_top_grasp && g.shape == GraspShape::kSphere;
-}
-
 namespace {
+
+// the raise vias of `o` as arm angles
+std::vector<Eigen::VectorXd> RaiseVias(const TabletopOptions& o) {
+  std::vector<Eigen::VectorXd> vias;
+  for (const std::vector<double>& v : o.raise_via_rad)
+    vias.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<int>(v.size())));
+  return vias;
+}
 
 // no arm pose or no path was found (as opposed to bad input or a broken simulation)
 bool PlanFailed(const core::StatusOr<ArmMotion>& r) {
@@ -237,6 +201,12 @@ class Run {
                  const std::function<core::StatusOr<ArmMotion>()>& plan,
                  core::StatusOr<ArmMotion>* motion);
   std::optional<TabletopResult> Reach(ArmTracker& tr);
+  // TabletopOptions::raise_tail_m: the hand raised through the raise vias, then onto the last
+  // part of `motion` (a reach planned from the hanging arm), or when no path joins it, `motion`
+  // planned anew by `replan` from the raised hand; nothing when the vias have no straight way
+  std::optional<TabletopResult> RaiseOnto(ArmTracker& tr, const ArmMotionOptions& mo,
+                                          const std::function<core::StatusOr<ArmMotion>()>& replan,
+                                          core::StatusOr<ArmMotion>* motion);
   std::optional<TabletopResult> Transport(ArmTracker& tr);
   std::optional<TabletopResult> GraspAndLift(ArmTracker& tr, const GraspPolicyFn& policy);
   bool LetGo(ArmTracker& tr);
@@ -251,6 +221,7 @@ class Run {
   // the place policy's corrections for the next segment (none without a policy)
   PlaceAdjust AskPlacePolicy(double lowered_frac);
   std::optional<std::string> ReadyForRetry(ArmTracker& tr);
+  static constexpr double kTailDriftM = 0.01;   // RaiseOnto: the tail's allowance for drift
   static constexpr double kRetrySettleS = 0.5;  // the object comes to rest before the next look
 
   world::SimWorld& w_;
@@ -273,6 +244,7 @@ class Run {
   int lean_ = -1;                 // the index into o_.lean_deg the trunk last leaned to, -1 upright
   int twist_act_ = -1;            // the trunk's turn about the spine (abdomen_z), -1 without one
   Eigen::VectorXd raised_from_;   // the hanging arm's angles before the hand rose (else empty)
+  std::string reach_route_;       // TabletopResult::reach_route
   std::string step_error_ = "unstable simulation";
 };
 
@@ -322,13 +294,13 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   for (int k = 0; k < 60; ++k) {
     if (!Step([&] { tr.Hold(still, d_); })) return Fail(TabletopStage::kReach, StepError());
   }
-  if (!o_.raise_via_rad.empty() && d_->site_xpos[3 * ix_.arm.palm_site + 2] < g_.planned_pos.z()) {
-    std::vector<Eigen::VectorXd> vias;
-    for (const std::vector<double>& v : o_.raise_via_rad)
-      vias.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<int>(v.size())));
+  reach_route_ = "hanging";
+  const bool low_hand = d_->site_xpos[3 * ix_.arm.palm_site + 2] < g_.planned_pos.z();
+  if (!o_.raise_via_rad.empty() && low_hand && o_.raise_tail_m <= 0) {
     const core::StatusOr<ArmMotion> raise =
-        PlanArmThrough(m_, d_, scratch_, ix_.arm, vias, o_.motion);
+        PlanArmThrough(m_, d_, scratch_, ix_.arm, RaiseVias(o_), o_.motion);
     if (raise.ok()) raised_from_ = still;
+    if (raise.ok()) reach_route_ = "raised";
     if (raise.ok() && !Follow(tr, raise->trajectory, 0.05))
       return Fail(TabletopStage::kReach, StepError());
   }
@@ -431,7 +403,52 @@ std::optional<TabletopResult> Run::Reach(ArmTracker& tr) {
   if (!motion.ok()) {
     return Fail(TabletopStage::kReach, std::string(motion.status().message()), true);
   }
+  if (!o_.raise_via_rad.empty() && low_hand && o_.raise_tail_m > 0) {
+    mo.ik_from = still;  // for a reach planned anew from the raised hand
+    if (auto failed = RaiseOnto(tr, mo, plan_at_heights, &motion)) return failed;
+  }
   if (!Follow(tr, motion->trajectory, 0.05)) return Fail(TabletopStage::kReach, StepError());
+  return std::nullopt;
+}
+
+std::optional<TabletopResult> Run::RaiseOnto(
+    ArmTracker& tr, const ArmMotionOptions& mo,
+    const std::function<core::StatusOr<ArmMotion>()>& replan, core::StatusOr<ArmMotion>* motion) {
+  const core::StatusOr<ArmMotion> raise =
+      PlanArmThrough(m_, d_, scratch_, ix_.arm, RaiseVias(o_), mo);
+  if (!raise.ok()) return std::nullopt;  // no straight way up: the reach from the hanging arm
+  const JointPath tail =
+      PathTail(m_, d_, scratch_, ix_.arm, (*motion)->trajectory.path(), o_.raise_tail_m);
+  if (!Follow(tr, raise->trajectory, 0.05)) return Fail(TabletopStage::kReach, StepError());
+  // the clearance the reach kept (PlanArmMotion lets a reach only avoid touching when none keeps
+  // it)
+  ArmMotionOptions join = mo;
+  if (!(*motion)->clearance_kept) join.object_clearance_m = 0;
+  // to the tail's start, stopping there, then along it
+  JointPath start;
+  start.waypoints = {tail.waypoints.front()};
+  ArmMotionOptions to_start = join;
+  to_start.terminal_palm_speed_mps = 0;
+  core::StatusOr<ArmMotion> onto = PlanArmOnto(m_, d_, scratch_, ix_.arm, start, to_start);
+  if (onto.ok()) {
+    if (!Follow(tr, onto->trajectory, 0.05)) return Fail(TabletopStage::kReach, StepError());
+    // the tail was checked when it was planned; the trunk has since moved by a few mm, which a
+    // path that grazes the object within the tolerance does not allow for
+    join.contact_tolerance_m += kTailDriftM;
+    onto = PlanArmOnto(m_, d_, scratch_, ix_.arm, tail, join);
+  }
+  if (onto.ok()) {
+    onto->goal_index = (*motion)->goal_index;
+    onto->clearance_kept = (*motion)->clearance_kept;
+    *motion = std::move(onto);
+    reach_route_ = "raised-onto";
+    return std::nullopt;
+  }
+  // no way onto it from the raised hand: a reach planned from there
+  reach_route_ = "raised-replanned";
+  *motion = replan();
+  if (!motion->ok())
+    return Fail(TabletopStage::kReach, std::string(motion->status().message()), true);
   return std::nullopt;
 }
 
@@ -614,6 +631,7 @@ TabletopResult Run::Finish(TabletopResult r) const {
   r.final_pos = ObjectCom();
   r.sim_steps = steps_;
   r.grasp_attempts = attempts_;
+  r.reach_route = reach_route_;
   r.release_tilt_deg = release_tilt_deg_;
   r.release_gap_m = release_gap_m_;
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
@@ -747,12 +765,6 @@ TabletopResult Run::Place(ArmTracker& tr) {
 
 }  // namespace
 
-double ThreadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
 TabletopResult RunTabletop(world::SimWorld& world, const GraspIndex& ix, const TabletopGoal& goal,
                            const GraspPolicyFactory& make_policy, const TabletopOptions& options,
                            const StepHook& hook, const PlacePolicyFn& place_policy) {
@@ -779,18 +791,6 @@ TabletopResult RunTabletopPlace(world::SimWorld& world, const GraspIndex& ix,
   }
   Run run(world, ix, start.goal, options, {}, place_policy);
   return run.GoFrom(start);
-}
-
-ObjectView ObserveObject(const TabletopGoal& g, const mjData* d, bool held) {
-  if (g.observe) return g.observe(d, held);
-  ObjectView v;
-  const Eigen::Matrix3d r =
-      Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * g.object_body);
-  v.centre = Eigen::Vector3d(d->xipos + 3 * g.object_body);
-  v.base = Eigen::Vector3d(d->xpos + 3 * g.object_body);
-  v.up = r.col(2);
-  v.yaw_rad = std::atan2(r(1, 0), r(0, 0));
-  return v;
 }
 
 }  // namespace simhuman::control::manip

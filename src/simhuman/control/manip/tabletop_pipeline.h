@@ -175,6 +175,11 @@ struct TabletopOptions {
   /// SeatedRaiseViaRad() looks human but measures lower (docs/BENCHMARKS.md, issue 15, session
   /// 39).
   std::vector<std::vector<double>> raise_via_rad;
+  /// With raise_via_rad: > 0, the reach is first planned from the hanging arm; the raised hand
+  /// then moves to where that reach's palm is this far (m) from its end (PathTail), stops, and
+  /// follows the rest of it (PlanArmOnto), so that it arrives as the reach from the hanging arm
+  /// would. No path onto it: the reach is planned from the raised hand, as with 0.
+  double raise_tail_m = 0;
 };
 
 /// The seated human's raise over the table's edge (TabletopOptions::raise_via_rad): the arm
@@ -204,6 +209,11 @@ struct TabletopResult {
   std::string end_reason;  ///< "success", "plan failure: ...", "grasp miss: ...", ...
   bool plan_failure = false;
   int grasp_attempts = 0;  ///< grasps begun (more than one after a miss)
+  /// How the last reach went (TabletopOptions::raise_via_rad, raise_tail_m): "hanging" (from
+  /// the hanging arm, as without the raise), "raised" (through the raise vias, planned from
+  /// there), "raised-onto" (then onto the reach planned from the hanging arm), "raised-replanned"
+  /// (no path onto it: planned from the raised hand); empty when no reach began
+  std::string reach_route;
   /// The object's tilt from upright (degrees) when the fingers began to open over its support;
   /// -1 when the run ended before
   double release_tilt_deg = -1;

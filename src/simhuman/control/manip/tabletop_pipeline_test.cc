@@ -90,6 +90,19 @@ TEST(TabletopPipelineTest, EveryStageRunsAndReportsWhereItFailedIntegration) {
   EXPECT_GT(r.sim_steps, 100);
   EXPECT_FALSE(r.end_reason.empty());
   EXPECT_EQ(r.success, r.end_reason == "success");
+  EXPECT_EQ(r.reach_route, "hanging");
+}
+
+// With the raise and raise_tail_m, the hand rises over the table's edge, then joins the reach
+// planned from the hanging arm and arrives as it would have: the box is placed
+TEST(TabletopPipelineTest, TheRaisedHandJoinsTheReachFromTheHangingArmIntegration) {
+  Scene s = BoxScene(0.06, 2.0);
+  TabletopOptions options;
+  options.raise_via_rad = SeatedRaiseViaRad();
+  options.raise_tail_m = 0.2;
+  const TabletopResult r = RunTabletop(*s.world, s.ix, s.goal, Scripted(s, options), options);
+  EXPECT_EQ(r.reach_route, "raised-onto");
+  EXPECT_TRUE(r.success) << r.end_reason;
 }
 
 // the scripted grasp picks a box up, carries it 20 cm and sets it down upright, at rest, for a
