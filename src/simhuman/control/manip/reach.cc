@@ -81,6 +81,34 @@ Eigen::MatrixXd PalmJacobian(const mjModel* m, mjData* s, const ArmChain& arm,
   return J;
 }
 
+// What a plan checks arm poses against: `d`'s state copied into the scratch `s`, the object
+// carried in the hand (o.carried_body) and the arm's collision pairs; Valid() is Contacts() == 0
+struct PoseCheck {
+  PoseCheck(const mjModel* m, const mjData* d, mjData* s, const ArmChain& arm,
+            const ArmMotionOptions& o)
+      : carried(Carried::From(m, d, arm, o.carried_body)), collider(m, arm, carried.body) {
+    mju_copy(s->qpos, d->qpos, m->nq);
+  }
+  ValidityFn Valid(const mjModel* m, mjData* s, const ArmChain& arm,
+                   const ArmMotionOptions& o) const {
+    return [this, m, s, &arm, &o](const Eigen::VectorXd& q) {
+      return Contacts(m, s, arm, q, o, carried, collider) == 0;
+    };
+  }
+  Carried carried;
+  ArmCollider collider;
+};
+
+// the arm's joint ranges as vectors
+void ArmBounds(const ArmChain& arm, Eigen::VectorXd* lo, Eigen::VectorXd* hi) {
+  lo->resize(ArmChain::kDofs);
+  hi->resize(ArmChain::kDofs);
+  for (int i = 0; i < ArmChain::kDofs; ++i) {
+    (*lo)[i] = arm.lo[i];
+    (*hi)[i] = arm.hi[i];
+  }
+}
+
 struct Candidate {
   Eigen::VectorXd q;
   int goal;
@@ -150,9 +178,9 @@ core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, m
         std::to_string(goals.size()) + " palm poses");
   }
   const auto t0 = std::chrono::steady_clock::now();
-  mju_copy(s->qpos, d->qpos, m->nq);
-  const Carried carried = Carried::From(m, d, arm, o.carried_body);
-  const ArmCollider collider(m, arm, carried.body);
+  const PoseCheck check(m, d, s, arm, o);
+  const Carried& carried = check.carried;
+  const ArmCollider& collider = check.collider;
   const Eigen::VectorXd start = ArmStart(arm, d);
   // the goals' IK starts from `seed`; the wrist's rest is straight (forearm, flexion,
   // deviation at 0), the shoulder and elbow keep where they are
@@ -177,14 +205,9 @@ core::StatusOr<ArmMotion> PlanArmMotionOnce(const mjModel* m, const mjData* d, m
         " palm poses (" + std::to_string(count.unreached) + " out of the arm's reach, " +
         std::to_string(count.colliding) + " in collision)");
   }
-  Eigen::VectorXd lo(ArmChain::kDofs), hi(ArmChain::kDofs);
-  for (int i = 0; i < ArmChain::kDofs; ++i) {
-    lo[i] = arm.lo[i];
-    hi[i] = arm.hi[i];
-  }
-  const ValidityFn valid = [&](const Eigen::VectorXd& q) {
-    return Contacts(m, s, arm, q, o, carried, collider) == 0;
-  };
+  Eigen::VectorXd lo, hi;
+  ArmBounds(arm, &lo, &hi);
+  const ValidityFn valid = check.Valid(m, s, arm, o);
   PlannerOptions po = o.planner;
   if (po.start_escape_rad <= 0) po.start_escape_rad = 0.05;  // a start resting on the table
   // DASH: the pose with the wrist nearest its rest; the planner may reach any of the best few
@@ -271,12 +294,8 @@ core::StatusOr<ArmMotion> PlanArmThrough(const mjModel* m, const mjData* d, mjDa
   SH_RETURN_IF_ERROR(o.planner.Validate());
   if (vias.empty()) return absl::InvalidArgumentError("plan failure: no arm angles to pass");
   const auto t0 = std::chrono::steady_clock::now();
-  mju_copy(s->qpos, d->qpos, m->nq);
-  const Carried carried = Carried::From(m, d, arm, o.carried_body);
-  const ArmCollider collider(m, arm, carried.body);
-  const ValidityFn valid = [&](const Eigen::VectorXd& q) {
-    return Contacts(m, s, arm, q, o, carried, collider) == 0;
-  };
+  const PoseCheck check(m, d, s, arm, o);
+  const ValidityFn valid = check.Valid(m, s, arm, o);
   Eigen::VectorXd from = ArmStart(arm, d);
   JointPath path;
   path.waypoints.push_back(from);
@@ -341,20 +360,13 @@ core::StatusOr<ArmMotion> PlanArmOntoOnce(const mjModel* m, const mjData* d, mjD
   SH_RETURN_IF_ERROR(o.planner.Validate());
   if (tail.size() < 1) return absl::InvalidArgumentError("plan failure: an empty tail to join");
   const auto t0 = std::chrono::steady_clock::now();
-  mju_copy(s->qpos, d->qpos, m->nq);
-  const Carried carried = Carried::From(m, d, arm, o.carried_body);
-  const ArmCollider collider(m, arm, carried.body);
-  const ValidityFn valid = [&](const Eigen::VectorXd& q) {
-    return Contacts(m, s, arm, q, o, carried, collider) == 0;
-  };
+  const PoseCheck check(m, d, s, arm, o);
+  const ValidityFn valid = check.Valid(m, s, arm, o);
   if (!valid(tail.waypoints.front()) || !PathValid(tail, valid, o.planner.resolution_rad)) {
     return absl::FailedPreconditionError("plan failure: the tail is in collision");
   }
-  Eigen::VectorXd lo(ArmChain::kDofs), hi(ArmChain::kDofs);
-  for (int i = 0; i < ArmChain::kDofs; ++i) {
-    lo[i] = arm.lo[i];
-    hi[i] = arm.hi[i];
-  }
+  Eigen::VectorXd lo, hi;
+  ArmBounds(arm, &lo, &hi);
   PlannerOptions po = o.planner;
   if (po.start_escape_rad <= 0) po.start_escape_rad = 0.05;
   core::StatusOr<PlanResult> plan =
