@@ -45,6 +45,13 @@ GraspIndex OpenTheHand(world::SimWorld& w) {
   return gi;
 }
 
+// the arm settles where it hangs, the hand open, as the pipeline's pre-shape leaves it
+void SettleTheHangingArm(world::SimWorld& w, const GraspIndex& gi) {
+  mjData* d = w.data();
+  for (int k = 0; k < kGraspDofs; ++k) d->ctrl[gi.actuator[k]] = d->qpos[gi.qpos[k]];
+  for (int k = 0; k < 60; ++k) mj_step(w.model(), d);
+}
+
 std::vector<PalmPose> Around(const Eigen::Vector3d& centre, double standoff) {
   std::vector<PalmPose> out;
   for (int k = 0; k < 16; ++k)
@@ -142,9 +149,7 @@ TEST(ReachTest, TheHangingHandRisesOverTheTableEdgeThroughTheRaiseVias) {
   mjData* d = w->data();
   const GraspIndex gi = OpenTheHand(*w);
   const ArmChain& arm = gi.arm;
-  // the arm settles where it hangs, the hand open, as the pipeline's pre-shape leaves it
-  for (int k = 0; k < kGraspDofs; ++k) d->ctrl[gi.actuator[k]] = d->qpos[gi.qpos[k]];
-  for (int k = 0; k < 60; ++k) mj_step(m, d);
+  SettleTheHangingArm(*w, gi);
   mjData* s = mj_makeData(m);
   const double table_top = world::TableToWorld(Eigen::Vector3d::Zero()).z();
   ASSERT_LT(d->site_xpos[3 * arm.palm_site + 2], table_top) << "the hand hangs below the board";
@@ -192,8 +197,7 @@ TEST(ReachTest, TheRaisedHandJoinsTheLastPartOfAReachFromTheHangingArmIntegratio
   mjData* d = w->data();
   const GraspIndex gi = OpenTheHand(*w);
   const ArmChain& arm = gi.arm;
-  for (int k = 0; k < kGraspDofs; ++k) d->ctrl[gi.actuator[k]] = d->qpos[gi.qpos[k]];
-  for (int k = 0; k < 60; ++k) mj_step(m, d);
+  SettleTheHangingArm(*w, gi);
   mjData* s = mj_makeData(m);
   // the reach planned from the hanging arm, and its part from 20 cm out
   const Eigen::Vector3d centre = world::TableToWorld(Eigen::Vector3d(0.05, 0.2, 0.055));
