@@ -49,10 +49,10 @@ struct Args {
   uint64_t seed = 1;
   int from = 0, to = 40;
   std::string shape, kind, sheet_dir;
-  bool raise = false;       // the hand rises over the table's edge first (SeatedRaiseViaRad)
-  double reshape = -1;      // ArmMotionOptions::reshape_fraction
-  double raise_tail_m = 0;  // TabletopOptions::raise_tail_m
-  int planner_seed = 0;     // > 0: PlannerOptions::seed of every arm plan
+  int raise = -1;            // 0: no raise over the table's edge; 1: SeatedRaiseViaRad (default)
+  double reshape = -1;       // ArmMotionOptions::reshape_fraction
+  double raise_tail_m = -1;  // >= 0: TabletopOptions::raise_tail_m
+  int planner_seed = 0;      // > 0: PlannerOptions::seed of every arm plan
   double frame_s = 0.2;
   double cam_distance_m = 0.55, cam_azimuth_deg = 150, cam_elevation_deg = -25;
   double t_from = 0, t_to = 1e9;                           ///< frames only in this window (s)
@@ -124,22 +124,18 @@ Args Parse(int argc, char** argv) {
                                             {"--to", &a.to},
                                             {"--shortcuts", &a.shortcuts},
                                             {"--planner-seed", &a.planner_seed},
+                                            {"--raise", &a.raise},
                                             {"--approach-steps", &a.approach_steps},
                                             {"--thumb-delay", &a.thumb_delay},
                                             {"--grasp-steps", &a.grasp_steps},
                                             {"--grasp-attempts", &a.grasp_attempts},
                                             {"--guard-steps", &a.guard_steps}};
-  const std::map<std::string, bool*> bools = {{"--trace-contacts", &a.trace_contacts},
-                                              {"--trace-arm", &a.trace_arm},
-                                              {"--hold-rotation", &a.hold_rotation},
-                                              {"--press-closing", &a.press_closing},
-                                              {"--carried-check", &a.carried_check},
-                                              {"--top-grasp", &a.top_grasp},
-                                              {"--no-spheres", &a.no_spheres},
-                                              {"--touch-gap0", &a.touch_gap0},
-                                              {"--hold-behind", &a.hold_behind},
-                                              {"--profile", &a.profile},
-                                              {"--raise", &a.raise}};
+  const std::map<std::string, bool*> bools = {
+      {"--trace-contacts", &a.trace_contacts}, {"--trace-arm", &a.trace_arm},
+      {"--hold-rotation", &a.hold_rotation},   {"--press-closing", &a.press_closing},
+      {"--carried-check", &a.carried_check},   {"--top-grasp", &a.top_grasp},
+      {"--no-spheres", &a.no_spheres},         {"--touch-gap0", &a.touch_gap0},
+      {"--hold-behind", &a.hold_behind},       {"--profile", &a.profile}};
   const std::map<std::string, std::string*> strings = {
       {"--shape", &a.shape},         {"--kind", &a.kind},     {"--sheet-dir", &a.sheet_dir},
       {"--zero-shot", &a.zero_shot}, {"--vision", &a.vision}, {"--place-policy", &a.place},
@@ -343,9 +339,9 @@ int main(int argc, char** argv) {
     if (a.terminal_speed >= 0) pipeline.motion.terminal_palm_speed_mps = a.terminal_speed;
     if (a.min_inertia >= 0) pipeline.tracker.min_inertia = a.min_inertia;
     if (a.path_speed > 0) pipeline.motion.mean_path_speed = a.path_speed;
-    if (a.raise) pipeline.raise_via_rad = sh::control::manip::SeatedRaiseViaRad();
+    if (a.raise == 0) pipeline.raise_via_rad.clear();
     if (a.reshape >= 0) pipeline.motion.reshape_fraction = a.reshape;
-    pipeline.raise_tail_m = a.raise_tail_m;
+    if (a.raise_tail_m >= 0) pipeline.raise_tail_m = a.raise_tail_m;
     if (a.planner_seed > 0) pipeline.motion.planner.seed = static_cast<uint64_t>(a.planner_seed);
     sh::control::manip::ScriptedGraspOptions so;
     so.hold_rotation = a.hold_rotation;

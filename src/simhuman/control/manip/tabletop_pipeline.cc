@@ -429,6 +429,9 @@ std::optional<TabletopResult> Run::RaiseOnto(
   start.waypoints = {tail.waypoints.front()};
   ArmMotionOptions to_start = join;
   to_start.terminal_palm_speed_mps = 0;
+  // the hand stops short of the object: it keeps clear of it too (exempt, it could topple it)
+  to_start.approach_body = -1;
+  to_start.object_clearance_m = mo.object_clearance_m;
   core::StatusOr<ArmMotion> onto = PlanArmOnto(m_, d_, scratch_, ix_.arm, start, to_start);
   if (onto.ok()) {
     if (!Follow(tr, onto->trajectory, 0.05)) return Fail(TabletopStage::kReach, StepError());

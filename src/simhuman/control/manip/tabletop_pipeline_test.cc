@@ -82,7 +82,8 @@ GraspPolicyFactory Scripted(const Scene& s, const TabletopOptions& options,
 
 TEST(TabletopPipelineTest, EveryStageRunsAndReportsWhereItFailedIntegration) {
   Scene s = BoxScene(0.06, 1.0);
-  const TabletopOptions options;
+  TabletopOptions options;
+  options.raise_via_rad.clear();  // the reach from the hanging arm
   TabletopResult r = RunTabletop(*s.world, s.ix, s.goal, Scripted(s, options), options);
   std::printf("result: %s (stage %s) steps %d wall %.2f s, final %.3f %.3f %.3f\n",
               r.end_reason.c_str(), TabletopStageName(r.failed_stage), r.sim_steps, r.wall_s,
@@ -93,16 +94,25 @@ TEST(TabletopPipelineTest, EveryStageRunsAndReportsWhereItFailedIntegration) {
   EXPECT_EQ(r.reach_route, "hanging");
 }
 
-// With the raise and raise_tail_m, the hand rises over the table's edge, then joins the reach
-// planned from the hanging arm and arrives as it would have: the box is placed
+// By default the hand rises over the table's edge, then joins the reach planned from the
+// hanging arm and arrives as it would have: the box is placed, and it stays where it stood
+// until the hand is near (the way to the join keeps clear of it)
 TEST(TabletopPipelineTest, TheRaisedHandJoinsTheReachFromTheHangingArmIntegration) {
   Scene s = BoxScene(0.06, 2.0);
-  TabletopOptions options;
-  options.raise_via_rad = SeatedRaiseViaRad();
-  options.raise_tail_m = 0.2;
-  const TabletopResult r = RunTabletop(*s.world, s.ix, s.goal, Scripted(s, options), options);
+  const TabletopOptions options;
+  const Eigen::Vector3d box0(s.world->data()->xpos + 3 * s.goal.object_body);
+  double moved_while_far = 0, nearest = 1e9;
+  const StepHook hook = [&](const mjData* d) {
+    const Eigen::Vector3d box(d->xpos + 3 * s.goal.object_body);
+    const Eigen::Vector3d palm(d->site_xpos + 3 * s.ix.arm.palm_site);
+    nearest = std::min(nearest, (palm - box).head<2>().norm());
+    if (nearest > 0.1) moved_while_far = std::max(moved_while_far, (box - box0).norm());
+  };
+  const TabletopResult r = RunTabletop(*s.world, s.ix, s.goal, Scripted(s, options), options, hook);
   EXPECT_EQ(r.reach_route, "raised-onto");
   EXPECT_TRUE(r.success) << r.end_reason;
+  EXPECT_LT(nearest, 0.1);
+  EXPECT_LT(moved_while_far, 0.002);
 }
 
 // the scripted grasp picks a box up, carries it 20 cm and sets it down upright, at rest, for a
