@@ -339,6 +339,7 @@ int main(int argc, char** argv) {
     if (a.terminal_speed >= 0) pipeline.motion.terminal_palm_speed_mps = a.terminal_speed;
     if (a.min_inertia >= 0) pipeline.tracker.min_inertia = a.min_inertia;
     if (a.path_speed > 0) pipeline.motion.mean_path_speed = a.path_speed;
+    if (a.raise == 1) pipeline.raise_via_rad = sh::control::manip::SeatedRaiseViaRad();
     if (a.raise == 0) pipeline.raise_via_rad.clear();
     if (a.reshape >= 0) pipeline.motion.reshape_fraction = a.reshape;
     if (a.raise_tail_m >= 0) pipeline.raise_tail_m = a.raise_tail_m;

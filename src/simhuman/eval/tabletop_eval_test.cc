@@ -156,6 +156,7 @@ control::manip::TabletopResult RunSuiteEpisode(
 // keeps clear of it too.
 TEST(TabletopEvalTest, TheRaisedHandKeepsClearOfTheObjectOnItsWayToTheJoinIntegration) {
   control::manip::TabletopOptions o;
+  o.raise_via_rad = control::manip::SeatedRaiseViaRad();
   o.motion.planner.seed = 2;
   o.raise_tail_m = 0.1;
   const control::manip::TabletopResult r = RunSuiteEpisode(14, "place", o);
@@ -169,12 +170,10 @@ TEST(TabletopEvalTest, TheRaisedHandKeepsClearOfTheObjectOnItsWayToTheJoinIntegr
 // or the box's load kept in the tracker's integral with the arm settling after each alignment
 // (the wrist no longer sags on the way down). The grasp is the one of then (session 36): the
 // tilt guard and the thumb rule of session 40 hold this box a little differently, and the
-// straightened descent then tips it at the place. So is the reach (from the hanging arm: the
-// raised reach of session 43 takes this box a little differently).
+// straightened descent then tips it at the place.
 TEST(TabletopEvalTest, TheDescentKeepsAnObjectUprightInTheHandIntegration) {
   auto run = [](double segment_m, bool keep_load) {
     control::manip::TabletopOptions o;
-    o.raise_via_rad.clear();
     o.lower_segment_m = segment_m;
     o.keep_load_integral = keep_load;
     if (!keep_load) o.align_settle_s = 0;
@@ -263,17 +262,13 @@ TEST(TabletopEvalTest, TheScriptedGraspBringsThePalmOntoTheObjectIntegration) {
 // Grasps that pushed the object over before the hand closed (issue 15 session 40). Episode 6:
 // the palm pressing on a 2.6 kg cylinder 6.7 cm wide tipped it; the palm now backs off once the
 // object tilts. Episode 283: the thumb's base met the box's near edge before the palm and
-// pushed it over as the palm closed in; the hand now slides away from the thumb's side. Both
-// with the reach of then, from the hanging arm (the raised reach of session 43 meets box 283
-// elsewhere, and misses it).
+// pushed it over as the palm closed in; the hand now slides away from the thumb's side.
 TEST(TabletopEvalTest, TheScriptedGraspDoesNotPushTheObjectOverIntegration) {
   auto run = [](int index, const std::string& kind, double guard_rad, double thumb_step_m) {
     control::manip::ScriptedGraspOptions so;
     so.tilt_guard_rad = guard_rad;
     so.thumb_clear_step_m = thumb_step_m;
-    control::manip::TabletopOptions hanging;
-    hanging.raise_via_rad.clear();
-    return RunSuiteEpisode(index, kind, hanging, so);
+    return RunSuiteEpisode(index, kind, control::manip::TabletopOptions{}, so);
   };
   const control::manip::ScriptedGraspOptions shipped;
   ASSERT_GT(shipped.tilt_guard_rad, 0);

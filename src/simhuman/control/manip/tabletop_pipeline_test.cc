@@ -82,8 +82,7 @@ GraspPolicyFactory Scripted(const Scene& s, const TabletopOptions& options,
 
 TEST(TabletopPipelineTest, EveryStageRunsAndReportsWhereItFailedIntegration) {
   Scene s = BoxScene(0.06, 1.0);
-  TabletopOptions options;
-  options.raise_via_rad.clear();  // the reach from the hanging arm
+  const TabletopOptions options;
   TabletopResult r = RunTabletop(*s.world, s.ix, s.goal, Scripted(s, options), options);
   std::printf("result: %s (stage %s) steps %d wall %.2f s, final %.3f %.3f %.3f\n",
               r.end_reason.c_str(), TabletopStageName(r.failed_stage), r.sim_steps, r.wall_s,
@@ -94,12 +93,13 @@ TEST(TabletopPipelineTest, EveryStageRunsAndReportsWhereItFailedIntegration) {
   EXPECT_EQ(r.reach_route, "hanging");
 }
 
-// By default the hand rises over the table's edge, then joins the reach planned from the
+// With the raise, the hand rises over the table's edge, then joins the reach planned from the
 // hanging arm and arrives as it would have: the box is placed, and it stays where it stood
 // until the hand is near (the way to the join keeps clear of it)
 TEST(TabletopPipelineTest, TheRaisedHandJoinsTheReachFromTheHangingArmIntegration) {
   Scene s = BoxScene(0.06, 2.0);
-  const TabletopOptions options;
+  TabletopOptions options;
+  options.raise_via_rad = SeatedRaiseViaRad();
   const Eigen::Vector3d box0(s.world->data()->xpos + 3 * s.goal.object_body);
   double moved_while_far = 0, nearest = 1e9;
   const StepHook hook = [&](const mjData* d) {
