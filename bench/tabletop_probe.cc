@@ -49,7 +49,7 @@ struct Args {
   uint64_t seed = 1;
   int from = 0, to = 40;
   std::string shape, kind, sheet_dir;
-  int raise = -1;            // 0: no raise over the table's edge; 1: SeatedRaiseViaRad (default)
+  int raise = -1;            // 1: the raise over the table's edge (SeatedRaiseViaRad); 0: none
   double reshape = -1;       // ArmMotionOptions::reshape_fraction
   double raise_tail_m = -1;  // >= 0: TabletopOptions::raise_tail_m
   int planner_seed = 0;      // > 0: PlannerOptions::seed of every arm plan
