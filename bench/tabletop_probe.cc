@@ -50,6 +50,7 @@ struct Args {
   int from = 0, to = 40;
   std::string shape, kind, sheet_dir;
   int raise = -1;            // 1: the raise over the table's edge (SeatedRaiseViaRad); 0: none
+  int repress_steps = -1;    // >= 0: ScriptedGraspOptions::repress_steps
   double reshape = -1;       // ArmMotionOptions::reshape_fraction
   double raise_tail_m = -1;  // >= 0: TabletopOptions::raise_tail_m
   int planner_seed = 0;      // > 0: PlannerOptions::seed of every arm plan
@@ -60,7 +61,7 @@ struct Args {
   bool trace_contacts = false, trace_arm = false;
   // pipeline and scripted-grasp settings (negative or 0: the default)
   bool touch_gap0 = true, hold_behind = true;
-  double behind_tol = 0.01, push_gain = 0.15;
+  double behind_tol = 0.01, push_gain = 0.15, repress_gain = -1, repress_max = -1;
   double tilt_guard_deg = -1, tilt_backoff = -1, thumb_clear = -1;
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
@@ -117,6 +118,8 @@ Args Parse(int argc, char** argv) {
                                                   {"--behind-margin", &a.margin},
                                                   {"--behind-tol", &a.behind_tol},
                                                   {"--push-gain", &a.push_gain},
+                                                  {"--repress-gain", &a.repress_gain},
+                                                  {"--repress-max", &a.repress_max},
                                                   {"--tilt-guard-deg", &a.tilt_guard_deg},
                                                   {"--tilt-backoff", &a.tilt_backoff},
                                                   {"--thumb-clear", &a.thumb_clear}};
@@ -124,6 +127,7 @@ Args Parse(int argc, char** argv) {
                                             {"--to", &a.to},
                                             {"--shortcuts", &a.shortcuts},
                                             {"--planner-seed", &a.planner_seed},
+                                            {"--repress-steps", &a.repress_steps},
                                             {"--raise", &a.raise},
                                             {"--approach-steps", &a.approach_steps},
                                             {"--thumb-delay", &a.thumb_delay},
@@ -351,6 +355,9 @@ int main(int argc, char** argv) {
     so.hold_behind = a.hold_behind;
     so.behind_tol_m = a.behind_tol;
     so.push_gain = a.push_gain;
+    if (a.repress_gain >= 0) so.repress_gain = a.repress_gain;
+    if (a.repress_max >= 0) so.repress_max_m = a.repress_max;
+    if (a.repress_steps >= 0) so.repress_steps = a.repress_steps;
     if (a.tilt_guard_deg >= 0) so.tilt_guard_rad = a.tilt_guard_deg * M_PI / 180;
     if (a.tilt_backoff >= 0) so.tilt_backoff_m = a.tilt_backoff;
     if (a.guard_steps >= 0) so.tilt_guard_steps = a.guard_steps;

@@ -170,16 +170,19 @@ TEST(TabletopEvalTest, TheRaisedHandKeepsClearOfTheObjectOnItsWayToTheJoinIntegr
 // or the box's load kept in the tracker's integral with the arm settling after each alignment
 // (the wrist no longer sags on the way down). The grasp is the one of then (session 36): the
 // tilt guard and the thumb rule of session 40 hold this box a little differently, and the
-// straightened descent then tips it at the place.
+// straightened descent then tips it at the place. So is the reach (from the hanging arm) and
+// the palm's press (none after the touch).
 TEST(TabletopEvalTest, TheDescentKeepsAnObjectUprightInTheHandIntegration) {
   auto run = [](double segment_m, bool keep_load) {
     control::manip::TabletopOptions o;
+    o.raise_via_rad.clear();
     o.lower_segment_m = segment_m;
     o.keep_load_integral = keep_load;
     if (!keep_load) o.align_settle_s = 0;
     control::manip::ScriptedGraspOptions then;
     then.tilt_guard_rad = 0;
     then.thumb_clear_step_m = 0;
+    then.repress_gain = 0;
     return RunSuiteEpisode(79, "stack", o, then);
   };
   const control::manip::TabletopResult straightened = run(0.03, false);
@@ -257,6 +260,54 @@ TEST(TabletopEvalTest, TheScriptedGraspBringsThePalmOntoTheObjectIntegration) {
   EXPECT_TRUE(pushed.success) << pushed.end_reason;
   const control::manip::TabletopResult not_pushed = run(255, "stack", true, 0);
   EXPECT_THAT(not_pushed.end_reason, HasSubstr("no palm"));
+}
+
+// The demo scene's command "put the red box on the blue cylinder" (a 2.5 kg box 7.2 cm wide,
+// near the table's edge 22 cm left of the right shoulder): the palm touched, then the closing
+// fingers pushed it 1-1.4 cm off the box and the first grasp missed with every reach (issue 15
+// session 43). The palm now presses on after it is pushed off, and the first grasp holds.
+TEST(TabletopEvalTest, TheDemoRedBoxIsHeldAtTheFirstGraspIntegration) {
+  auto spec = world::BuiltinScene("tabletop_demo");
+  ASSERT_TRUE(spec.ok()) << spec.status();
+  auto catalog = world::BuildCatalog(*spec);
+  ASSERT_TRUE(catalog.ok()) << catalog.status();
+  auto run = [&](double repress_gain) {
+    auto w = BuildWorld(*spec, *catalog);
+    EXPECT_TRUE(w.ok()) << w.status();
+    if (!w.ok()) return control::manip::TabletopResult{};
+    plan::ContactPair grasp;
+    grasp.object = "box001";
+    grasp.part = "body";
+    grasp.joint = core::BodyJoint::kRightHand;
+    plan::ContactPair on;
+    on.object = "cylinder005";
+    on.part = "top";
+    on.subject_object = "box001";
+    on.subject_part = "body";
+    on.direction = plan::Direction::kUp;
+    plan::ContactChain chain;
+    chain.steps.resize(2);
+    chain.steps[0].pairs = {grasp};
+    chain.steps[1].pairs = {grasp, on};
+    auto goal = TabletopGoalFromPlan(chain, **w);
+    auto ix = control::manip::MakeGraspIndex(**w, 0, true);
+    EXPECT_TRUE(goal.ok() && ix.ok());
+    if (!goal.ok() || !ix.ok()) return control::manip::TabletopResult{};
+    control::manip::TabletopOptions o;
+    o.grasp_attempts = 1;
+    control::manip::ScriptedGraspOptions so;
+    so.repress_gain = repress_gain;
+    const control::manip::GraspPolicyFactory factory = [&](const control::manip::TabletopGoal& g) {
+      return control::manip::MakeScriptedGrasp((*w)->model(), (*w)->data(), *ix, g, o, so);
+    };
+    return control::manip::RunTabletop(**w, *ix, *goal, factory, o);
+  };
+  const double shipped = control::manip::ScriptedGraspOptions{}.repress_gain;
+  ASSERT_GT(shipped, 0);
+  const control::manip::TabletopResult pressed = run(shipped);
+  EXPECT_TRUE(pressed.success) << pressed.end_reason;
+  const control::manip::TabletopResult not_pressed = run(0);
+  EXPECT_THAT(not_pressed.end_reason, HasSubstr("grasp miss"));
 }
 
 // Grasps that pushed the object over before the hand closed (issue 15 session 40). Episode 6:

@@ -58,6 +58,7 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
     const bool palm = touch[0] > 0 || touch[1] > 0;
     const bool touching =
         std::any_of(touch, touch + kGraspTouchParts, [](float t) { return t > 0; });
+    const bool newly_touched = palm && !st->palm_touched;
     st->palm_touched = st->palm_touched || palm;
     if (st->closing_from < 0 && (palm || st->step >= o.approach_steps)) {
       st->closing_from = st->step;
@@ -98,9 +99,14 @@ GraspPolicyFn MakeScriptedGrasp(const mjModel* m, const mjData* d, const GraspIn
         // angle or with its edge never reaches the plane they give: it pushed objects over)
         const double gap =
             (seen.estimated || o.touch_ends_gap) && palm ? 0.0 : (c - p).dot(n) - goal.half_width_m;
-        // the push grows while the palm has stalled short of the object, and ends at the touch
-        if (st->palm_touched) {
+        // the push grows while the palm has stalled short of the object, and ends at the touch;
+        // after it, the press grows while the closing hand pushes the palm off (repress_*)
+        if (newly_touched || (st->palm_touched && o.repress_gain <= 0)) {
           st->push = 0;
+        } else if (st->palm_touched) {
+          if (!palm && !tipping && st->step - st->closing_from < o.repress_steps) {
+            st->push = std::min(st->push + o.repress_gain * std::max(0.0, gap), o.repress_max_m);
+          }
         } else if (st->step > 0 && !touching && std::abs(gap - st->last_gap) < o.stall_m) {
           st->push = std::min(st->push + o.push_gain * (gap + o.press_m), o.push_max_m);
         }

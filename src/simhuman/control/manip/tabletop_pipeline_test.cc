@@ -90,7 +90,7 @@ TEST(TabletopPipelineTest, EveryStageRunsAndReportsWhereItFailedIntegration) {
   EXPECT_GT(r.sim_steps, 100);
   EXPECT_FALSE(r.end_reason.empty());
   EXPECT_EQ(r.success, r.end_reason == "success");
-  EXPECT_EQ(r.reach_route, "hanging");
+  EXPECT_EQ(r.reach_route, "raised-onto");
 }
 
 // With the raise, the hand rises over the table's edge, then joins the reach planned from the
