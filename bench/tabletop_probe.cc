@@ -460,6 +460,34 @@ int main(int argc, char** argv) {
         rc[0] = -1;
       }
     };
+    // the transport's directness: the object's path from when it first rose 5 cm until it comes
+    // within 5 cm (horizontally) of over the target, against the straight line, and how far
+    // below its start height it went on the way (path, start x y z, lowest dip, done)
+    auto carry = std::make_shared<std::array<double, 6>>();
+    (*carry)[1] = std::nan("");
+    hook = [inner = hook, carry, ob = g.object_body, z0 = g.planned_pos.z(),
+            target = g.target](const mjData* d) {
+      if (inner) inner(d);
+      auto& cr = *carry;
+      if (cr[5] > 0) return;
+      const Eigen::Vector3d o(d->xpos + 3 * ob);
+      static thread_local Eigen::Vector3d last;
+      if (std::isnan(cr[1])) {
+        if (o.z() < z0 + 0.05) return;
+        cr[1] = o.x(), cr[2] = o.y(), cr[3] = o.z();
+        cr[4] = 0;
+      } else {
+        cr[0] += (o - last).norm();
+        cr[4] = std::max(cr[4], cr[3] - o.z());
+      }
+      last = o;
+      if ((o - target).head<2>().norm() < 0.05) {
+        const double straight = (o - Eigen::Vector3d(cr[1], cr[2], cr[3])).norm();
+        std::printf("  transport path %.2f m, straight %.2f m, ratio %.2f, dip %.2f m\n", cr[0],
+                    straight, cr[0] / std::max(straight, 1e-3), cr[4]);
+        cr[5] = 1;
+      }
+    };
     if (a.profile) mjcb_time = ClockUs;
     const auto res = sh::control::manip::RunTabletop(**w, *ix, g, grasp, pipeline, hook, *place);
     if (a.profile) {
