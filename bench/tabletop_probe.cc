@@ -61,7 +61,7 @@ struct Args {
   bool trace_contacts = false, trace_arm = false;
   // pipeline and scripted-grasp settings (negative or 0: the default)
   bool touch_gap0 = true, hold_behind = true;
-  double behind_tol = 0.01, push_gain = 0.15, repress_gain = -1, repress_max = -1;
+  double behind_tol = 0.01, push_gain = 0.15, repress_gain = -1, repress_max = -1, carry_dip = -1;
   double tilt_guard_deg = -1, tilt_backoff = -1, thumb_clear = -1;
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
@@ -120,6 +120,7 @@ Args Parse(int argc, char** argv) {
                                                   {"--push-gain", &a.push_gain},
                                                   {"--repress-gain", &a.repress_gain},
                                                   {"--repress-max", &a.repress_max},
+                                                  {"--carry-dip", &a.carry_dip},
                                                   {"--tilt-guard-deg", &a.tilt_guard_deg},
                                                   {"--tilt-backoff", &a.tilt_backoff},
                                                   {"--thumb-clear", &a.thumb_clear}};
@@ -347,6 +348,7 @@ int main(int argc, char** argv) {
     if (a.raise == 0) pipeline.raise_via_rad.clear();
     if (a.reshape >= 0) pipeline.motion.reshape_fraction = a.reshape;
     if (a.raise_tail_m >= 0) pipeline.raise_tail_m = a.raise_tail_m;
+    if (a.carry_dip >= 0) pipeline.carry_dip_m = a.carry_dip;
     if (a.planner_seed > 0) pipeline.motion.planner.seed = static_cast<uint64_t>(a.planner_seed);
     sh::control::manip::ScriptedGraspOptions so;
     so.hold_rotation = a.hold_rotation;

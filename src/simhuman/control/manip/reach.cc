@@ -60,6 +60,7 @@ int Contacts(const mjModel* m, mjData* s, const ArmChain& arm, const Eigen::Vect
   if (carried.body >= 0) {
     carried.Place(s, arm);
     mj_kinematics(m, s);
+    if (s->xpos[3 * carried.body + 2] < o.carried_min_z) return 1;
   }
   return collider.Count(s, o.ignore_bodies, o.contact_tolerance_m, o.object_clearance_m,
                         o.approach_body);

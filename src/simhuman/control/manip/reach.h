@@ -55,6 +55,9 @@ struct ArmMotionOptions {
   /// the hand kept from the start, and its contacts with anything but the arm and hand (another
   /// object it would knock over, the table) make a pose invalid as the arm's own do.
   int carried_body = -1;
+  /// The carried object's origin stays at least this high (world z, m): it goes over the table,
+  /// not round below its edge
+  double carried_min_z = -1e9;
 };
 
 /// A planned arm motion.

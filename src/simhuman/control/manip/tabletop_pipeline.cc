@@ -457,9 +457,8 @@ std::optional<TabletopResult> Run::RaiseOnto(
 
 std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   // where the object sits in the hand, kept while the hand turns about the vertical
-  const int hb = ix_.arm.hand_body;
-  const Eigen::Matrix3d rh = Rot(d_, hb);
-  const Eigen::Vector3d ph(d_->xpos + 3 * hb);
+  const Eigen::Matrix3d rh = Rot(d_, ix_.arm.hand_body);
+  const Eigen::Vector3d ph(d_->xpos + 3 * ix_.arm.hand_body);
   const ObjectView seen = ObserveObject(g_, d_, true);
   const Eigen::Vector3d r_obj = rh.transpose() * (seen.base - ph);
   const Eigen::Vector3d r_palm =
@@ -482,6 +481,7 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   mo.terminal_palm_speed_mps = 0;  // DASH: transport ends at rest over the target
   mo.ignore_bodies.push_back(g_.object_body);
   if (o_.transport_checks_object) mo.carried_body = g_.object_body;
+  mo.carried_min_z = std::min(d_->xpos[3 * g_.object_body + 2], base_goal.z()) - o_.carry_dip_m;
   // the hand at the goals' turns first; when no pose or path reaches one, at whichever turn
   // about the target's vertical the arm reaches (the object's yaw on the table is free)
   auto plan = [&]() {

@@ -124,6 +124,10 @@ struct TabletopOptions {
   /// The object's base this high over the target on arrival (at 3 cm an object that slipped
   /// down in the grip on the way struck the bottom object of a stack and tipped it)
   double carry_clearance_m = 0.06;
+  /// The transport keeps the object's base at most this far below both where it starts (lifted)
+  /// and where it ends (ArmMotionOptions::carried_min_z): the demo scene's red box was carried
+  /// down beside the chair, below the table's top, and back up (issue 15 session 44)
+  double carry_dip_m = 0.05;
   /// When no transport pose at the grasp's own turns is reachable, the hand may end at any turn
   /// about the target's vertical, the object up to this far from upright (the alignment below
   /// turns it upright before the descent)
