@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "simhuman/control/manip/scripted_grasp.h"
@@ -196,16 +197,9 @@ TEST(TabletopEvalTest, TheDescentKeepsAnObjectUprightInTheHandIntegration) {
   EXPECT_THAT(neither.end_reason, HasSubstr("tipped over"));
 }
 
-// seated at the table with the trunk held, a plan that stands up or walks is refused before
-// anything moves, naming the step; the tabletop plan and a hand-only step are not
-TEST(TabletopEvalTest, ASeatedTabletopHumanIsNotAskedToStandUp) {
-  auto spec = world::BuiltinScene("tabletop_demo");
-  ASSERT_TRUE(spec.ok()) << spec.status();
-  auto catalog = world::BuildCatalog(*spec);
-  ASSERT_TRUE(catalog.ok()) << catalog.status();
-  auto w = BuildWorld(*spec, *catalog);
-  ASSERT_TRUE(w.ok()) << w.status();
-  ASSERT_TRUE(IsSeatedTabletopWorld(**w));
+// The demo scene's "put the red box on the blue cylinder": the right hand on box001, and
+// box001 on top of cylinder005
+std::pair<plan::ContactPair, plan::ContactPair> DemoRedBoxPairs() {
   plan::ContactPair grasp;
   grasp.object = "box001";
   grasp.part = "body";
@@ -216,6 +210,20 @@ TEST(TabletopEvalTest, ASeatedTabletopHumanIsNotAskedToStandUp) {
   on.subject_object = "box001";
   on.subject_part = "body";
   on.direction = plan::Direction::kUp;
+  return {grasp, on};
+}
+
+// seated at the table with the trunk held, a plan that stands up or walks is refused before
+// anything moves, naming the step; the tabletop plan and a hand-only step are not
+TEST(TabletopEvalTest, ASeatedTabletopHumanIsNotAskedToStandUp) {
+  auto spec = world::BuiltinScene("tabletop_demo");
+  ASSERT_TRUE(spec.ok()) << spec.status();
+  auto catalog = world::BuildCatalog(*spec);
+  ASSERT_TRUE(catalog.ok()) << catalog.status();
+  auto w = BuildWorld(*spec, *catalog);
+  ASSERT_TRUE(w.ok()) << w.status();
+  ASSERT_TRUE(IsSeatedTabletopWorld(**w));
+  const auto [grasp, on] = DemoRedBoxPairs();
   plan::ContactPair walk;
   walk.object = "box001";
   walk.part = "none";
@@ -279,16 +287,7 @@ control::manip::TabletopResult RunDemoRedBox(const control::manip::TabletopOptio
   auto w = BuildWorld(*spec, *catalog);
   EXPECT_TRUE(w.ok()) << w.status();
   if (!w.ok()) return {};
-  plan::ContactPair grasp;
-  grasp.object = "box001";
-  grasp.part = "body";
-  grasp.joint = core::BodyJoint::kRightHand;
-  plan::ContactPair on;
-  on.object = "cylinder005";
-  on.part = "top";
-  on.subject_object = "box001";
-  on.subject_part = "body";
-  on.direction = plan::Direction::kUp;
+  const auto [grasp, on] = DemoRedBoxPairs();
   plan::ContactChain chain;
   chain.steps.resize(2);
   chain.steps[0].pairs = {grasp};
