@@ -62,6 +62,8 @@ struct Args {
   // pipeline and scripted-grasp settings (negative or 0: the default)
   bool touch_gap0 = true, hold_behind = true;
   double behind_tol = 0.01, push_gain = 0.15, repress_gain = -1, repress_max = -1, carry_dip = -1;
+  double over_margin = -1;
+  int carry_over = -1;
   double tilt_guard_deg = -1, tilt_backoff = -1, thumb_clear = -1;
   bool hold_rotation = true, press_closing = true, carried_check = true, top_grasp = false;
   double rot_weight = -1, press_m = -1, terminal_speed = -1, comfort_reach = -1;
@@ -121,12 +123,14 @@ Args Parse(int argc, char** argv) {
                                                   {"--repress-gain", &a.repress_gain},
                                                   {"--repress-max", &a.repress_max},
                                                   {"--carry-dip", &a.carry_dip},
+                                                  {"--over-margin", &a.over_margin},
                                                   {"--tilt-guard-deg", &a.tilt_guard_deg},
                                                   {"--tilt-backoff", &a.tilt_backoff},
                                                   {"--thumb-clear", &a.thumb_clear}};
   const std::map<std::string, int*> ints = {{"--from", &a.from},
                                             {"--to", &a.to},
                                             {"--shortcuts", &a.shortcuts},
+                                            {"--carry-over", &a.carry_over},
                                             {"--planner-seed", &a.planner_seed},
                                             {"--repress-steps", &a.repress_steps},
                                             {"--raise", &a.raise},
@@ -349,6 +353,8 @@ int main(int argc, char** argv) {
     if (a.reshape >= 0) pipeline.motion.reshape_fraction = a.reshape;
     if (a.raise_tail_m >= 0) pipeline.raise_tail_m = a.raise_tail_m;
     if (a.carry_dip >= 0) pipeline.carry_dip_m = a.carry_dip;
+    if (a.carry_over >= 0) pipeline.carry_over_arc = a.carry_over == 1;
+    if (a.over_margin >= 0) pipeline.carry_over.margin_m = a.over_margin;
     if (a.planner_seed > 0) pipeline.motion.planner.seed = static_cast<uint64_t>(a.planner_seed);
     sh::control::manip::ScriptedGraspOptions so;
     so.hold_rotation = a.hold_rotation;
@@ -520,13 +526,13 @@ int main(int argc, char** argv) {
                   tt.x(), tt.y(), tt.z());
     }
     const Eigen::Vector3d at = sh::world::WorldToTable(g.planned_pos);
-    std::printf("ep %3d %-5s %-8s w=%.3f h=%.3f m=%.2f at (%5.2f %5.2f) gap %5.3f  %s [%s]\n", i,
+    std::printf("ep %3d %-5s %-8s w=%.3f h=%.3f m=%.2f at (%5.2f %5.2f) gap %5.3f  %s [%s %s]\n", i,
                 kind.c_str(), ShapeName(g.shape), 2 * g.half_width_m, g.height_m,
                 m->body_mass[g.object_body], at.x(), at.y(), res.release_gap_m,
                 (std::string(sh::control::manip::TabletopStageName(res.failed_stage)) + ": " +
                  res.end_reason)
                     .c_str(),
-                res.reach_route.c_str());
+                res.reach_route.c_str(), res.transport_route.c_str());
     std::fflush(stdout);
     if (!frames.empty()) {
       const std::string path = a.sheet_dir + "/ep" + std::to_string(i) + ".png";

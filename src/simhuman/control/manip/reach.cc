@@ -324,6 +324,53 @@ core::StatusOr<ArmMotion> PlanArmThrough(const mjModel* m, const mjData* d, mjDa
   return ArmMotion{*std::move(traj), -1, from, 0, Seconds(t0)};
 }
 
+core::StatusOr<ArmMotion> PlanArmAlong(const mjModel* m, const mjData* d, mjData* s,
+                                       const ArmChain& arm, const std::vector<PalmPose>& palm_path,
+                                       const ArmMotionOptions& o, const ArmAlongOptions& along) {
+  SH_RETURN_IF_ERROR(o.planner.Validate());
+  if (palm_path.empty()) return absl::InvalidArgumentError("plan failure: no palm poses to follow");
+  if (along.rest_to.size() != 0 && along.rest_to.size() != ArmChain::kDofs) {
+    return absl::InvalidArgumentError("plan failure: rest_to has " +
+                                      std::to_string(along.rest_to.size()) + " arm angles, not " +
+                                      std::to_string(ArmChain::kDofs));
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const PoseCheck check(m, d, s, arm, o);
+  const ValidityFn valid = check.Valid(m, s, arm, o);
+  const Eigen::VectorXd start = ArmStart(arm, d);
+  Eigen::VectorXd from = start;
+  JointPath path;
+  path.waypoints.push_back(from);
+  const std::string of = " of " + std::to_string(palm_path.size());
+  IkOptions via_ik = o.ik;
+  via_ik.tol_rot_rad = std::max(o.ik.tol_rot_rad, along.via_tol_rot_rad);
+  for (size_t k = 0; k < palm_path.size(); ++k) {
+    const std::string which = "plan failure: palm pose " + std::to_string(k) + of;
+    const bool last = k + 1 == palm_path.size();
+    const double u = double(k + 1) / palm_path.size();
+    const Eigen::VectorXd rest =
+        along.rest_to.size() == 0 ? from : Eigen::VectorXd((1 - u) * start + u * along.rest_to);
+    const IkResult r = SolvePalmIk(m, s, arm, palm_path[k], from, rest, last ? o.ik : via_ik);
+    if (!r.converged) return absl::FailedPreconditionError(which + " is out of the arm's reach");
+    const double jump = (r.q - from).cwiseAbs().maxCoeff();
+    if (jump > along.max_step_rad) {
+      return absl::FailedPreconditionError(which + " makes a joint jump by " +
+                                           std::to_string(jump) + " rad");
+    }
+    if (!valid(r.q)) return absl::FailedPreconditionError(which + " is in collision");
+    if (!SegmentValid(from, r.q, valid, o.planner.resolution_rad)) {
+      return absl::NotFoundError("plan failure: no straight path to palm pose " +
+                                 std::to_string(k) + of);
+    }
+    path.waypoints.push_back(r.q);
+    from = r.q;
+  }
+  if (path.Length() < 1e-6) path.waypoints.push_back(path.waypoints.back());
+  core::StatusOr<Trajectory> traj = Retime(path, ArmRetime(m, o));
+  if (!traj.ok()) return core::Annotate(traj.status(), "plan failure: retiming");
+  return ArmMotion{*std::move(traj), -1, from, 0, Seconds(t0)};
+}
+
 JointPath PathTail(const mjModel* m, const mjData* d, mjData* s, const ArmChain& arm,
                    const JointPath& path, double palm_m, double step_rad) {
   if (path.size() < 2 || step_rad <= 0) return path;

@@ -97,6 +97,33 @@ core::StatusOr<ArmMotion> PlanArmThrough(const mjModel* m, const mjData* d, mjDa
                                          const std::vector<Eigen::VectorXd>& vias,
                                          const ArmMotionOptions& options = {});
 
+/// Settings of PlanArmAlong.
+struct ArmAlongOptions {
+  /// No joint moves further than this between two neighbouring palm poses (more: a flip of
+  /// the IK)
+  double max_step_rad = 0.3;
+  /// The poses before the last may turn this far from theirs (when more than ArmMotionOptions'
+  /// ik tolerance: a held object may tilt on the way)
+  double via_tol_rot_rad = 0;
+  /// Arm angles the posture moves toward along the way (empty: none): each pose's IK prefers
+  /// the blend of the start's angles and these at its place along the path, so that the arm
+  /// ends near them rather than wherever the poses' IK drifts (a shoulder raised to its limit)
+  Eigen::VectorXd rest_to;
+};
+
+/// Plans the arm from its pose in `d` along `palm_path` (palm poses close together, e.g. every
+/// 2 cm): each solved by IK from the arm angles of the one before, straight in joint space
+/// between them, ending at rest at the last; PlanArmMotion's collision rules, clearance and
+/// carried object. A hand that carries something up, across and down on a line a person's
+/// would take, where a joint-space search may swing it round the body. Errors: InvalidArgument
+/// for an empty path, bad options or rest_to of the wrong size; FailedPrecondition "plan
+/// failure: palm pose K of N is out of the arm's reach", "... is in collision", "... makes a
+/// joint jump by X rad"; NotFound "plan failure: no straight path to palm pose K of N".
+core::StatusOr<ArmMotion> PlanArmAlong(const mjModel* m, const mjData* d, mjData* scratch,
+                                       const ArmChain& arm, const std::vector<PalmPose>& palm_path,
+                                       const ArmMotionOptions& options = {},
+                                       const ArmAlongOptions& along = {});
+
 /// The last part of `path` from where the palm (`arm`'s palm site) is `palm_m` in a straight
 /// line from where it ends (the path searched back from its end every `step_rad` of arc
 /// length), the body otherwise as in `d`; the whole path when the palm is nowhere that far.

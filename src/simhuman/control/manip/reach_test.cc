@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "simhuman/control/manip/carry_over.h"
 #include "simhuman/control/manip/grasp_task.h"
 #include "simhuman/control/manip/tabletop_pipeline.h"
 #include "simhuman/world/objects.h"
@@ -322,6 +323,84 @@ TEST(ReachTest, AnInertiaFloorHoldsTheWristUnderALoadItDoesNotModelIntegration) 
               stiff);
   EXPECT_LT(stiff, 0.08);
   EXPECT_LT(stiff, 0.6 * soft);
+}
+
+TEST(CarryOverTest, TheArcLeavesAndArrivesVerticallyOverTheGivenLift) {
+  PalmPose from, to;
+  from.pos = Eigen::Vector3d(0, 0, 1.0);
+  to.pos = Eigen::Vector3d(0.4, 0.1, 1.02);
+  to.rot = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Vector3d held(0, 0.03, -0.05);  // the object's base below the palm
+  const std::vector<PalmPose> arc = OverArcPalmPath(from, to, held, 0.12, 0.02);
+  ASSERT_GE(arc.size(), 20u);
+  EXPECT_LT((arc.back().pos - to.pos).norm(), 1e-9);
+  EXPECT_LT((arc.back().rot - to.rot).norm(), 1e-9);
+  Eigen::Vector3d prev = from.pos + from.rot * held;
+  double top = -1e9;
+  for (const PalmPose& p : arc) {
+    const Eigen::Vector3d b = p.pos + p.rot * held;
+    EXPECT_LE((b - prev).norm(), 0.02 + 1e-9);
+    top = std::max(top, b.z());
+    prev = b;
+  }
+  // the top 12 cm over the higher end; the first and last steps mostly vertical
+  EXPECT_NEAR(top, (to.pos + to.rot * held).z() + 0.12, 0.005);
+  const Eigen::Vector3d first = arc.front().pos + arc.front().rot * held - (from.pos + held);
+  EXPECT_GT(first.z(), 3 * first.head<2>().norm());
+  const Eigen::Vector3d last =
+      (to.pos + to.rot * held) - (arc[arc.size() - 2].pos + arc[arc.size() - 2].rot * held);
+  EXPECT_LT(last.z(), -3 * last.head<2>().norm());
+}
+
+TEST(CarryOverTest, TheArmCarriesThePalmOverAnArcBetweenTwoSideGraspsIntegration) {
+  // two side-grasp poses 30 cm apart over the board's near part, both free, reached from the
+  // raised hand; the arm starts at the first
+  auto w = TableScene(Eigen::Vector3d(0.3, 0.5, 0));
+  const mjModel* m = w->model();
+  mjData* d = w->data();
+  const ArmChain& arm = OpenTheHand(*w).arm;
+  mjData* s = mj_makeData(m);
+  mju_copy(s->qpos, d->qpos, m->nq);
+  const Eigen::VectorXd via = RaiseVias(TabletopOptions{}).back();
+  const std::vector<PalmPose> a =
+      Around(world::TableToWorld(Eigen::Vector3d(-0.15, 0.2, 0.1)), 0.08);
+  const std::vector<PalmPose> b =
+      Around(world::TableToWorld(Eigen::Vector3d(0.15, 0.2, 0.1)), 0.08);
+  auto free = [&](const PalmPose& p, Eigen::VectorXd* q) {
+    const IkResult r = SolvePalmIk(m, s, arm, p, via, via);
+    *q = r.q;
+    return r.converged && ArmContacts(m, s, arm, r.q) == 0;
+  };
+  int k = 0;
+  Eigen::VectorXd q0, q1;
+  while (k < static_cast<int>(a.size()) && !(free(a[k], &q0) && free(b[k], &q1))) ++k;
+  ASSERT_LT(k, static_cast<int>(a.size())) << "no side-grasp pose reached at both ends";
+  arm.Set(d, q0);
+  mj_forward(m, d);
+  CarryOverOptions co;
+  co.lift_m = {0.1};
+  co.margin_m = 0;
+  auto over = PlanCarryOver(m, d, s, arm, a[k], b[k], Eigen::Vector3d::Zero(), co);
+  ASSERT_TRUE(over.ok()) << over.status();
+  const Trajectory& t = over->trajectory;
+  EXPECT_LT(t.Sample(t.duration_s()).qdot.norm(), 1e-6) << "it ends at rest";
+  // the palm ends at the goal, and its path peaks 10 cm over the higher end
+  double top = -1e9;
+  for (double at = 0; at <= t.duration_s() + 1e-9; at += 0.01) {
+    arm.Set(s, t.Sample(std::min(at, t.duration_s())).q);
+    mj_kinematics(m, s);
+    top = std::max(top, s->site_xpos[3 * arm.palm_site + 2]);
+  }
+  EXPECT_LT((Eigen::Vector3d(s->site_xpos + 3 * arm.palm_site) - b[k].pos).norm(), 0.006);
+  EXPECT_NEAR(top, std::max(a[k].pos.z(), b[k].pos.z()) + 0.1, 0.01);
+  // an arc that ends inside the board is refused, naming the pose
+  PalmPose into = b[k];
+  into.pos.z() = world::TableToWorld(Eigen::Vector3d(0.15, 0.2, -0.05)).z();
+  auto blocked = PlanCarryOver(m, d, s, arm, a[k], into, Eigen::Vector3d::Zero(), co);
+  ASSERT_FALSE(blocked.ok());
+  EXPECT_NE(blocked.status().message().find("plan failure: palm pose"), std::string::npos)
+      << blocked.status();
+  mj_deleteData(s);
 }
 
 }  // namespace

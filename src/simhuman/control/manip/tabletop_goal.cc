@@ -36,6 +36,26 @@ std::vector<std::vector<double>> SeatedRaiseViaRad() {
       {0.5, 0, 0, 0.4, 0, 0, 0}, {0.5, -0.7, 0, 1.2, 0, -0.8, 0}, {0.3, -0.7, 0, 2.6, 0, -0.8, 0}};
 }
 
+std::vector<PalmPose> TransportPalmGoals(const Eigen::Matrix3d& rh, const Eigen::Vector3d& r_obj,
+                                         const Eigen::Vector3d& r_palm,
+                                         const Eigen::Matrix3d& upright,
+                                         const Eigen::Vector3d& base_goal, int turns) {
+  std::vector<PalmPose> goals;
+  for (int k = 0; k < turns; ++k) {
+    const double theta = -M_PI + 2 * M_PI * k / turns;
+    const Eigen::Matrix3d r = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()) * upright * rh;
+    goals.push_back({base_goal - r * r_obj + r * r_palm, r, std::nullopt});
+  }
+  return goals;
+}
+
+std::vector<Eigen::VectorXd> RaiseVias(const TabletopOptions& o) {
+  std::vector<Eigen::VectorXd> vias;
+  for (const std::vector<double>& v : o.raise_via_rad)
+    vias.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<int>(v.size())));
+  return vias;
+}
+
 double GripHeightM(const TabletopGoal& g, const TabletopOptions& o) {
   if (g.grip_height_m >= 0) return g.grip_height_m;
   const double z =

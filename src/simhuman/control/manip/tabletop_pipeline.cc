@@ -13,14 +13,6 @@ namespace simhuman::control::manip {
 
 namespace {
 
-// the raise vias of `o` as arm angles
-std::vector<Eigen::VectorXd> RaiseVias(const TabletopOptions& o) {
-  std::vector<Eigen::VectorXd> vias;
-  for (const std::vector<double>& v : o.raise_via_rad)
-    vias.push_back(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<int>(v.size())));
-  return vias;
-}
-
 // no arm pose or no path was found (as opposed to bad input or a broken simulation)
 bool PlanFailed(const core::StatusOr<ArmMotion>& r) {
   return !r.ok() && (absl::IsFailedPrecondition(r.status()) || absl::IsNotFound(r.status()));
@@ -245,6 +237,7 @@ class Run {
   int twist_act_ = -1;            // the trunk's turn about the spine (abdomen_z), -1 without one
   Eigen::VectorXd raised_from_;   // the hanging arm's angles before the hand rose (else empty)
   std::string reach_route_;       // TabletopResult::reach_route
+  std::string transport_route_;   // TabletopResult::transport_route
   std::string step_error_ = "unstable simulation";
 };
 
@@ -470,23 +463,20 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
     upright =
         Eigen::Quaterniond::FromTwoVectors(seen.up, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   }
-  std::vector<PalmPose> goals;
-  for (int k = 0; k < o_.approach_angles; ++k) {
-    const double theta = -M_PI + 2 * M_PI * k / o_.approach_angles;
-    const Eigen::Matrix3d r = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()) * upright * rh;
-    const Eigen::Vector3d hand = base_goal - r * r_obj;
-    goals.push_back({hand + r * r_palm, r, std::nullopt});
-  }
+  const std::vector<PalmPose> goals =
+      TransportPalmGoals(rh, r_obj, r_palm, upright, base_goal, o_.approach_angles);
   ArmMotionOptions mo = o_.motion;
   mo.terminal_palm_speed_mps = 0;  // DASH: transport ends at rest over the target
   mo.ignore_bodies.push_back(g_.object_body);
   if (o_.transport_checks_object) mo.carried_body = g_.object_body;
   mo.carried_min_z = std::min(d_->xpos[3 * g_.object_body + 2], base_goal.z()) - o_.carry_dip_m;
-  // the hand at the goals' turns first; when no pose or path reaches one, at whichever turn
-  // about the target's vertical the arm reaches (the object's yaw on the table is free)
+  // the goals' turns first, else any turn about the target's vertical (the object's yaw is free)
+  bool any_turn_planned = false;  // the goal index then names no pose of `goals`
   auto plan = [&]() {
     core::StatusOr<ArmMotion> r = PlanArmMotion(m_, d_, scratch_, ix_.arm, goals, {}, mo);
+    any_turn_planned = false;
     if (!PlanFailed(r)) return r;
+    any_turn_planned = true;
     PalmPose any_turn = goals.front();
     any_turn.yaw_free_about = base_goal;
     ArmMotionOptions any_mo = mo;
@@ -509,6 +499,15 @@ std::optional<TabletopResult> Run::Transport(ArmTracker& tr) {
   }
   if (!motion.ok()) {
     return Fail(TabletopStage::kTransport, std::string(motion.status().message()), true);
+  }
+  transport_route_ = "searched";
+  if (o_.carry_over_arc && !any_turn_planned && motion->goal_index >= 0) {
+    // the same goal over an arc, the posture toward the plan's end (from the palm as it is now)
+    const PalmPose palm{Eigen::Vector3d(d_->site_xpos + 3 * ix_.arm.palm_site),
+                        Rot(d_, ix_.arm.hand_body), std::nullopt};
+    auto arc = PlanCarryOver(m_, d_, scratch_, ix_.arm, palm, goals[motion->goal_index],
+                             r_obj - r_palm, o_.carry_over, mo, motion->goal_q);
+    if (arc.ok()) motion = std::move(arc), transport_route_ = "over";
   }
   if (!Follow(tr, motion->trajectory, 0.2)) return Fail(TabletopStage::kTransport, StepError());
   if (!InHand())
@@ -635,6 +634,7 @@ TabletopResult Run::Finish(TabletopResult r) const {
   r.sim_steps = steps_;
   r.grasp_attempts = attempts_;
   r.reach_route = reach_route_;
+  r.transport_route = transport_route_;
   r.release_tilt_deg = release_tilt_deg_;
   r.release_gap_m = release_gap_m_;
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();

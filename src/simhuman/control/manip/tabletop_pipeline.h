@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "simhuman/control/manip/carry_over.h"
 #include "simhuman/control/manip/grasp_task.h"
 #include "simhuman/control/manip/place_task.h"
 #include "simhuman/control/manip/reach.h"
@@ -132,6 +133,15 @@ struct TabletopOptions {
   /// about the target's vertical, the object up to this far from upright (the alignment below
   /// turns it upright before the descent)
   double transport_tilt_tol_rad = 0.12;
+  /// With carry_over_arc, the transport's searched path (RRTConnect) is replaced by an arc to
+  /// the same goal pose (up, across and down, as a person carries; PlanCarryOver, the arm's
+  /// posture moving toward the searched plan's end) whenever one is free. Off: over four
+  /// planner seeds it placed 502 / 536 and stacked 478 / 552 against 506 / 477 without, and
+  /// it leaves the roundabout transports as they were: there no arc is free, the arm folded
+  /// against its limits after grasping beside the body (docs/BENCHMARKS.md, issue 15
+  /// session 45).
+  bool carry_over_arc = false;
+  CarryOverOptions carry_over;
   double lower_speed_mps = 0.06;  ///< placing descent
   /// The descent stops to straighten the object again every this far (0: straight down once;
   /// a box held at its fingertips tilted 3 -> 20 degrees on the way down and fell after the
@@ -193,6 +203,17 @@ struct TabletopOptions {
   double raise_tail_m = 0.15;
 };
 
+/// The palm poses that hold the object (its base at `r_obj` and the palm at `r_palm` in the
+/// hand's frame `rh`) with its base at `base_goal`: the hand turned by `upright` (which sets the
+/// object upright) and then by `turns` angles about the vertical from -pi, evenly spaced.
+std::vector<PalmPose> TransportPalmGoals(const Eigen::Matrix3d& rh, const Eigen::Vector3d& r_obj,
+                                         const Eigen::Vector3d& r_palm,
+                                         const Eigen::Matrix3d& upright,
+                                         const Eigen::Vector3d& base_goal, int turns);
+
+/// TabletopOptions::raise_via_rad as arm angles.
+std::vector<Eigen::VectorXd> RaiseVias(const TabletopOptions& options);
+
 /// How high above the object's base the palm's centre grips it (TabletopOptions' grip_*).
 double GripHeightM(const TabletopGoal& goal, const TabletopOptions& options);
 
@@ -220,6 +241,10 @@ struct TabletopResult {
   /// there), "raised-onto" (then onto the reach planned from the hanging arm), "raised-replanned"
   /// (no path onto it: planned from the raised hand); empty when no reach began
   std::string reach_route;
+  /// How the transport went: "over" (an arc over what stands between, PlanCarryOver;
+  /// TabletopOptions::carry_over_arc) or "searched" (RRTConnect); empty when no transport
+  /// began
+  std::string transport_route;
   /// The object's tilt from upright (degrees) when the fingers began to open over its support;
   /// -1 when the run ended before
   double release_tilt_deg = -1;
