@@ -9,6 +9,7 @@
 //                              [--torsion M] [--contacts 1] [--grip 1] [--gait human]
 //                              [--mpc SAMPLES] [--mpc-sigma S] [--mpc-horizon T]
 //                              [--walker FILE] [--dest M] [--vmax MPS]
+//                              [--hold-rise M] [--hold-gap M] [--lean RAD_PER_KG]
 //
 // --walker FILE drives the carry phase with a walking policy (task "walk", e.g.
 // assets/policies/walk.pt): the action is the walker's output for the first kWalkObsDim entries
@@ -17,7 +18,7 @@
 // (WalkTargets ignores them), so the arms keep the holding reference and the grip servo. The
 // gait is the file's. --dest is the destination's distance ahead of the box (m), --vmax the
 // walking command's top speed (m/s; the gait's, and at most CarryParams::carry_vmax_mps while
-// carrying, by default).
+// carrying, by default). With --policy as well, the policy drives the other phases.
 #include <torch/torch.h>
 
 #include <algorithm>
@@ -47,7 +48,7 @@ struct Args {
   uint64_t seed = 1;
   double side = -1, mass = -1;  // < 0: drawn
   double seconds = 6;
-  double stand_gap = -1, grasp_frac = -1, hold_rise = -9, hold_gap = -1;
+  double stand_gap = -1, grasp_frac = -1, hold_rise = -9, hold_gap = -1, lean = -1;
   double pose_at = -1;  // >= 0: start posed inside the lift at this time (s)
   double reach_depth = -1;
   double torsion = -1;    // >= 0: the box's torsional friction (condim 3 at 0)
@@ -89,6 +90,8 @@ Args Parse(int argc, char** argv) {
       a.hold_rise = std::atof(v);
     else if (k == "--hold-gap")
       a.hold_gap = std::atof(v);
+    else if (k == "--lean")
+      a.lean = std::atof(v);
     else if (k == "--pose-at")
       a.pose_at = std::atof(v);
     else if (k == "--reach-depth")
@@ -258,6 +261,7 @@ struct EpisodeResult {
   double start_hands_n = 0, start_other_n = 0;
   std::string start_other_body;
   bool lift_ok = false, lifted = false;
+  bool success = false;  // the task's own success: put down within 0.2 m of the destination
 };
 
 struct Probe {
@@ -361,8 +365,12 @@ EpisodeResult RunEpisode(Probe& p, int ep, double side, double mass) {
                  &res.start_other_body);
   if (a.torsion >= 0) {  // a probe of the grip: the model is this probe's own
     mjModel* mm = const_cast<mjModel*>(m);
-    mm->geom_friction[3 * t.box_geom() + 1] = a.torsion;
-    mm->geom_condim[t.box_geom()] = a.torsion > 0 ? 4 : 3;
+    const int body = m->geom_bodyid[t.box_geom()];
+    for (int g = 0; g < m->ngeom; ++g) {  // every geom of the box (faces, rims and core)
+      if (m->geom_bodyid[g] != body) continue;
+      mm->geom_friction[3 * g + 1] = a.torsion;
+      mm->geom_condim[g] = a.torsion > 0 ? 4 : 3;
+    }
   }
   std::unique_ptr<sh::control::CarryMpc> mpc;
   if (a.mpc > 0) {
@@ -409,6 +417,7 @@ EpisodeResult RunEpisode(Probe& p, int ep, double side, double mass) {
     sh::learn::StepInfo info;
     const CarryPhase before = t.state(0).phase;
     t.Step(0, act.data(), obs.data(), &info);
+    res.success = res.success || info.success;
     const mjData* d = t.data(0);
     const auto box = sh::control::ReadCarryBox(m, d, t.box_geom());
     if (before == CarryPhase::kLift && t.state(0).phase == CarryPhase::kCarry) {
@@ -436,6 +445,10 @@ EpisodeResult RunEpisode(Probe& p, int ep, double side, double mass) {
     if (r && k % 8 == 0) RenderFrame(p, r.get(), box_pos, yaw, &frames);
     if (info.terminated) {
       res.end = sh::learn::CarryFailureName(t.last_failure(0));
+      break;
+    }
+    if (info.success || info.truncated) {
+      res.end = info.success ? "success" : "truncated";
       break;
     }
   }
@@ -466,7 +479,7 @@ void PrintSummary(const Args& a, const std::vector<EpisodeResult>& rs) {
   std::printf(
       "\n| ep | side m | mass kg | start arm force N | end | at s | pelvis z m | box progress m "
       "| held |\n");
-  int lift_ok = 0, lifted = 0, held = 0;
+  int lift_ok = 0, lifted = 0, held = 0, delivered = 0;
   double progress = 0;
   for (size_t i = 0; i < rs.size(); ++i) {
     const EpisodeResult& r = rs[i];
@@ -477,11 +490,14 @@ void PrintSummary(const Args& a, const std::vector<EpisodeResult>& rs) {
     lift_ok += r.lift_ok;
     lifted += r.lifted;
     held += r.held;
+    delivered += r.success;
     progress += r.progress_m;
   }
   const int n = static_cast<int>(rs.size());
   std::printf("lift stage ok: %d / %d; lifted and standing to the end: %d / %d\n", lift_ok, n,
               lifted, n);
+  std::printf("delivered (put down within 0.2 m of the destination, standing): %d / %d\n",
+              delivered, n);
   if (a.walker.empty()) return;
   std::printf("walker: held and standing at %.1f s: %d / %d; mean box progress %.2f m\n", a.seconds,
               held, n, n > 0 ? progress / n : 0.0);
@@ -493,8 +509,8 @@ int main(int argc, char** argv) {
   Probe p;
   p.a = Parse(argc, argv);
   const Args& a = p.a;
-  if (!a.walker.empty() && (!a.policy.empty() || a.mpc > 0)) {
-    std::fprintf(stderr, "--walker drives the carry phase alone: drop --policy and --mpc\n");
+  if (!a.walker.empty() && a.mpc > 0) {
+    std::fprintf(stderr, "--walker drives the carry phase alone: drop --mpc\n");
     return 2;
   }
   if (!a.policy.empty()) {
@@ -534,6 +550,7 @@ int main(int argc, char** argv) {
   if (a.grasp_frac >= 0) params.grasp_frac = a.grasp_frac;
   if (a.hold_rise > -9) params.hold_rise_m = a.hold_rise;
   if (a.hold_gap >= 0) params.hold_gap_m = a.hold_gap;
+  if (a.lean >= 0) params.hold_lean_rad_per_kg = a.lean;
   if (a.reach_depth >= 0) params.max_reach_depth_m = a.reach_depth;
   if (a.vmax > 0) params.walk.vmax_mps = params.carry_vmax_mps = a.vmax;
   sh::core::Rng rng(a.seed);

@@ -29,6 +29,9 @@ int CarryEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& er
   o.episodes = flags.episodes;
   o.seed = flags.seed;
   o.approach_policy = flags.approach_policy;
+  o.walker = flags.walker;
+  o.lift_policy = flags.lift_policy;
+  o.deliver_policy = flags.deliver_policy;
   if (o.policy.empty()) {
     return ReportError(err, kCommand,
                        absl::InvalidArgumentError(
@@ -42,7 +45,10 @@ int CarryEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& er
   std::ofstream lines(dir + "/episodes.jsonl", std::ios::trunc);
   out << "simhuman eval: suite carry, " << o.episodes << " episodes, seed " << o.seed << ", policy "
       << o.policy << (o.approach_policy.empty() ? std::string() : ", approach " + o.approach_policy)
-      << " -> " << dir << std::endl;
+      << (o.walker.empty() ? std::string() : ", walker " + o.walker)
+      << (o.lift_policy.empty() ? std::string() : ", lift " + o.lift_policy)
+      << (o.deliver_policy.empty() ? std::string() : ", deliver " + o.deliver_policy) << " -> "
+      << dir << std::endl;
   out << "  ep mass_kg side_m dist_m ok   fell  time_s  end_cm  phase      end" << std::endl;
   core::StatusOr<learn::CarryEvalSummary> s =
       learn::RunCarryEval(o, nullptr, [&](const learn::CarryEpisode& e) {

@@ -191,6 +191,15 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
   eval_cmd->add_option("--approach-policy", ev->approach_policy,
                        "carry: a walking policy file (e.g. assets/policies/walk.pt) that walks up "
                        "to the box; the carry policy takes over at the lift");
+  eval_cmd->add_option("--walker", ev->walker,
+                       "carry: a walking policy file (e.g. assets/policies/walk.pt) that walks "
+                       "up to the box, carries it and steps back");
+  eval_cmd->add_option("--lift-policy", ev->lift_policy,
+                       "carry: a lift policy file (simhuman train --task carry-lift) that lifts "
+                       "the box");
+  eval_cmd->add_option("--deliver-policy", ev->deliver_policy,
+                       "carry: a delivery policy file (simhuman train --task carry-deliver) that "
+                       "carries the box and puts it down");
   eval_cmd
       ->add_option("--first-episode", ev->first_episode,
                    "tabletop, place, stack: start at this episode of the seed's run (e.g. 200 "

@@ -355,11 +355,16 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
                                                   "stack), not --suite " +
                                                   flags.suite + f.instead));
   }
-  if (!flags.approach_policy.empty() && suite->controller != eval::SuiteController::kCarryPolicy) {
-    return ReportError(err, kCommand,
-                       absl::InvalidArgumentError("--approach-policy applies to --suite carry, "
-                                                  "not --suite " +
-                                                  flags.suite));
+  for (const auto& [flag, value] :
+       {std::pair<const char*, const std::string*>{"--approach-policy", &flags.approach_policy},
+        {"--walker", &flags.walker},
+        {"--lift-policy", &flags.lift_policy},
+        {"--deliver-policy", &flags.deliver_policy}}) {
+    if (value->empty() || suite->controller == eval::SuiteController::kCarryPolicy) continue;
+    return ReportError(
+        err, kCommand,
+        absl::InvalidArgumentError(std::string(flag) + " applies to --suite carry, not --suite " +
+                                   flags.suite));
   }
   if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
   if (suite->controller == eval::SuiteController::kCarryPolicy) {

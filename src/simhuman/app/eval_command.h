@@ -43,11 +43,13 @@ struct EvalFlags {
   int planner_seed = 1;
   std::string zero_shot;       ///< tabletop, place, stack: eval::TabletopEvalOptions::zero_shot
   std::string zero_shot_mesh;  ///< its OBJ file for "mesh" (empty: world::kZeroShotMeshFile)
-  int jobs = 1;
+  int jobs = 1;                ///< tabletop, place, stack: episodes run at once (threads)
   /// Tabletop suites: the first episode's index (eval::TabletopEvalOptions::first_episode)
   int first_episode = 0;
-  std::string approach_policy;  ///< carry: a walking policy for the approach phase  ///< tabletop,
-                                ///< place, stack: episodes run at once (threads)
+  std::string approach_policy;  ///< carry: a walking policy for the approach phase
+  std::string walker;           ///< carry: a walking policy for every walking phase
+  std::string lift_policy;      ///< carry: a carry-lift policy for the lift
+  std::string deliver_policy;   ///< carry: a carry-deliver policy for the carry and put-down
   /// Tabletop suites: "truth" or "vision" (the head camera and the vision model).
   std::string perception = "truth";
   /// The vision suite and --perception vision: a model file (simhuman train --task vision); empty:

@@ -22,11 +22,16 @@ constexpr double kSuccessRadius = 0.2;
 constexpr int kSuccessHold = 30;  // policy steps at rest after the put-down (1 s)
 constexpr double kStartAtBoxFraction = 0.5;
 constexpr double kStartInSquatFraction = 0.6;  // of the episodes that start at the box
+// a stage's reward for its success (the lift handing the box over held, the box delivered):
+// about 40 steps' worth of the rest
+constexpr double kStageSuccessBonus = 20.0;
 constexpr double kMaxApproachSeconds = 20;
 // a carry that has not reached its stand point by then stalled (the put-down starts within
 // CarryParams::arrive_dwell_s of reaching it)
 constexpr double kMaxCarrySeconds = 15;  // training destinations lie 1-3 m away
-constexpr double kBuiltBoxSide = 0.5;    // the box is built as this cube; ShapeBox scales it
+// the delivery stage carries up to 10 m (curriculum 1) at about 0.7 m/s
+constexpr double kMaxDeliverCarrySeconds = 25;
+constexpr double kBuiltBoxSide = 0.5;  // the box is built as this cube; ShapeBox scales it
 // the squats' ankle strategy (control::BalanceAnkles): 0.6-1.2 and 0.2-0.5 s measured alike
 constexpr double kSupportBalanceGain = 0.8, kSupportBalanceDampingS = 0.25;
 
@@ -50,16 +55,51 @@ const char* CarryFailureName(CarryFailure f) {
       return "lost the box";
     case CarryFailure::kStalled:
       return "stalled (training: approach over 20 s or carry over 15 s)";
+    case CarryFailure::kNotLifted:
+      return "not lifted (the lift ended without the box held up)";
+    case CarryFailure::kNotPlaced:
+      return "not put down (the put-down ended without the box at the destination)";
     case CarryFailure::kNonFinite:
       return "non-finite state";
   }
   return "?";
 }
 
+const char* CarryStageTask(CarryStage stage) {
+  switch (stage) {
+    case CarryStage::kLift:
+      return "carry-lift";
+    case CarryStage::kDeliver:
+      return "carry-deliver";
+    case CarryStage::kAll:
+      break;
+  }
+  return "carry";
+}
+
+bool Delivered(const mjData* d, const control::CarryIndex& ix, const control::CarryBox& box,
+               const Eigen::Vector2d& dest_xy) {
+  return control::BoxLowestZ(box) < 0.03 && box.linvel.norm() < 0.1 &&
+         (box.pos.head<2>() - dest_xy).norm() < kSuccessRadius &&
+         d->xpos[3 * ix.walk.agent.pelvis_body + 2] > 0.8;
+}
+
+bool LiftHandedOver(const mjData* d, const control::CarryIndex& ix, const control::CarryBox& box) {
+  const world::AgentIndex& a = ix.walk.agent;
+  bool left, right;
+  control::HandBoxContacts(d, ix, box, &left, &right);
+  // a cube: its most upright axis within 30 degrees of vertical
+  const double up = box.rot.row(2).cwiseAbs().maxCoeff();
+  return control::BoxLowestZ(box) > 0.3 && up > std::cos(30 * kDeg) && left && right &&
+         d->xpos[3 * a.pelvis_body + 2] > 0.8 &&
+         d->xmat[9 * a.torso_body + 8] > std::cos(30 * kDeg);
+}
+
 core::StatusOr<std::unique_ptr<CarryTask>> CarryTask::Create(int num_envs, std::string_view gait,
-                                                             bool grip) {
+                                                             bool grip, CarryStage stage) {
   if (num_envs <= 0) return absl::InvalidArgumentError("carry task: --envs must be positive");
   std::unique_ptr<CarryTask> t(new CarryTask());
+  t->stage_ = stage;
   SH_ASSIGN_OR_RETURN(t->params_.walk, control::WalkGait(gait));
   world::ObjectSpec box;
   box.id = "box000";
@@ -261,11 +301,15 @@ void CarryTask::Reset(int i, uint64_t seed, float* obs) {
   // 5 m) away, facing the box within +-(30 + 150 c) degrees. Evaluation draws neither number
   // and a zero fraction draws none, so those episodes are as they were before held starts.
   // A share start inside the put-down, drawn first (a zero share draws nothing).
-  const bool put_down =
-      !evaluation_ && put_down_start_fraction_ > 0 && e.rng.Uniform() < put_down_start_fraction_;
-  const bool held = !put_down && !evaluation_ && held_start_fraction_ > 0 &&
-                    e.rng.Uniform() < held_start_fraction_;
-  const bool at_box = put_down || held || (!evaluation_ && e.rng.Uniform() < kStartAtBoxFraction);
+  // The stages start at the box, lifting or holding it, and draw no start-type number.
+  const bool staged = stage_ != CarryStage::kAll;
+  const bool put_down = !staged && !evaluation_ && put_down_start_fraction_ > 0 &&
+                        e.rng.Uniform() < put_down_start_fraction_;
+  const bool held = stage_ == CarryStage::kDeliver ||
+                    (!staged && !put_down && !evaluation_ && held_start_fraction_ > 0 &&
+                     e.rng.Uniform() < held_start_fraction_);
+  const bool at_box =
+      staged || put_down || held || (!evaluation_ && e.rng.Uniform() < kStartAtBoxFraction);
   Eigen::Vector2d start;
   double yaw;
   if (at_box) {
@@ -337,7 +381,9 @@ CarryFailure CarryTask::Check(const Env& e, const control::CarryBox& box) const 
   if (ph == CarryPhase::kCarry && e.s.phase_time_s > 1.0 && low < 0.03) return CarryFailure::kDrop;
   // training only: evaluation walks and carries up to 20 m, within its own time limit
   if (!evaluation_ && ((ph == CarryPhase::kApproach && e.s.phase_time_s > kMaxApproachSeconds) ||
-                       (ph == CarryPhase::kCarry && e.s.phase_time_s > kMaxCarrySeconds))) {
+                       (ph == CarryPhase::kCarry &&
+                        e.s.phase_time_s > (stage_ == CarryStage::kDeliver ? kMaxDeliverCarrySeconds
+                                                                           : kMaxCarrySeconds)))) {
     return CarryFailure::kStalled;
   }
   Eigen::Vector3d pelvis = Vec(d->xpos + 3 * a.pelvis_body);
@@ -449,6 +495,7 @@ void CarryTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   control::CarryBox box = control::ReadCarryBox(e.m, d, box_geom_);
   double reward = Reward(e, box, action, power);
   e.failure = Check(e, box);
+  const CarryPhase phase_before = e.s.phase;
   // success: after the put-down, the box at rest on the floor at the destination
   const double to_dest = (e.s.dest_xy - box.pos.head<2>()).norm();
   const bool placed = e.s.phase == CarryPhase::kRetreat && to_dest < kSuccessRadius &&
@@ -457,9 +504,23 @@ void CarryTask::Step(int i, const float* action, float* obs, StepInfo* info) {
   if (e.done_hold >= kSuccessHold) e.success = true;
   control::UpdateCarry(params_, e.m, e.scratch, d, ix_, box, &e.s);
   control::CarryObservation(d, ix_, e.s, box, obs);
+  // a stage ends with its last phase: the lift handed over held or not lifted, the box put down
+  // at the destination or not
+  const CarryPhase last = stage_ == CarryStage::kLift ? CarryPhase::kLift : CarryPhase::kPutDown;
+  const bool stage_ended = stage_ != CarryStage::kAll && phase_before == last && e.s.phase != last;
+  if (stage_ended && e.failure == CarryFailure::kNone) {
+    const bool ok = stage_ == CarryStage::kLift ? LiftHandedOver(d, ix_, box)
+                                                : Delivered(d, ix_, box, e.s.dest_xy);
+    if (ok) {
+      e.success = true;
+      reward += kStageSuccessBonus;
+    } else {
+      e.failure = stage_ == CarryStage::kLift ? CarryFailure::kNotLifted : CarryFailure::kNotPlaced;
+    }
+  }
   info->reward = static_cast<float>(reward);
   info->terminated = e.failure != CarryFailure::kNone;
-  info->truncated = e.steps >= max_steps_ || e.done_hold >= 2 * kSuccessHold;
+  info->truncated = e.steps >= max_steps_ || e.done_hold >= 2 * kSuccessHold || stage_ended;
   info->success = e.success;
 }
 

@@ -21,6 +21,15 @@
 /// training only: evaluation ends at its own time limit).
 /// Success: the box at rest on the floor within 0.2 m of the destination after the put-down, the
 /// human standing.
+///
+/// Stages train parts of the carry as skills of their own, chained at deployment with a walking
+/// policy for the approach and the retreat (docs/BENCHMARKS.md, issue 17, session 46):
+///  - the lift (task "carry-lift", CarryStage::kLift): every episode starts at the box (a share
+///    posed part-way into the squat) and ends when the lift does, a success if the box is handed
+///    over held (LiftHandedOver), a failure ("not lifted") if not;
+///  - the delivery (task "carry-deliver", CarryStage::kDeliver): every episode starts holding the
+///    box and ends when the put-down does, a success if the box rests on the floor within 0.2 m of
+///    the destination and the human stands (Delivered), a failure ("not put down") if not.
 
 #include <memory>
 #include <vector>
@@ -39,19 +48,47 @@ struct CarryRewardTerms {
 };
 
 /// Why a carry episode ended early (or kNone).
-enum class CarryFailure { kNone, kFall, kKick, kDrop, kLost, kStalled, kNonFinite };
+enum class CarryFailure {
+  kNone,
+  kFall,
+  kKick,
+  kDrop,
+  kLost,
+  kStalled,
+  kNotLifted,
+  kNotPlaced,
+  kNonFinite
+};
 const char* CarryFailureName(CarryFailure f);
+
+/// Which part of the carry an episode trains: all of it, the lift, or the carry and put-down.
+enum class CarryStage { kAll, kLift, kDeliver };
+/// The training task's name of a stage: "carry", "carry-lift", "carry-deliver".
+const char* CarryStageTask(CarryStage stage);
+
+/// Whether the lift hands the box over to the carry held: the box's bottom at least 0.3 m up
+/// and within 30 degrees of level, both hands touching it, the pelvis above 0.8 m and the trunk
+/// within 30 degrees of upright.
+bool LiftHandedOver(const mjData* d, const control::CarryIndex& ix, const control::CarryBox& box);
+
+/// Whether the put-down has delivered the box: resting on the floor (lowest corner under 3 cm,
+/// slower than 0.1 m/s) within 0.2 m of `dest_xy`, the pelvis above 0.8 m.
+bool Delivered(const mjData* d, const control::CarryIndex& ix, const control::CarryBox& box,
+               const Eigen::Vector2d& dest_xy);
 
 class CarryTask : public VecTask {
  public:
   /// `gait`: the walking reference gait (control::WalkGait name) of the walking policy the
   /// carry policy starts from. `grip`: the human's hands grip what they touch (the
   /// "humanoid_grip" kind, world::HumanoidSpec::grip_n) while they hold the box.
+  /// `stage`: the whole carry, or a part of it (CarryStageTask names the task).
   static core::StatusOr<std::unique_ptr<CarryTask>> Create(int num_envs, std::string_view gait = "",
-                                                           bool grip = false);
+                                                           bool grip = false,
+                                                           CarryStage stage = CarryStage::kAll);
   ~CarryTask() override;
 
-  std::string name() const override { return "carry"; }
+  std::string name() const override { return CarryStageTask(stage_); }
+  CarryStage stage() const { return stage_; }
   int num_envs() const override { return static_cast<int>(envs_.size()); }
   int obs_dim() const override { return control::kCarryObsDim; }
   int act_dim() const override { return control::kCarryActDim; }
@@ -152,6 +189,7 @@ class CarryTask : public VecTask {
   double curriculum_ = 0;
   bool evaluation_ = false;
   bool squat_support_ = false;
+  CarryStage stage_ = CarryStage::kAll;
   int max_steps_ = kMaxSteps;
   double held_start_fraction_ = kDefaultHeldStartFraction;
   double put_down_start_fraction_ = kDefaultPutDownStartFraction;

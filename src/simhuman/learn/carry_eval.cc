@@ -30,9 +30,30 @@ int MassBin(double kg) {
   return b;
 }
 
-// runs one episode on env 0 of `task` with the policy's mean action
-CarryEpisode RunOne(const CarryEvalOptions& o, int index, control::LoadedPolicy& pol,
-                    control::LoadedPolicy* approach, CarryTask& task) {
+// The policies of one run, and which of them acts in a phase.
+struct Policies {
+  control::LoadedPolicy* carry = nullptr;     // every phase no other policy takes
+  control::LoadedPolicy* approach = nullptr;  // a walking policy for the approach
+  control::LoadedPolicy* walker = nullptr;    // a walking policy for every walking phase
+  control::LoadedPolicy* lift = nullptr;      // a carry-lift policy
+  control::LoadedPolicy* deliver = nullptr;   // a carry-deliver policy
+
+  // the acting policy in `phase`, and whether it is a walking one (fed the walking part of the
+  // observation, its arm outputs unused)
+  control::LoadedPolicy& Acting(control::CarryPhase phase, bool* walking) const {
+    using control::CarryPhase;
+    control::LoadedPolicy* p = nullptr;
+    if (phase == CarryPhase::kApproach) p = walker ? walker : approach;
+    if (phase == CarryPhase::kCarry || phase == CarryPhase::kRetreat) p = walker;
+    if (phase == CarryPhase::kLift) p = lift;
+    if ((phase == CarryPhase::kCarry || phase == CarryPhase::kPutDown) && deliver) p = deliver;
+    *walking = p && (p == walker || p == approach);
+    return p ? *p : *carry;
+  }
+};
+
+// runs one episode on env 0 of `task` with the policies' mean actions
+CarryEpisode RunOne(const CarryEvalOptions& o, int index, const Policies& pols, CarryTask& task) {
   CarryEpisode ep;
   ep.index = index;
   const uint64_t seed = core::DeriveSeed(o.seed, static_cast<uint64_t>(index));
@@ -53,11 +74,15 @@ CarryEpisode RunOne(const CarryEvalOptions& o, int index, control::LoadedPolicy&
   StepInfo info;
   int steps = 0;
   for (; steps < max_steps; ++steps) {
-    const bool walk_up = approach && task.state(0).phase == control::CarryPhase::kApproach;
-    control::LoadedPolicy& acting = walk_up ? *approach : pol;
-    torch::Tensor x = torch::from_blob(obs.data(), {1, walk_up ? control::kWalkObsDim : od});
+    bool walking = false;
+    control::LoadedPolicy& acting = pols.Acting(task.state(0).phase, &walking);
+    torch::Tensor x = torch::from_blob(obs.data(), {1, walking ? control::kWalkObsDim : od});
     torch::Tensor a = acting.actor->forward(acting.norm.Normalize(x)).contiguous();
     std::copy(a.data_ptr<float>(), a.data_ptr<float>() + ad, act.begin());
+    // a walking policy never trained its arm outputs (the walk task ignores them)
+    for (int j = 0; walking && j < ad; ++j) {
+      if (!control::WalkActionUsed(j)) act[j] = 0.f;
+    }
     task.Step(0, act.data(), obs.data(), &info);
     if (info.terminated || info.truncated) break;
   }
@@ -73,25 +98,35 @@ CarryEpisode RunOne(const CarryEvalOptions& o, int index, control::LoadedPolicy&
   return ep;
 }
 
-// a walking policy of the carry policy's reference gait `gait`, for the approach
-core::StatusOr<control::LoadedPolicy> LoadApproachPolicy(const std::string& path,
-                                                         const std::string& gait) {
+// the policy file `path` given as `flag`, which must hold a `task` policy of `obs_dim` inputs
+// walking the carry policy's reference gait `gait` (and gripping as `grip` says, for a carry
+// task); `use` says what it is for
+core::StatusOr<control::LoadedPolicy> LoadPhasePolicy(const std::string& flag,
+                                                      const std::string& path,
+                                                      const std::string& task, int obs_dim,
+                                                      const std::string& use,
+                                                      const control::PolicyMeta& carry) {
   core::StatusOr<control::LoadedPolicy> p = control::LoadPolicyFile(path);
   if (!p.ok()) {
-    return absl::InvalidArgumentError("--approach-policy '" + path +
+    return absl::InvalidArgumentError(flag + " '" + path +
                                       "': " + std::string(p.status().message()));
   }
-  if (p->meta.task != "walk" || p->meta.obs_dim != control::kWalkObsDim ||
+  if (p->meta.task != task || p->meta.obs_dim != obs_dim ||
       p->meta.act_dim != control::kWalkActDim) {
-    return absl::InvalidArgumentError(
-        "--approach-policy '" + path + "' holds a '" + p->meta.task + "' policy (obs " +
-        std::to_string(p->meta.obs_dim) + "); the approach needs a 'walk' policy (obs " +
-        std::to_string(control::kWalkObsDim) + "), e.g. assets/policies/walk.pt");
+    return absl::InvalidArgumentError(flag + " '" + path + "' holds a '" + p->meta.task +
+                                      "' policy (obs " + std::to_string(p->meta.obs_dim) + "); " +
+                                      use + " needs a '" + task + "' policy (obs " +
+                                      std::to_string(obs_dim) + ")");
   }
-  if (p->meta.variant != gait) {
-    return absl::InvalidArgumentError("--approach-policy '" + path + "' walks the '" +
-                                      p->meta.variant + "' gait; the carry policy walks '" + gait +
-                                      "'");
+  if (p->meta.variant != carry.variant) {
+    return absl::InvalidArgumentError(flag + " '" + path + "' walks the '" + p->meta.variant +
+                                      "' gait; the carry policy walks '" + carry.variant + "'");
+  }
+  if (task != "walk" && p->meta.carry_grip != carry.carry_grip) {
+    return absl::InvalidArgumentError(
+        flag + " '" + path + "' was trained " + (p->meta.carry_grip ? "with" : "without") +
+        " gripping hands and the carry policy " + (carry.carry_grip ? "with" : "without") +
+        " them (carry_grip): train both alike");
   }
   p->actor->eval();
   return p;
@@ -122,10 +157,33 @@ core::StatusOr<CarryEvalSummary> RunCarryEval(
         std::to_string(control::kCarryObsDim) + "): simhuman train --task carry");
   }
   pol->actor->eval();
-  std::optional<control::LoadedPolicy> approach;
+  std::optional<control::LoadedPolicy> approach, walker, lift, deliver;
+  const std::string walk_use = "walking (e.g. assets/policies/walk.pt)";
   if (!o.approach_policy.empty()) {
-    SH_ASSIGN_OR_RETURN(approach, LoadApproachPolicy(o.approach_policy, pol->meta.variant));
+    SH_ASSIGN_OR_RETURN(approach, LoadPhasePolicy("--approach-policy", o.approach_policy, "walk",
+                                                  control::kWalkObsDim, "the approach", pol->meta));
   }
+  if (!o.walker.empty()) {
+    SH_ASSIGN_OR_RETURN(walker, LoadPhasePolicy("--walker", o.walker, "walk", control::kWalkObsDim,
+                                                walk_use, pol->meta));
+  }
+  if (!o.lift_policy.empty()) {
+    SH_ASSIGN_OR_RETURN(
+        lift, LoadPhasePolicy("--lift-policy", o.lift_policy, "carry-lift", control::kCarryObsDim,
+                              "the lift (simhuman train --task carry-lift)", pol->meta));
+  }
+  if (!o.deliver_policy.empty()) {
+    SH_ASSIGN_OR_RETURN(
+        deliver, LoadPhasePolicy(
+                     "--deliver-policy", o.deliver_policy, "carry-deliver", control::kCarryObsDim,
+                     "the carry and put-down (simhuman train --task carry-deliver)", pol->meta));
+  }
+  Policies pols;
+  pols.carry = &*pol;
+  if (approach) pols.approach = &*approach;
+  if (walker) pols.walker = &*walker;
+  if (lift) pols.lift = &*lift;
+  if (deliver) pols.deliver = &*deliver;
   SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> task,
                       CarryTask::Create(1, pol->meta.variant, pol->meta.carry_grip));
   task->set_curriculum(1.0);
@@ -140,7 +198,7 @@ core::StatusOr<CarryEvalSummary> RunCarryEval(
   double precision_sum = 0;
   int successes = 0, falls = 0;
   for (int i = 0; i < o.episodes; ++i) {
-    CarryEpisode ep = RunOne(o, i, *pol, approach ? &*approach : nullptr, *task);
+    CarryEpisode ep = RunOne(o, i, pols, *task);
     successes += ep.success;
     falls += ep.fell;
     if (ep.success) precision_sum += ep.final_dist_m;
@@ -182,6 +240,9 @@ nlohmann::ordered_json CarrySummaryJson(const CarryEvalSummary& s, const CarryEv
           {"success_by_mass", by_mass},
           {"policy", o.policy},
           {"approach_policy", o.approach_policy},
+          {"walker", o.walker},
+          {"lift_policy", o.lift_policy},
+          {"deliver_policy", o.deliver_policy},
           {"seed", o.seed},
           {"dist_m", {o.min_dist_m, o.max_dist_m}},
           {"mass_kg", {o.min_mass_kg, o.max_mass_kg}},

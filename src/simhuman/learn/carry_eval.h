@@ -26,6 +26,17 @@ struct CarryEvalOptions {
   /// the approach phase instead of the carry policy (which takes over at the lift); empty: the
   /// carry policy walks up too. The carry observation begins with the walking one.
   std::string approach_policy;
+  /// A walking policy file (same gait) that walks every walking phase: the approach, the carry
+  /// (shown its own arm swing: control::CarryBlindArms) and the retreat; its arm outputs are
+  /// unused (the arms follow the task's reference and grip). Empty: the policies above walk.
+  std::string walker;
+  /// A lift policy file (simhuman train --task carry-lift, same gait and grip) that drives the
+  /// lift; empty: the carry policy lifts.
+  std::string lift_policy;
+  /// A delivery policy file (simhuman train --task carry-deliver, same gait and grip) that drives
+  /// the carry and the put-down; empty: the walker (or the carry policy) carries and the carry
+  /// policy puts down.
+  std::string deliver_policy;
   int episodes = 100;
   uint64_t seed = 1;
   double min_dist_m = 1.0, max_dist_m = 20.0;  ///< box to destination

@@ -16,9 +16,10 @@ const std::string kWalk = std::string(SIMHUMAN_SOURCE_DIR) + "/assets/policies/w
 
 // the policy file of a carry run checkpointed before any update, in the shipped walker's gait
 // (its weights from the walker with `from_walker`, untrained otherwise)
-core::StatusOr<std::string> FreshCarryPolicy(const std::string& name, bool from_walker) {
+core::StatusOr<std::string> FreshCarryPolicy(const std::string& name, bool from_walker,
+                                             const std::string& task = "carry") {
   PpoConfig cfg;
-  cfg.task = "carry";
+  cfg.task = task;
   cfg.num_envs = 1;
   cfg.threads = 1;
   if (from_walker) {
@@ -141,6 +142,47 @@ TEST(CarryEval, AnApproachPolicyWalksUpToTheBoxIntegration) {
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.status().message().find("needs a 'walk' policy"), std::string::npos)
       << bad.status();
+}
+
+// The phase policies (--walker, --lift-policy, --deliver-policy) are each checked for their
+// task by flag, and a chain of them runs: the walker walks up (every episode gets past the
+// approach, where the untrained carry policy alone falls), the lift policy lifts; the summary
+// names them.
+TEST(CarryEval, AChainOfPhasePoliciesRunsAndEachIsCheckedIntegration) {
+  auto carry = FreshCarryPolicy("carry_chain", false);
+  ASSERT_TRUE(carry.ok()) << carry.status();
+  auto lift = FreshCarryPolicy("carry_chain_lift", false, "carry-lift");
+  ASSERT_TRUE(lift.ok()) << lift.status();
+  CarryEvalOptions o;
+  o.policy = *carry;
+  o.episodes = 3;
+  o.base_time_s = 8;
+  o.max_dist_m = 2;
+  o.walker = *carry;  // a carry policy as the walker
+  auto bad = RunCarryEval(o, nullptr);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("--walker"), std::string::npos) << bad.status();
+  EXPECT_NE(bad.status().message().find("needs a 'walk' policy"), std::string::npos);
+  o.walker = kWalk;
+  o.lift_policy = *carry;  // a whole-carry policy as the lift policy
+  bad = RunCarryEval(o, nullptr);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("--lift-policy"), std::string::npos) << bad.status();
+  EXPECT_NE(bad.status().message().find("needs a 'carry-lift' policy"), std::string::npos);
+  o.lift_policy = *lift;
+  o.deliver_policy = *lift;  // a lift policy as the delivery policy
+  bad = RunCarryEval(o, nullptr);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("--deliver-policy"), std::string::npos) << bad.status();
+  o.deliver_policy.clear();
+  std::vector<CarryEpisode> eps;
+  auto s = RunCarryEval(o, &eps);
+  ASSERT_TRUE(s.ok()) << s.status();
+  EXPECT_EQ(CarrySummaryJson(*s, o)["walker"], kWalk);
+  EXPECT_EQ(CarrySummaryJson(*s, o)["lift_policy"], *lift);
+  int past_the_approach = 0;
+  for (const CarryEpisode& e : eps) past_the_approach += e.last_phase != "approach";
+  EXPECT_EQ(past_the_approach, 3);
 }
 
 }  // namespace

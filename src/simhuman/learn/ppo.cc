@@ -135,6 +135,18 @@ struct PpoTrainer::Impl {
     return absl::OkStatus();
   }
 
+  // " (it may start from a 'walk' or 'carry' policy)", or "" for a task that only starts from
+  // its own
+  static std::string InitSources(const TaskDef& def) {
+    std::vector<std::string> from;
+    if (!def.init_parent.empty()) from.push_back("'" + def.init_parent + "'");
+    for (const std::string& p : def.init_peers) from.push_back("'" + p + "'");
+    if (from.empty()) return "";
+    std::string list = from[0];
+    for (size_t k = 1; k < from.size(); ++k) list += " or " + from[k];
+    return " (it may start from a " + list + " policy)";
+  }
+
   // copies the policy of cfg.init_from (if any) into the fresh actor and normalizer
   absl::Status InitFrom() {
     if (cfg.init_from.empty()) return absl::OkStatus();
@@ -146,15 +158,15 @@ struct PpoTrainer::Impl {
     SH_ASSIGN_OR_RETURN(const TaskDef* def, FindTask(cfg.task));
     const bool parent =
         !def->init_parent.empty() && p->meta.task == def->init_parent && p->meta.obs_dim < d;
-    if ((p->meta.task != cfg.task && !parent) || (!parent && p->meta.obs_dim != d) ||
+    const bool peer = std::find(def->init_peers.begin(), def->init_peers.end(), p->meta.task) !=
+                      def->init_peers.end();
+    if ((p->meta.task != cfg.task && !parent && !peer) || (!parent && p->meta.obs_dim != d) ||
         p->meta.act_dim != a || p->meta.hidden != cfg.hidden) {
       return absl::InvalidArgumentError(
           where + " holds a '" + p->meta.task + "' policy (obs " + std::to_string(p->meta.obs_dim) +
           ", act " + std::to_string(p->meta.act_dim) + ", hidden " + Widths(p->meta.hidden) +
           ") but this run is '" + cfg.task + "' (obs " + std::to_string(d) + ", act " +
-          std::to_string(a) + ", hidden " + Widths(cfg.hidden) + ")" +
-          (def->init_parent.empty() ? ""
-                                    : " (it may start from a '" + def->init_parent + "' policy)") +
+          std::to_string(a) + ", hidden " + Widths(cfg.hidden) + ")" + InitSources(*def) +
           "; set \"hidden\" to match");
     }
     if (TaskHasWalkGait(cfg.task) && TaskHasWalkGait(p->meta.task) &&

@@ -137,11 +137,9 @@ absl::Status PpoConfig::Validate() const {
   if (absl::Status s = CheckWalkGaitTask(task, walk_gait); !s.ok()) {
     return core::Annotate(s, "training config");
   }
-  if (carry_grip && task != "carry") {
+  if (carry_grip && !TaskIsCarry(task)) {
     return absl::InvalidArgumentError(
-        "training config: carry_grip applies to the carry task "
-        "only; task is '" +
-        task + "'");
+        "training config: carry_grip applies to the carry tasks only; task is '" + task + "'");
   }
   const PpoConfig defaults;
   if (task != "carry" && carry_held_start_frac != defaults.carry_held_start_frac) {

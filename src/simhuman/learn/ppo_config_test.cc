@@ -83,7 +83,7 @@ TEST(PpoConfigTable, ErrorsNameTheKeyTheValueAndWhatIsValid) {
             "'carry'");
   EXPECT_EQ(Error(json{{"task", "fly"}}),
             "training config 'task' = \"fly\" is invalid; valid values are: walk, reach, carry, "
-            "grasp, grasp-residual, place");
+            "carry-lift, carry-deliver, grasp, grasp-residual, place");
   EXPECT_EQ(Error(json{{"hidden", json::array()}}),
             "training config 'hidden' = [] is invalid; it needs at least 1 entry");
   EXPECT_THAT(Error(json{{"amp_disc_hidden", {256, -1}}}),

@@ -39,6 +39,29 @@ const std::vector<TaskDef>& Tasks() {
          return std::unique_ptr<VecTask>(std::move(t));
        },
        "walk", false},
+      {"carry-lift",
+       "the carry's lift alone: squat at the box, press both hands on it, rise holding it; "
+       "success is the box up and level between both hands of a standing human",
+       [](int envs, const TaskOptions& o) -> core::StatusOr<std::unique_ptr<VecTask>> {
+         SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> t,
+                             CarryTask::Create(envs, o.walk_gait, o.carry_grip, CarryStage::kLift));
+         return std::unique_ptr<VecTask>(std::move(t));
+       },
+       "walk",
+       false,
+       {"carry"}},
+      {"carry-deliver",
+       "the carry's delivery alone: holding the box, walk to the destination and put it down; "
+       "success is the box resting there within 0.2 m and the human standing",
+       [](int envs, const TaskOptions& o) -> core::StatusOr<std::unique_ptr<VecTask>> {
+         SH_ASSIGN_OR_RETURN(
+             std::unique_ptr<CarryTask> t,
+             CarryTask::Create(envs, o.walk_gait, o.carry_grip, CarryStage::kDeliver));
+         return std::unique_ptr<VecTask>(std::move(t));
+       },
+       "walk",
+       false,
+       {"carry"}},
       {"grasp",
        "DASH's grasp stage: close a dexterous hand around a table object and hold it through a "
        "drop test",

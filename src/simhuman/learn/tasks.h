@@ -40,6 +40,9 @@ struct TaskDef {
   std::string init_parent;
   /// Whether the task accepts the "pgs" solver.
   bool solver_choice = false;
+  /// Tasks of the same observation and actions whose policies may initialise this one as they
+  /// are (e.g. the carry policy starts the lift stage's training).
+  std::vector<std::string> init_peers = {};
 };
 
 const std::vector<TaskDef>& Tasks();
@@ -54,8 +57,10 @@ core::StatusOr<const TaskDef*> FindTask(std::string_view name);
 std::vector<std::string> TaskNames();
 /// Whether `name` accepts body scales other than 1 (the walk task).
 bool TaskHasBodyScales(std::string_view name);
-/// Whether `name` walks to a reference gait that `walk_gait` chooses (walk, carry).
+/// Whether `name` walks to a reference gait that `walk_gait` chooses (walk and the carry tasks).
 bool TaskHasWalkGait(std::string_view name);
+/// Whether `name` is one of the carrying tasks (carry, carry-lift, carry-deliver).
+bool TaskIsCarry(std::string_view name);
 /// InvalidArgument naming both when a non-empty walk gait `gait` is given for a task without one.
 absl::Status CheckWalkGaitTask(std::string_view task, std::string_view gait);
 /// Whether `name` accepts the "pgs" solver (TaskDef::solver_choice).

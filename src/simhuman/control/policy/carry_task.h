@@ -39,9 +39,16 @@ const char* CarryPhaseName(CarryPhase p);
 
 /// Geometry of the skill (defaults are what the shipped policy trains with).
 struct CarryParams {
-  double stand_gap_m = 0.20;       ///< stand point to the box's near face (pelvis over the feet)
-  double hold_gap_m = 0.16;        ///< pelvis to the held box's near face while carrying
-  double hold_rise_m = 0.02;       ///< held box centre above the pelvis
+  double stand_gap_m = 0.20;  ///< stand point to the box's near face (pelvis over the feet)
+  /// pelvis to the held box's near face while carrying, and the held box centre above the
+  /// pelvis: at the chest, close in, where the swinging thighs do not reach it (0.16 m and
+  /// 0.02 m until session 46: the box hung at the hips and the knees kicked it round)
+  double hold_gap_m = 0.08;
+  double hold_rise_m = 0.20;
+  /// the holding pose leans the trunk back by this much per kilogram held (rad/kg), the arms
+  /// and box with it, so the load's weight stays over the feet (docs/BENCHMARKS.md, issue 17,
+  /// session 46)
+  double hold_lean_rad_per_kg = 0.02;
   double open_m = 0.02;            ///< hands outside the side faces before squeezing
   double squeeze_m = 0.04;         ///< hand targets inside the side faces (the press)
   double grasp_frac = 0.80;        ///< grasp height as a fraction of the box height
@@ -97,6 +104,7 @@ struct CarryPoses {
   double squat_pelvis_z = 0.9;                      ///< pelvis height of the squat, m
   double squat_pitch_rad = 0;  ///< forward pitch of the pelvis that balances the squat
   double ik_error_m = 0;       ///< worst hand distance to its keyframe point (diagnostic)
+  double hold_lean_rad = 0;    ///< the carry's lean back from `hold` (LiftGeometry::hold_lean_rad)
 };
 
 /// Task state of one carrying agent.
@@ -115,6 +123,8 @@ struct CarryState {
   int held_axis = 1;  ///< box axis (0 x, 1 y) normal to the held faces
   CarryPoses poses;
   std::array<double, kWalkActDim> grip{};  ///< grip servo offsets on the arm targets, rad
+  /// the approach walks the line that ends at the stand point (else it heads for that line)
+  bool approach_on_line = false;
 };
 
 /// Indices the task reads: the walking ones plus the hand sites.
@@ -136,6 +146,7 @@ struct LiftGeometry {
   Eigen::Vector3d left_out = Eigen::Vector3d::UnitY(), right_out = -Eigen::Vector3d::UnitY();
   double half_x = 0.25, half_y = 0.25;  ///< box half extents along and across the heading
   double held_dx = 0, held_dz = 0;      ///< held points' offset from the box centre
+  double hold_lean_rad = 0;  ///< the holding trunk's lean back (CarryParams::hold_lean_rad_per_kg)
 };
 
 /// Solves the keyframes with a balanced squat (centre of mass over the feet) and a small
