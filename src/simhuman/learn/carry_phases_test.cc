@@ -93,9 +93,9 @@ TEST(CarryPhases, HoldingTheBoxAtTheStandPointStartsThePutDownWhateverTheHeading
       s.near_stand_s = 0;
       s.stand_xy = xy + off_m * Eigen::Vector2d(-std::sin(yaw), std::cos(yaw));
       s.walk.target_xy = s.stand_xy;
-      // the destination ahead, within the metre whose line the carry keeps, with the held box
-      // short of it
-      s.dest_xy = s.stand_xy + 0.9 * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
+      // the destination just ahead of the held box (whose line the carry keeps), not reached
+      const control::CarryBox box = control::ReadCarryBox(f.m, f.d, t->box_geom());
+      s.dest_xy = box.pos.head<2>() + 0.25 * Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
       s.walk.target_yaw_rad = yaw + heading_err;
       const int steps = f.StepsToLeave(*t, CarryPhase::kCarry, 3.0, &s);
       SCOPED_TRACE(testing::Message() << "heading error " << heading_err << ", " << off_m << " m");

@@ -13,7 +13,7 @@ constexpr double kApproachLineM = 0.6, kOnLineEnterM = 0.12, kOnLineLeaveM = 0.2
 // the carry aims this far past its stand point, and puts down a box that passes the destination
 // at most this far beside it
 constexpr double kCarryLeadM = 1.0, kCarryLateralM = 0.2;
-constexpr double kCarryReaimM = 1.0;  // the carry's last metre keeps its line (SteerCarry)
+constexpr double kCarryReaimM = 0.3;  // the carry's last 0.3 m keep their line (SteerCarry)
 
 }  // namespace
 
@@ -47,23 +47,24 @@ void SteerApproach(const CarryParams& p, const mjData* d, const CarryIndex& ix, 
   s->walk.target_xy = aim + (to.norm() > 1e-6 ? p.approach_lead_m * to.normalized() : f);
 }
 
-// The carry's walking target, from where the pelvis is now: walk so that the held box centre
-// comes over the destination, facing along the way (re-aimed every step, since a walker holding a
-// box drifts off a fixed line by decimetres in a metre or two), aiming a metre past the stand
-// point so the walk does not slow down short of it (a walking policy holding a box shuffles on the
-// spot at slow commands); the held box reaching the destination starts the put-down
-// (CarryReachedDestination). Within kCarryReaimM of the destination the line is kept, unless the
-// carry is `entering` (then a destination under the pelvis keeps its heading).
-void SteerCarry(const CarryParams& p, const Eigen::Vector2d& pelvis, bool entering, CarryState* s) {
-  const Eigen::Vector2d way = s->dest_xy - pelvis;
-  if (way.norm() <= (entering ? 0.3 : kCarryReaimM)) {
+// The carry's walking target, from where the pelvis and the held box are now: the stand point
+// puts the box (wherever it is in the arms: it swings 0.3 m to a side) over the destination,
+// facing along the way from the box; re-aimed every step (a walker holding a box drifts off a fixed
+// line by decimetres in a metre or two), aiming a metre past the stand point so the walk does not
+// slow down short of it (a walking policy holding a box shuffles on the spot at slow commands);
+// the held box reaching the destination starts the put-down (CarryReachedDestination). Within
+// kCarryReaimM of the destination the line is kept, unless the carry is `entering` (then a box
+// over the destination keeps the current heading).
+void SteerCarry(const Eigen::Vector2d& pelvis, const Eigen::Vector2d& box, bool entering,
+                CarryState* s) {
+  const Eigen::Vector2d way = s->dest_xy - box;
+  if (way.norm() <= kCarryReaimM) {
     if (!entering) return;
   } else {
     s->face_dir = way.normalized();
   }
   const Eigen::Vector2d f = s->face_dir;
-  SetCarryWalkTarget(s, s->dest_xy - (p.hold_gap_m + s->half_stand.x()) * f,
-                     std::atan2(f.y(), f.x()), kCarryLeadM * f);
+  SetCarryWalkTarget(s, s->dest_xy - (box - pelvis), std::atan2(f.y(), f.x()), kCarryLeadM * f);
 }
 
 // Whether the held box has come to the destination: within put_down_box_radius_m of it, or

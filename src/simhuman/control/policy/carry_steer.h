@@ -20,9 +20,10 @@ void SetCarryWalkTarget(CarryState* s, const Eigen::Vector2d& xy, double yaw,
 /// that ends there along the facing direction, else the start of that line.
 void SteerApproach(const CarryParams& p, const mjData* d, const CarryIndex& ix, CarryState* s);
 
-/// The carry's stand point and walking target from the pelvis at `pelvis` (re-aimed at the
-/// destination; `entering`: the carry's first step).
-void SteerCarry(const CarryParams& p, const Eigen::Vector2d& pelvis, bool entering, CarryState* s);
+/// The carry's stand point and walking target from the pelvis at `pelvis` and the held box's
+/// centre at `box` (re-aimed at the destination; `entering`: the carry's first step).
+void SteerCarry(const Eigen::Vector2d& pelvis, const Eigen::Vector2d& box, bool entering,
+                CarryState* s);
 
 /// Whether the held box has come to the destination (the put-down starts).
 bool CarryReachedDestination(const CarryParams& p, const CarryBox& box, const CarryState& s);

@@ -535,11 +535,11 @@ void UpdateCarry(const CarryParams& p, const mjModel* m, mjData* scratch, const 
         Enter(s, CarryPhase::kCarry);
         s->gait.vmax_mps = std::min(p.walk.vmax_mps, p.carry_vmax_mps);
         s->face_dir = Eigen::Vector2d(std::cos(yaw), std::sin(yaw));
-        SteerCarry(p, pos.head<2>(), true, s);
+        SteerCarry(pos.head<2>(), box.pos.head<2>(), true, s);
       }
       break;
     case CarryPhase::kCarry:
-      SteerCarry(p, pos.head<2>(), false, s);
+      SteerCarry(pos.head<2>(), box.pos.head<2>(), false, s);
       if (Arrived(p, d, ix, s) || CarryReachedDestination(p, box, *s)) StartPutDown(p, d, ix, s);
       break;
     case CarryPhase::kPutDown:
