@@ -10,8 +10,9 @@
 //                              [--mpc SAMPLES] [--mpc-sigma S] [--mpc-horizon T]
 //                              [--walker FILE] [--dest M] [--vmax MPS]
 //                              [--hold-rise M] [--hold-gap M] [--lean RAD_PER_KG]
+//                              [--open M] [--hinge RAD]
 //
-// --walker FILE drives the carry phase with a walking policy (task "walk", e.g.
+// --walker FILE drives the carry and retreat phases with a walking policy (task "walk", e.g.
 // assets/policies/walk.pt): the action is the walker's output for the first kWalkObsDim entries
 // of the carry observation (the walking observation, whose arm entries the carry task shows
 // "blind" while it holds the arms: control::CarryBlindArms), with its arm outputs zeroed
@@ -49,7 +50,8 @@ struct Args {
   double side = -1, mass = -1;  // < 0: drawn
   double seconds = 6;
   double stand_gap = -1, grasp_frac = -1, hold_rise = -9, hold_gap = -1, lean = -1;
-  double pose_at = -1;  // >= 0: start posed inside the lift at this time (s)
+  double open = -1, hinge = -1;  // the lift's open hands and stoop (CarryParams)
+  double pose_at = -1;           // >= 0: start posed inside the lift at this time (s)
   double reach_depth = -1;
   double torsion = -1;    // >= 0: the box's torsional friction (condim 3 at 0)
   bool contacts = false;  // print every contact and its normal force
@@ -92,6 +94,10 @@ Args Parse(int argc, char** argv) {
       a.hold_gap = std::atof(v);
     else if (k == "--lean")
       a.lean = std::atof(v);
+    else if (k == "--open")
+      a.open = std::atof(v);
+    else if (k == "--hinge")
+      a.hinge = std::atof(v);
     else if (k == "--pose-at")
       a.pose_at = std::atof(v);
     else if (k == "--reach-depth")
@@ -277,7 +283,8 @@ void ChooseAction(Probe& p, std::vector<float>& obs, std::vector<float>& act,
   sh::learn::CarryTask& t = *p.t;
   const int od = t.obs_dim(), ad = t.act_dim();
   std::fill(act.begin(), act.end(), 0.f);
-  if (p.walker && t.state(0).phase == CarryPhase::kCarry) {
+  const CarryPhase ph = t.state(0).phase;  // the walker walks the carry and the retreat, as in eval
+  if (p.walker && (ph == CarryPhase::kCarry || ph == CarryPhase::kRetreat)) {
     WalkerAction(*p.walker, obs.data(), act.data());
     return;
   }
@@ -309,6 +316,12 @@ void PrintStatus(Probe& p, const sh::control::CarryBox& box) {
   const double miss_l = (Eigen::Vector3d(d->site_xpos + 3 * ix.left_hand_site) - held_l).norm();
   const double miss_r = (Eigen::Vector3d(d->site_xpos + 3 * ix.right_hand_site) - held_r).norm();
   std::printf("  miss %.2f %.2f", miss_l, miss_r);
+  {  // the box's pitch: its up axis along the heading (+: its top turned forward)
+    Eigen::Vector3d pelvis;
+    double yaw;
+    sh::control::PelvisPose(d, ix.walk, &pelvis, &yaw);
+    std::printf(" up-fwd %+.2f", std::cos(yaw) * box.rot(0, 2) + std::sin(yaw) * box.rot(1, 2));
+  }
   std::printf(
       "  t %.2f %-8s pelvis z %.2f  box low %.3f tilt %3.0f  hands %4.0f %4.0f N  com ahead "
       "%+.3f  to dest %.2f\n",
@@ -551,6 +564,8 @@ int main(int argc, char** argv) {
   if (a.hold_rise > -9) params.hold_rise_m = a.hold_rise;
   if (a.hold_gap >= 0) params.hold_gap_m = a.hold_gap;
   if (a.lean >= 0) params.hold_lean_rad_per_kg = a.lean;
+  if (a.open >= 0) params.open_m = a.open;
+  if (a.hinge >= 0) params.squat_hinge_rad = a.hinge;
   if (a.reach_depth >= 0) params.max_reach_depth_m = a.reach_depth;
   if (a.vmax > 0) params.walk.vmax_mps = params.carry_vmax_mps = a.vmax;
   sh::core::Rng rng(a.seed);

@@ -32,6 +32,7 @@ int CarryEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& er
   o.walker = flags.walker;
   o.lift_policy = flags.lift_policy;
   o.deliver_policy = flags.deliver_policy;
+  o.model_squats = flags.model_squats;
   if (o.policy.empty()) {
     return ReportError(err, kCommand,
                        absl::InvalidArgumentError(
@@ -47,8 +48,8 @@ int CarryEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& er
       << o.policy << (o.approach_policy.empty() ? std::string() : ", approach " + o.approach_policy)
       << (o.walker.empty() ? std::string() : ", walker " + o.walker)
       << (o.lift_policy.empty() ? std::string() : ", lift " + o.lift_policy)
-      << (o.deliver_policy.empty() ? std::string() : ", deliver " + o.deliver_policy) << " -> "
-      << dir << std::endl;
+      << (o.deliver_policy.empty() ? std::string() : ", deliver " + o.deliver_policy)
+      << (o.model_squats ? ", model-based squats" : "") << " -> " << dir << std::endl;
   out << "  ep mass_kg side_m dist_m ok   fell  time_s  end_cm  phase      end" << std::endl;
   core::StatusOr<learn::CarryEvalSummary> s =
       learn::RunCarryEval(o, nullptr, [&](const learn::CarryEpisode& e) {

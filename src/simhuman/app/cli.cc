@@ -200,6 +200,9 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
   eval_cmd->add_option("--deliver-policy", ev->deliver_policy,
                        "carry: a delivery policy file (simhuman train --task carry-deliver) that "
                        "carries the box and puts it down");
+  eval_cmd->add_flag("--model-squats", ev->model_squats,
+                     "carry: lift and put down with the model-based controller (keyframes and "
+                     "quasi-static support, no policy)");
   eval_cmd
       ->add_option("--first-episode", ev->first_episode,
                    "tabletop, place, stack: start at this episode of the seed's run (e.g. 200 "

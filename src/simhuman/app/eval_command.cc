@@ -22,6 +22,9 @@
 namespace simhuman::app {
 namespace {
 
+// stands for a boolean flag in the checks of string-valued flags: set (non-empty) or not
+const std::string kFlagSet = "set", kFlagUnset;
+
 const char kCommand[] = "eval";
 
 std::string Row(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -359,7 +362,8 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
        {std::pair<const char*, const std::string*>{"--approach-policy", &flags.approach_policy},
         {"--walker", &flags.walker},
         {"--lift-policy", &flags.lift_policy},
-        {"--deliver-policy", &flags.deliver_policy}}) {
+        {"--deliver-policy", &flags.deliver_policy},
+        {"--model-squats", flags.model_squats ? &kFlagSet : &kFlagUnset}}) {
     if (value->empty() || suite->controller == eval::SuiteController::kCarryPolicy) continue;
     return ReportError(
         err, kCommand,

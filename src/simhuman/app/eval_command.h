@@ -50,6 +50,7 @@ struct EvalFlags {
   std::string walker;           ///< carry: a walking policy for every walking phase
   std::string lift_policy;      ///< carry: a carry-lift policy for the lift
   std::string deliver_policy;   ///< carry: a carry-deliver policy for the carry and put-down
+  bool model_squats = false;    ///< carry: the lift and put-down by the model-based controller
   /// Tabletop suites: "truth" or "vision" (the head camera and the vision model).
   std::string perception = "truth";
   /// The vision suite and --perception vision: a model file (simhuman train --task vision); empty:

@@ -37,18 +37,23 @@ struct Policies {
   control::LoadedPolicy* walker = nullptr;    // a walking policy for every walking phase
   control::LoadedPolicy* lift = nullptr;      // a carry-lift policy
   control::LoadedPolicy* deliver = nullptr;   // a carry-deliver policy
+  bool model_squats = false;                  // no policy in the lift and the put-down
 
-  // the acting policy in `phase`, and whether it is a walking one (fed the walking part of the
-  // observation, its arm outputs unused)
-  control::LoadedPolicy& Acting(control::CarryPhase phase, bool* walking) const {
+  // the acting policy in `phase` (null: none, zero action), and whether it is a walking one (fed
+  // the walking part of the observation, its arm outputs unused)
+  control::LoadedPolicy* Acting(control::CarryPhase phase, bool* walking) const {
     using control::CarryPhase;
+    *walking = false;
+    if (model_squats && (phase == CarryPhase::kLift || phase == CarryPhase::kPutDown)) {
+      return nullptr;
+    }
     control::LoadedPolicy* p = nullptr;
     if (phase == CarryPhase::kApproach) p = walker ? walker : approach;
     if (phase == CarryPhase::kCarry || phase == CarryPhase::kRetreat) p = walker;
     if (phase == CarryPhase::kLift) p = lift;
     if ((phase == CarryPhase::kCarry || phase == CarryPhase::kPutDown) && deliver) p = deliver;
     *walking = p && (p == walker || p == approach);
-    return p ? *p : *carry;
+    return p ? p : carry;
   }
 };
 
@@ -75,10 +80,14 @@ CarryEpisode RunOne(const CarryEvalOptions& o, int index, const Policies& pols, 
   int steps = 0;
   for (; steps < max_steps; ++steps) {
     bool walking = false;
-    control::LoadedPolicy& acting = pols.Acting(task.state(0).phase, &walking);
-    torch::Tensor x = torch::from_blob(obs.data(), {1, walking ? control::kWalkObsDim : od});
-    torch::Tensor a = acting.actor->forward(acting.norm.Normalize(x)).contiguous();
-    std::copy(a.data_ptr<float>(), a.data_ptr<float>() + ad, act.begin());
+    control::LoadedPolicy* acting = pols.Acting(task.state(0).phase, &walking);
+    if (acting) {
+      torch::Tensor x = torch::from_blob(obs.data(), {1, walking ? control::kWalkObsDim : od});
+      torch::Tensor a = acting->actor->forward(acting->norm.Normalize(x)).contiguous();
+      std::copy(a.data_ptr<float>(), a.data_ptr<float>() + ad, act.begin());
+    } else {
+      std::fill(act.begin(), act.end(), 0.f);
+    }
     // a walking policy never trained its arm outputs (the walk task ignores them)
     for (int j = 0; walking && j < ad; ++j) {
       if (!control::WalkActionUsed(j)) act[j] = 0.f;
@@ -167,6 +176,13 @@ core::StatusOr<CarryEvalSummary> RunCarryEval(
     SH_ASSIGN_OR_RETURN(walker, LoadPhasePolicy("--walker", o.walker, "walk", control::kWalkObsDim,
                                                 walk_use, pol->meta));
   }
+  if (o.model_squats && (!o.lift_policy.empty() || !o.deliver_policy.empty())) {
+    return absl::InvalidArgumentError(
+        std::string("--model-squats and ") +
+        (o.lift_policy.empty() ? "--deliver-policy" : "--lift-policy") +
+        " both drive a squat: give one of them (--model-squats: the lift and the put-down; "
+        "--lift-policy: the lift; --deliver-policy: the carry and the put-down)");
+  }
   if (!o.lift_policy.empty()) {
     SH_ASSIGN_OR_RETURN(
         lift, LoadPhasePolicy("--lift-policy", o.lift_policy, "carry-lift", control::kCarryObsDim,
@@ -184,8 +200,10 @@ core::StatusOr<CarryEvalSummary> RunCarryEval(
   if (walker) pols.walker = &*walker;
   if (lift) pols.lift = &*lift;
   if (deliver) pols.deliver = &*deliver;
+  pols.model_squats = o.model_squats;
   SH_ASSIGN_OR_RETURN(std::unique_ptr<CarryTask> task,
                       CarryTask::Create(1, pol->meta.variant, pol->meta.carry_grip));
+  task->set_squat_support(o.model_squats);
   task->set_curriculum(1.0);
   CarryEvalSummary s;
   s.mass_bin_episodes.assign(kMassBins, 0);
@@ -243,6 +261,7 @@ nlohmann::ordered_json CarrySummaryJson(const CarryEvalSummary& s, const CarryEv
           {"walker", o.walker},
           {"lift_policy", o.lift_policy},
           {"deliver_policy", o.deliver_policy},
+          {"model_squats", o.model_squats},
           {"seed", o.seed},
           {"dist_m", {o.min_dist_m, o.max_dist_m}},
           {"mass_kg", {o.min_mass_kg, o.max_mass_kg}},

@@ -37,6 +37,10 @@ struct CarryEvalOptions {
   /// the carry and the put-down; empty: the walker (or the carry policy) carries and the carry
   /// policy puts down.
   std::string deliver_policy;
+  /// The lift and the put-down by the model-based controller instead of a policy: the keyframe
+  /// reference with quasi-static support (control/policy/carry_support.h) and no residual
+  /// action. Excludes lift_policy and deliver_policy.
+  bool model_squats = false;
   int episodes = 100;
   uint64_t seed = 1;
   double min_dist_m = 1.0, max_dist_m = 20.0;  ///< box to destination

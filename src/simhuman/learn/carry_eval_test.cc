@@ -185,5 +185,32 @@ TEST(CarryEval, AChainOfPhasePoliciesRunsAndEachIsCheckedIntegration) {
   EXPECT_EQ(past_the_approach, 3);
 }
 
+// --model-squats: the model-based lift and put-down replace the policies there; a lift or
+// delivery policy given as well is an error naming both flags
+TEST(CarryEval, ModelSquatsReplaceTheSquatPoliciesIntegration) {
+  auto carry = FreshCarryPolicy("carry_model_squats", false);
+  ASSERT_TRUE(carry.ok()) << carry.status();
+  CarryEvalOptions o;
+  o.policy = *carry;
+  o.episodes = 2;
+  o.base_time_s = 8;
+  o.max_dist_m = 2;
+  o.walker = kWalk;
+  o.model_squats = true;
+  o.deliver_policy = *carry;
+  auto bad = RunCarryEval(o, nullptr);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("--model-squats and --deliver-policy"), std::string::npos)
+      << bad.status();
+  o.deliver_policy.clear();
+  std::vector<CarryEpisode> eps;
+  auto s = RunCarryEval(o, &eps);
+  ASSERT_TRUE(s.ok()) << s.status();
+  EXPECT_EQ(CarrySummaryJson(*s, o)["model_squats"], true);
+  int past_the_approach = 0;
+  for (const CarryEpisode& e : eps) past_the_approach += e.last_phase != "approach";
+  EXPECT_EQ(past_the_approach, 2);
+}
+
 }  // namespace
 }  // namespace simhuman::learn

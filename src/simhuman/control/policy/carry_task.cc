@@ -73,11 +73,12 @@ void FeetOnFloor(const mjModel* m, const mjData* d, const CarryIndex& ix, double
 }
 
 // legs and trunk of a squat of depth alpha in [0, 1] (arms from `base`; ankles set later)
-Pose Squat(const Pose& base, double alpha) {
+Pose Squat(const Pose& base, double alpha, double hinge) {
   Pose q = base;
-  // a lifting squat with the trunk fairly upright: knees bend as much as the hips, and the hips
-  // open so the knees pass beside the box instead of folding the trunk over it
-  q[kRHipY] = q[kLHipY] = 0.12 + 1.7 * alpha;
+  // a lifting squat: the knees bend about as much as the hips, the hips flex `hinge` further (a
+  // stoop-squat: hips back, trunk forward over the box), and open so the knees pass beside the
+  // box instead of folding the trunk over it
+  q[kRHipY] = q[kLHipY] = 0.12 + 1.7 * alpha + hinge;
   q[kRKnee] = q[kLKnee] = 0.25 + 2.0 * alpha;
   q[kAbdY] = 0.05 + 0.35 * alpha;
   q[kRHipX] = q[kLHipX] = 0.45 * alpha;
@@ -120,9 +121,9 @@ void StandOnFloor(const mjModel* m, mjData* d, const CarryIndex& ix, Placed* p) 
 // a squat of depth alpha whose centre of mass is over the middle of the feet (bisection on the
 // pelvis pitch)
 Placed BalancedSquat(const mjModel* m, mjData* d, const CarryIndex& ix, const Pose& base,
-                     double alpha) {
+                     double alpha, double hinge) {
   Placed p;
-  p.q = Squat(base, alpha);
+  p.q = Squat(base, alpha, hinge);
   double lo = -0.2, hi = 1.0;
   for (int it = 0; it < 9; ++it) {
     p.pitch = 0.5 * (lo + hi);
@@ -287,7 +288,7 @@ CarryPoses SolveCarryPoses(const CarryParams& p, const mjModel* m, mjData* scrat
   Placed squat;
   double e1 = 1e9;
   for (double alpha : {0.2, 0.4, 0.55, 0.7, 0.85, 1.0}) {
-    Placed trial = BalancedSquat(m, scratch, ix, nominal, alpha);
+    Placed trial = BalancedSquat(m, scratch, ix, nominal, alpha, p.squat_hinge_rad);
     double e = SolveArmsFromSeeds(m, scratch, ix, &trial, open_l, open_r);
     if (e < e1 - 1e-4) {
       e1 = e;

@@ -49,7 +49,16 @@ struct CarryParams {
   /// and box with it, so the load's weight stays over the feet (docs/BENCHMARKS.md, issue 17,
   /// session 46)
   double hold_lean_rad_per_kg = 0.02;
-  double open_m = 0.02;            ///< hands outside the side faces before squeezing
+  /// hands outside the side faces before squeezing. 0.12 brings them down beside the box, not
+  /// on its top edges, and with squat_hinge_rad 0.8 the model-based lift (zero action, quasi-
+  /// static support) lifts 38 of 96 boxes instead of 23; the policies trained so far learned on
+  /// 0.02 and 0, and fall with the new keyframes, so these stay the defaults until a policy is
+  /// trained on them (docs/BENCHMARKS.md, issue 17, session 47; carry probe --open, --hinge)
+  double open_m = 0.02;
+  /// hip flexion beyond the knees' in the lifting squat (rad): > 0 a stoop-squat, the hips back
+  /// and the trunk over the box, so the shallowest squat whose hands reach is higher (0: a deep
+  /// squat, trunk upright, that tends to sit back and fall; see open_m)
+  double squat_hinge_rad = 0.0;
   double squeeze_m = 0.04;         ///< hand targets inside the side faces (the press)
   double grasp_frac = 0.80;        ///< grasp height as a fraction of the box height
   double arrive_radius_m = 0.2;    ///< at a stand point: within this ...
