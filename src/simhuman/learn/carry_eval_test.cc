@@ -34,6 +34,16 @@ core::StatusOr<std::string> FreshCarryPolicy(const std::string& name, bool from_
   return dir + "/policy.pt";
 }
 
+// options for a few short episodes (boxes at most 2 m away, 8 s plus the walking time) of `policy`
+CarryEvalOptions ShortRun(const std::string& policy, int episodes) {
+  CarryEvalOptions o;
+  o.policy = policy;
+  o.episodes = episodes;
+  o.base_time_s = 8;
+  o.max_dist_m = 2;
+  return o;
+}
+
 TEST(CarryEval, RefusesAPolicyOfAnotherTaskAndBadRanges) {
   CarryEvalOptions o;
   o.policy = kWalk;
@@ -119,11 +129,7 @@ TEST(CarryEval, EpisodesFollowTheProtocolAndRepeatBySeed) {
 TEST(CarryEval, AnApproachPolicyWalksUpToTheBoxIntegration) {
   auto policy = FreshCarryPolicy("carry_approach", false);
   ASSERT_TRUE(policy.ok()) << policy.status();
-  CarryEvalOptions o;
-  o.policy = *policy;
-  o.episodes = 3;
-  o.base_time_s = 8;
-  o.max_dist_m = 2;
+  CarryEvalOptions o = ShortRun(*policy, 3);
   std::vector<CarryEpisode> alone, walked;
   ASSERT_TRUE(RunCarryEval(o, &alone).ok());
   o.approach_policy = kWalk;
@@ -153,11 +159,7 @@ TEST(CarryEval, AChainOfPhasePoliciesRunsAndEachIsCheckedIntegration) {
   ASSERT_TRUE(carry.ok()) << carry.status();
   auto lift = FreshCarryPolicy("carry_chain_lift", false, "carry-lift");
   ASSERT_TRUE(lift.ok()) << lift.status();
-  CarryEvalOptions o;
-  o.policy = *carry;
-  o.episodes = 3;
-  o.base_time_s = 8;
-  o.max_dist_m = 2;
+  CarryEvalOptions o = ShortRun(*carry, 3);
   o.walker = *carry;  // a carry policy as the walker
   auto bad = RunCarryEval(o, nullptr);
   ASSERT_FALSE(bad.ok());
@@ -190,11 +192,7 @@ TEST(CarryEval, AChainOfPhasePoliciesRunsAndEachIsCheckedIntegration) {
 TEST(CarryEval, ModelSquatsReplaceTheSquatPoliciesIntegration) {
   auto carry = FreshCarryPolicy("carry_model_squats", false);
   ASSERT_TRUE(carry.ok()) << carry.status();
-  CarryEvalOptions o;
-  o.policy = *carry;
-  o.episodes = 2;
-  o.base_time_s = 8;
-  o.max_dist_m = 2;
+  CarryEvalOptions o = ShortRun(*carry, 2);
   o.walker = kWalk;
   o.model_squats = true;
   o.deliver_policy = *carry;
