@@ -5,6 +5,7 @@
 //
 //   simhuman_tabletop_probe --seed 1 --from 0 --to 80 [--shape sphere] [--kind place]
 //                           [--sheet-dir /tmp/sheets] [--frame-s 0.2] [--place-policy FILE]
+//                           [--vision assets/vision/vision.pt [--touch 0] [--touch-grasp 1]]
 // The episodes are those of `simhuman eval --suite tabletop --seed S` (same seeds, same kinds).
 
 #include <array>
@@ -75,8 +76,10 @@ struct Args {
   int grasp_attempts = 0, guard_steps = -1;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
-  std::string zero_shot;           // a shape of world::ZeroShotShapes() replaces the task object
-  std::string vision;              // a vision model file: the pipeline sees through the head camera
+  bool touch = true;         // with --vision: the hand's touch too (VisionLoopOptions::touch)
+  bool touch_grasp = false;  // ... also while the hand closes (VisionLoopOptions::touch_grasp)
+  std::string zero_shot;     // a shape of world::ZeroShotShapes() replaces the task object
+  std::string vision;        // a vision model file: the pipeline sees through the head camera
   std::string place = "scripted";  // a place policy file (simhuman train --task place)
 };
 
@@ -139,12 +142,18 @@ Args Parse(int argc, char** argv) {
                                             {"--grasp-steps", &a.grasp_steps},
                                             {"--grasp-attempts", &a.grasp_attempts},
                                             {"--guard-steps", &a.guard_steps}};
-  const std::map<std::string, bool*> bools = {
-      {"--trace-contacts", &a.trace_contacts}, {"--trace-arm", &a.trace_arm},
-      {"--hold-rotation", &a.hold_rotation},   {"--press-closing", &a.press_closing},
-      {"--carried-check", &a.carried_check},   {"--top-grasp", &a.top_grasp},
-      {"--no-spheres", &a.no_spheres},         {"--touch-gap0", &a.touch_gap0},
-      {"--hold-behind", &a.hold_behind},       {"--profile", &a.profile}};
+  const std::map<std::string, bool*> bools = {{"--trace-contacts", &a.trace_contacts},
+                                              {"--trace-arm", &a.trace_arm},
+                                              {"--hold-rotation", &a.hold_rotation},
+                                              {"--press-closing", &a.press_closing},
+                                              {"--carried-check", &a.carried_check},
+                                              {"--top-grasp", &a.top_grasp},
+                                              {"--no-spheres", &a.no_spheres},
+                                              {"--touch-gap0", &a.touch_gap0},
+                                              {"--hold-behind", &a.hold_behind},
+                                              {"--profile", &a.profile},
+                                              {"--touch", &a.touch},
+                                              {"--touch-grasp", &a.touch_grasp}};
   const std::map<std::string, std::string*> strings = {
       {"--shape", &a.shape},         {"--kind", &a.kind},     {"--sheet-dir", &a.sheet_dir},
       {"--zero-shot", &a.zero_shot}, {"--vision", &a.vision}, {"--place-policy", &a.place},
@@ -306,7 +315,10 @@ int main(int argc, char** argv) {
     static std::unique_ptr<sh::eval::TabletopVision> vision;
     if (!a.vision.empty()) {
       if (!vision) {
-        auto made = sh::eval::TabletopVision::Create(a.vision, (*w)->model());
+        sh::eval::VisionLoopOptions vo;
+        vo.touch = a.touch;
+        vo.touch_grasp = a.touch_grasp;
+        auto made = sh::eval::TabletopVision::Create(a.vision, (*w)->model(), vo);
         if (!made.ok()) {
           std::fprintf(stderr, "%s\n", made.status().ToString().c_str());
           return 2;

@@ -224,6 +224,10 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
                    "head camera)")
       ->check(CLI::IsMember({"truth", "vision"}))
       ->capture_default_str();
+  eval_cmd->add_flag("--no-touch", ev->no_touch,
+                     "tabletop, place, stack with --perception vision: the object grasped and "
+                     "held is placed by the camera and the grasp prior alone, without the "
+                     "hand's touch (an ablation)");
   eval_cmd->add_flag("--video", ev->video, "walk suite: also write MP4s of rendered episodes");
   eval_cmd
       ->add_option("--physics-solver", ev->physics_solver,

@@ -127,6 +127,10 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
   ExpectBadInput(
       Cli({"eval", "--suite", "tabletop", "--zero-shot", "cone", "--perception", "vision"}),
       {"--zero-shot runs with --perception truth only"});
+  ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--no-touch"}),
+                 {"--no-touch needs --perception vision"});
+  ExpectBadInput(Cli({"eval", "--suite", "walk", "--no-touch"}),
+                 {"--no-touch applies to the tabletop suites"});
   ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--zero-shot-mesh", "a.obj"}),
                  {"--zero-shot-mesh needs --zero-shot mesh"});
   ExpectBadInput(Cli({"eval", "--suite", "walk", "--zero-shot", "cone"}),

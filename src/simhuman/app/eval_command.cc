@@ -349,6 +349,7 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
       {!flags.zero_shot.empty() || !flags.zero_shot_mesh.empty(),
        "--zero-shot and --zero-shot-mesh apply", ""},
       {flags.planner_seed != 1, "--planner-seed applies", ""},
+      {flags.no_touch, "--no-touch applies", ""},
   };
   for (const auto& f : tabletop_only) {
     if (!f.set || suite->controller == eval::SuiteController::kTabletop) continue;

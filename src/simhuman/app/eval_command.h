@@ -53,6 +53,7 @@ struct EvalFlags {
   bool model_squats = false;    ///< carry: the lift and put-down by the model-based controller
   /// Tabletop suites: "truth" or "vision" (the head camera and the vision model).
   std::string perception = "truth";
+  bool no_touch = false;  ///< --perception vision without the hand's touch (an ablation)
   /// The vision suite and --perception vision: a model file (simhuman train --task vision); empty:
   /// the shipped one.
   std::string vision_model;

@@ -34,6 +34,13 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
   o.grasp = eval::DefaultGraspPolicy(flags.grasp_policy);
   o.place = flags.place_policy;
   o.perception = flags.perception;
+  o.touch = !flags.no_touch;
+  if (flags.no_touch && o.perception != "vision") {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--no-touch needs --perception vision (with truth the controllers "
+                           "read the objects' true state and touch adds nothing)"));
+  }
   o.grasp_attempts = flags.grasp_attempts;
   o.planner_seed = static_cast<uint64_t>(flags.planner_seed);
   o.zero_shot = flags.zero_shot;
@@ -67,7 +74,10 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
       << (o.first_episode > 0 ? " from episode " + std::to_string(o.first_episode) : "")
       << ", seed " << o.seed << ", grasp " << o.grasp << " (" << o.grasp_attempts
       << " attempts), planner seed " << o.planner_seed << ", place " << o.place << ", perception "
-      << o.perception << (o.perception == "vision" ? " (" + o.vision_model + ")" : std::string())
+      << o.perception
+      << (o.perception == "vision"
+              ? " (" + o.vision_model + (o.touch ? ", with touch" : ", without touch") + ")"
+              : std::string())
       << (o.zero_shot.empty() ? std::string()
                               : ", zero-shot " + o.zero_shot +
                                     (o.zero_shot == "mesh" ? " (" + o.zero_shot_mesh + ")" : ""))

@@ -101,6 +101,7 @@ nlohmann::json TabletopEvalSummary::ToJson() const {
           {"elapsed_s", elapsed_s},
           {"pipeline_steps_per_elapsed_s", steps_per_elapsed_s},
           {"perception", perception},
+          {"touch", touch},
           {"perception_failures", perception_failures},
           {"vision_frames", vision_frames},
           {"vision_ms_per_frame", vision_ms_per_frame},
@@ -170,7 +171,9 @@ core::StatusOr<EpisodeOutcome> RunEpisode(const TabletopEvalOptions& o, int i,
   core::Status seen = absl::OkStatus();
   if (o.perception == "vision") {
     if (!worker->vision) {
-      SH_ASSIGN_OR_RETURN(worker->vision, TabletopVision::Create(o.vision_model, w->model()));
+      VisionLoopOptions vo;
+      vo.touch = o.touch;
+      SH_ASSIGN_OR_RETURN(worker->vision, TabletopVision::Create(o.vision_model, w->model(), vo));
     }
     TabletopVision* vision = worker->vision.get();
     seen =
@@ -341,6 +344,7 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   sum.raw_cpu_steps_per_s = t.raw.cpu_s > 0 ? sum.episodes * kRawSteps / t.raw.cpu_s : 0;
   sum.wall_s = t.wall_s;
   sum.perception = o.perception;
+  sum.touch = o.perception == "vision" && o.touch;
   double vision_s = 0, render_s = 0;
   for (const Worker& w : workers) {
     if (!w.vision) continue;

@@ -40,6 +40,9 @@ struct TabletopEvalOptions {
   /// vision model `vision_model` (eval/tabletop_vision.h).
   std::string perception = "truth";
   std::string vision_model;
+  /// With "vision": the hand's touch also places the object it grasps and holds
+  /// (VisionLoopOptions::touch); false: the camera and the grasp prior alone.
+  bool touch = true;
   /// Grasps tried on one object before a miss ends the episode
   /// (control::manip::TabletopOptions::grasp_attempts).
   int grasp_attempts = 2;
@@ -94,6 +97,7 @@ struct TabletopEvalSummary {
   double steps_per_s = 0;        ///< the whole pipeline (planning, policy, physics, vision)
   double sim_s = 0, wall_s = 0;  ///< simulated and wall time of the pipelines (real-time factor)
   std::string perception = "truth";
+  bool touch = false;           ///< vision with touch (TabletopEvalOptions::touch)
   int perception_failures = 0;  ///< vision: the task's objects not seen at task planning
   int vision_frames = 0;
   double vision_ms_per_frame = 0, render_ms_per_frame = 0;

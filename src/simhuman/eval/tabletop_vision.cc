@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "absl/strings/str_cat.h"
+#include "simhuman/perceive/touch.h"
 #include "simhuman/perceive/vision/detect.h"
 
 namespace simhuman::eval {
@@ -63,6 +64,9 @@ core::Status TabletopVision::Begin(world::SimWorld& world, const core::SceneCata
                                    control::manip::TabletopGoal* goal, int hand_body) {
   world_ = &world;
   hand_body_ = hand_body;
+  object_body_ = goal->object_body;
+  touch_.clear();
+  hand_geom_ = perceive::SubtreeGeoms(world.model(), hand_body_);
   in_hand_.clear();
   held_since_ = 0;
   anchor_.reset();
@@ -126,7 +130,9 @@ core::Status TabletopVision::OnStep(const mjData* d) {
   tracker_.Update(est);
   vision_s_ += Since(t0);
   ++frames_;
-  Timed f{d->time, tracker_.objects()[moved_]};
+  Timed f;
+  f.t = d->time;
+  f.e = tracker_.objects()[moved_];
   if (hand_body_ >= 0) {
     f.hand_pos = Eigen::Vector3d(d->xpos + 3 * hand_body_);
     f.hand_rot =
@@ -147,11 +153,24 @@ core::Status TabletopVision::OnStep(const mjData* d) {
       }
     }
   }
+  if (o_.touch)
+    f.touch = perceive::HandTouch(world_->model(), d, hand_geom_, hand_body_, object_body_);
   queue_.push_back(f);
   // estimates arrive delay_s after their frame
   while (!queue_.empty() && queue_.front().t + o_.delay_s <= d->time + 1e-9) {
     const Timed& a = queue_.front();
     arrived_.push_back(a.e);
+    touch_ = a.touch;
+    if (o_.touch && o_.touch_grasp && !held_ && planned_.shape != 2 && !a.touch.empty()) {
+      // grasping: where the hand touches the object moves the planned estimate's centre (its up
+      // axis stays: turned by the touch of a closing hand, the grasp prior tipped placements)
+      std::vector<perceive::TouchContact> world_touch;
+      for (const perceive::TouchContact& c : a.touch)
+        world_touch.push_back({a.hand_rot * c.point + a.hand_pos, a.hand_rot * c.normal});
+      Eigen::Vector3d up = planned_.up;
+      perceive::RefineHeldByTouch(world_touch, 0.5 * planned_.width_m, o_.touch_refine,
+                                  &planned_.centre, &up);
+    }
     if (static_cast<int>(arrived_.size()) > std::max(1, o_.smooth_frames)) arrived_.pop_front();
     if (a.in_hand && o_.in_hand_frames > 0) {
       in_hand_.push_back({a.t, a.hand_rot.transpose() * (a.e.centre - a.hand_pos),
@@ -201,6 +220,10 @@ control::manip::ObjectView TabletopVision::View(const mjData* d, bool held) cons
     c = o_.prior_weight * *prior_c_ + (1 - o_.prior_weight) * c;
     if (up.norm() > 1e-6) up.normalize();
     up = o_.prior_up_weight * *prior_up_ + (1 - o_.prior_up_weight) * up;
+    if (up.norm() > 1e-6) up.normalize();
+    if (o_.touch && planned_.shape != 2) {
+      perceive::RefineHeldByTouch(touch_, 0.5 * planned_.width_m, o_.touch_refine, &c, &up);
+    }
     if (!anchor_) anchor_ = c;
     const Eigen::Matrix3d r =
         Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * hand_body_);

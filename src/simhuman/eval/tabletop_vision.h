@@ -13,6 +13,7 @@
 #include "simhuman/control/manip/tabletop_pipeline.h"
 #include "simhuman/core/scene_catalog.h"
 #include "simhuman/core/status.h"
+#include "simhuman/perceive/touch.h"
 #include "simhuman/perceive/vision/associate.h"
 #include "simhuman/perceive/vision/vision_data.h"
 #include "simhuman/perceive/vision/vision_model.h"
@@ -47,6 +48,19 @@ struct VisionLoopOptions {
   /// (chosen on 32 episodes: docs/BENCHMARKS.md, issue 16 session 22). 0: the frames alone.
   double prior_weight = 0.8;
   double prior_up_weight = 0.8;
+  /// Touch (perceive/touch.h): where the hand's skin touches the held object and which way
+  /// each contact pushes, read with the frames' rate and delay, corrects the held estimate's up
+  /// axis and its centre across that axis (its side faces lie where the hand touches them).
+  /// Boxes and cylinders; not spheres. false: the camera and the grasp prior alone (DASH's
+  /// vision; its hand feels only which phalanx touches). Over the tabletop suite's 400 boxes
+  /// and cylinders: place 122 / 134 and stack 101 / 138, against 121 and 97 without
+  /// (docs/BENCHMARKS.md, issue 16 session 48).
+  bool touch = true;
+  /// With touch, also while the hand closes: the touched side faces move the planned
+  /// estimate's centre (its up axis stays), so that the grasp and the grasp prior start from
+  /// where the object is. Off: over the same 400 it stacked 103 but placed 117.
+  bool touch_grasp = false;
+  perceive::TouchRefineOptions touch_refine;
 };
 
 /// The camera and the vision model across episodes (one OpenGL context; each episode's world is
@@ -78,6 +92,8 @@ class TabletopVision {
   control::manip::ObjectView View(const mjData* d, bool held) const;
 
   int frames() const { return frames_; }
+  /// The moved object's width as task planning estimated it.
+  double planned_width_m() const { return planned_.width_m; }
   double vision_s() const { return vision_s_; }
   double render_s() const { return render_s_; }
 
@@ -89,6 +105,7 @@ class TabletopVision {
     Eigen::Vector3d hand_pos = Eigen::Vector3d::Zero();
     Eigen::Matrix3d hand_rot = Eigen::Matrix3d::Identity();
     bool in_hand = false;  // `e` is the held object's estimate, for the in-hand median
+    std::vector<perceive::TouchContact> touch;  // the held object's contacts with the hand
   };
 
  public:
@@ -116,6 +133,9 @@ class TabletopVision {
   std::deque<perceive::ObjectEstimate> arrived_;  // the newest smooth_frames that have arrived
   std::deque<InHand> in_hand_;  // the newest arrived estimates in the hand's frame
   int hand_body_ = -1;
+  int object_body_ = -1;
+  std::vector<bool> hand_geom_;  // per model geom: part of the hand (its body's subtree)
+  std::vector<perceive::TouchContact> touch_;  // the newest arrived touch (hand frame)
   mutable bool held_ = false;      // the controllers have asked for the object in the hand
   mutable double held_since_ = 0;  // when they first did
   // the grasp prior in the hand's frame: the planned centre and up axis when the grip closed
