@@ -58,7 +58,7 @@ struct VisionLoopOptions {
   bool touch = true;
   /// With touch, also while the hand closes: the touched side faces move the planned
   /// estimate's centre (its up axis stays), so that the grasp and the grasp prior start from
-  /// where the object is. Off: over the same 400 it stacked 103 but placed 117.
+  /// where the object is. Off by default: with it, over the same 400, stack 103 but place 117.
   bool touch_grasp = false;
   perceive::TouchRefineOptions touch_refine;
 };
