@@ -5,7 +5,8 @@
 //
 //   simhuman_tabletop_probe --seed 1 --from 0 --to 80 [--shape sphere] [--kind place]
 //                           [--sheet-dir /tmp/sheets] [--frame-s 0.2] [--place-policy FILE]
-//                           [--vision assets/vision/vision.pt [--touch 0] [--touch-grasp 1]]
+//                           [--vision assets/vision/vision.pt [--touch 0] [--touch-grasp 1]
+//                           [--silhouette 0]]
 // The episodes are those of `simhuman eval --suite tabletop --seed S` (same seeds, same kinds).
 
 #include <array>
@@ -77,6 +78,7 @@ struct Args {
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
   bool touch = true;         // with --vision: the hand's touch too (VisionLoopOptions::touch)
+  bool silhouette = true;    // with --vision: the planning estimates fitted to their outlines
   bool touch_grasp = false;  // ... also while the hand closes (VisionLoopOptions::touch_grasp)
   std::string zero_shot;     // a shape of world::ZeroShotShapes() replaces the task object
   std::string vision;        // a vision model file: the pipeline sees through the head camera
@@ -153,6 +155,7 @@ Args Parse(int argc, char** argv) {
                                               {"--hold-behind", &a.hold_behind},
                                               {"--profile", &a.profile},
                                               {"--touch", &a.touch},
+                                              {"--silhouette", &a.silhouette},
                                               {"--touch-grasp", &a.touch_grasp}};
   const std::map<std::string, std::string*> strings = {
       {"--shape", &a.shape},         {"--kind", &a.kind},     {"--sheet-dir", &a.sheet_dir},
@@ -317,6 +320,7 @@ int main(int argc, char** argv) {
       if (!vision) {
         sh::eval::VisionLoopOptions vo;
         vo.touch = a.touch;
+        vo.silhouette = a.silhouette;
         vo.touch_grasp = a.touch_grasp;
         auto made = sh::eval::TabletopVision::Create(a.vision, (*w)->model(), vo);
         if (!made.ok()) {
@@ -325,12 +329,28 @@ int main(int argc, char** argv) {
         }
         vision = std::move(*made);
       }
+      const sh::control::manip::TabletopGoal truth = *goal;
       if (sh::core::Status s = vision->Begin(**w, *catalog, ts->task.object_id, ts->task.target_id,
                                              &*goal, ix->arm.hand_body);
           !s.ok()) {
         std::printf("ep %3d perception failure: %s\n", i, s.ToString().c_str());
         continue;
       }
+      // task planning's errors: the moved object's base and half width, the target
+      const Eigen::Vector3d eb = goal->planned_pos - truth.planned_pos;
+      const Eigen::Vector3d et = goal->target - truth.target;
+      const sh::perceive::SilhouetteFit& fit = vision->moved_fit();
+      std::printf(
+          "  planning error: base (%.2f %.2f %.2f) cm, half width %.2f cm, target (%.2f "
+          "%.2f %.2f) cm; silhouette fit %s%s, mismatch %.0f -> %.0f of %d px, hidden "
+          "%.2f\n",
+          100 * eb.x(), 100 * eb.y(), 100 * eb.z(), 100 * (goal->half_width_m - truth.half_width_m),
+          100 * et.x(), 100 * et.y(), 100 * et.z(),
+          !fit.fitted    ? "not tried"
+          : fit.accepted ? "kept"
+                         : "refused",
+          fit.sideways_only ? " (sideways only)" : "", fit.before, fit.after, fit.blob_pixels,
+          fit.hidden);
     }
     const sh::control::manip::TabletopGoal& g = *goal;
     if (!a.shape.empty() && a.shape != ShapeName(g.shape)) continue;

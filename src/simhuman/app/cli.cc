@@ -228,6 +228,10 @@ CLI::App* AddEvalCommand(CLI::App& app, EvalFlags* ev, CLI::Option** preset) {
                      "tabletop, place, stack with --perception vision: the object grasped and "
                      "held is placed by the camera and the grasp prior alone, without the "
                      "hand's touch (an ablation)");
+  eval_cmd->add_flag("--no-silhouette", ev->no_silhouette,
+                     "vision, and tabletop, place, stack with --perception vision: the task "
+                     "planner reads the vision network's estimates as they are, without fitting "
+                     "them to the objects' outlines in the frame (an ablation)");
   eval_cmd->add_flag("--video", ev->video, "walk suite: also write MP4s of rendered episodes");
   eval_cmd
       ->add_option("--physics-solver", ev->physics_solver,

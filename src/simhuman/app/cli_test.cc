@@ -131,6 +131,10 @@ TEST(CliTest, VisionCommandsRefuseBadInput) {
                  {"--no-touch needs --perception vision"});
   ExpectBadInput(Cli({"eval", "--suite", "walk", "--no-touch"}),
                  {"--no-touch applies to the tabletop suites"});
+  ExpectBadInput(Cli({"eval", "--suite", "stack", "--no-silhouette"}),
+                 {"--no-silhouette needs --perception vision"});
+  ExpectBadInput(Cli({"eval", "--suite", "sit", "--no-silhouette"}),
+                 {"--no-silhouette applies to --suite vision and the tabletop suites", "sit"});
   ExpectBadInput(Cli({"eval", "--suite", "tabletop", "--zero-shot-mesh", "a.obj"}),
                  {"--zero-shot-mesh needs --zero-shot mesh"});
   ExpectBadInput(Cli({"eval", "--suite", "walk", "--zero-shot", "cone"}),

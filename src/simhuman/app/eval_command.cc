@@ -371,6 +371,14 @@ int EvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& err,
         absl::InvalidArgumentError(std::string(flag) + " applies to --suite carry, not --suite " +
                                    flags.suite));
   }
+  if (flags.no_silhouette && suite->controller != eval::SuiteController::kTabletop &&
+      suite->controller != eval::SuiteController::kVision) {
+    return ReportError(err, kCommand,
+                       absl::InvalidArgumentError(
+                           "--no-silhouette applies to --suite vision and the tabletop suites "
+                           "(tabletop, place, stack), not --suite " +
+                           flags.suite));
+  }
   if (suite->controller == eval::SuiteController::kPlanner) return LanguageEval(flags, out, err);
   if (suite->controller == eval::SuiteController::kCarryPolicy) {
     return CarryEvalCommand(flags, out, err);

@@ -54,6 +54,8 @@ struct EvalFlags {
   /// Tabletop suites: "truth" or "vision" (the head camera and the vision model).
   std::string perception = "truth";
   bool no_touch = false;  ///< --perception vision without the hand's touch (an ablation)
+  /// vision without the silhouette fit of the planning estimates (an ablation)
+  bool no_silhouette = false;
   /// The vision suite and --perception vision: a model file (simhuman train --task vision); empty:
   /// the shipped one.
   std::string vision_model;

@@ -41,6 +41,13 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
                            "--no-touch needs --perception vision (with truth the controllers "
                            "read the objects' true state and touch adds nothing)"));
   }
+  o.silhouette = !flags.no_silhouette;
+  if (flags.no_silhouette && o.perception != "vision") {
+    return ReportError(
+        err, kCommand,
+        absl::InvalidArgumentError("--no-silhouette needs --perception vision (with truth the task "
+                                   "planner reads the objects' true state)"));
+  }
   o.grasp_attempts = flags.grasp_attempts;
   o.planner_seed = static_cast<uint64_t>(flags.planner_seed);
   o.zero_shot = flags.zero_shot;
@@ -76,7 +83,8 @@ int TabletopEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream&
       << " attempts), planner seed " << o.planner_seed << ", place " << o.place << ", perception "
       << o.perception
       << (o.perception == "vision"
-              ? " (" + o.vision_model + (o.touch ? ", with touch" : ", without touch") + ")"
+              ? " (" + o.vision_model + (o.touch ? ", with touch" : ", without touch") +
+                    (o.silhouette ? "" : ", without the silhouette fit") + ")"
               : std::string())
       << (o.zero_shot.empty() ? std::string()
                               : ", zero-shot " + o.zero_shot +

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "absl/strings/str_format.h"
 #include "simhuman/app/common.h"
 #include "simhuman/eval/episode.h"
 #include "simhuman/eval/vision_eval.h"
@@ -88,6 +89,7 @@ int VisionEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& e
   o.planning_scenes = flags.episodes;
   o.placing_episodes = flags.episodes;
   o.seed = flags.seed;
+  o.silhouette = !flags.no_silhouette;
   if (absl::Status s = CheckVisionModelFile(o.model); !s.ok()) return ReportError(err, cmd, s);
   const std::string dir = flags.out.empty() ? "out/eval_vision" : flags.out;
   if (absl::Status s = MakeOutputDir(dir); !s.ok()) return ReportError(err, cmd, s);
@@ -120,18 +122,22 @@ int VisionEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& e
   for (const auto& [stage, m] : *s) {
     summary["stages"][stage] = m.ToJson();
     const nlohmann::json j = m.ToJson();
-    char buf[400];
+    char buf[480];
     std::snprintf(buf, sizeof(buf),
-                  "%-9s frames %4d  objects %5d  detected %5.1f%%  shape %5.1f%%  colour %5.1f%%  "
+                  "%-16s frames %4d  objects %5d  detected %5.1f%%  shape %5.1f%%  colour %5.1f%%  "
                   "position MAE x/y/z %.2f / %.2f / %.2f cm  up %.1f deg  false pos %d  "
-                  "vision %.2f ms/frame (render %.2f)",
+                  "vision %.2f ms/frame (render %.2f%s)",
                   stage.c_str(), m.frames, m.objects, j["detection_rate_pct"].get<double>(),
                   j["shape_accuracy_pct"].get<double>(), j["colour_accuracy_pct"].get<double>(),
                   j["position_mae_cm_xyz"][0].get<double>(),
                   j["position_mae_cm_xyz"][1].get<double>(),
                   j["position_mae_cm_xyz"][2].get<double>(), j["up_axis_error_deg"].get<double>(),
                   m.false_positives, j["vision_ms_per_frame"].get<double>(),
-                  j["render_ms_per_frame"].get<double>());
+                  j["render_ms_per_frame"].get<double>(),
+                  m.fit_s > 0 ? absl::StrFormat(", silhouette fit %.1f",
+                                                j["silhouette_fit_ms_per_frame"].get<double>())
+                                    .c_str()
+                              : "");
     out << buf << std::endl;
     if (!sheets[stage].empty()) {
       const std::string png = dir + "/frames_" + stage + ".png";

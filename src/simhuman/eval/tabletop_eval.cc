@@ -102,10 +102,12 @@ nlohmann::json TabletopEvalSummary::ToJson() const {
           {"pipeline_steps_per_elapsed_s", steps_per_elapsed_s},
           {"perception", perception},
           {"touch", touch},
+          {"silhouette", silhouette},
           {"perception_failures", perception_failures},
           {"vision_frames", vision_frames},
           {"vision_ms_per_frame", vision_ms_per_frame},
-          {"render_ms_per_frame", render_ms_per_frame}};
+          {"render_ms_per_frame", render_ms_per_frame},
+          {"silhouette_fit_ms_per_episode", silhouette_fit_ms_per_episode}};
 }
 
 nlohmann::json TabletopEpisodeJson(const TabletopEpisode& e) {
@@ -173,6 +175,7 @@ core::StatusOr<EpisodeOutcome> RunEpisode(const TabletopEvalOptions& o, int i,
     if (!worker->vision) {
       VisionLoopOptions vo;
       vo.touch = o.touch;
+      vo.silhouette = o.silhouette;
       SH_ASSIGN_OR_RETURN(worker->vision, TabletopVision::Create(o.vision_model, w->model(), vo));
     }
     TabletopVision* vision = worker->vision.get();
@@ -345,16 +348,19 @@ core::StatusOr<TabletopEvalSummary> RunTabletopEval(
   sum.wall_s = t.wall_s;
   sum.perception = o.perception;
   sum.touch = o.perception == "vision" && o.touch;
-  double vision_s = 0, render_s = 0;
+  sum.silhouette = o.perception == "vision" && o.silhouette;
+  double vision_s = 0, render_s = 0, fit_s = 0;
   for (const Worker& w : workers) {
     if (!w.vision) continue;
     sum.vision_frames += w.vision->frames();
     vision_s += w.vision->vision_s();
     render_s += w.vision->render_s();
+    fit_s += w.vision->fit_s();
   }
   if (sum.vision_frames > 0) {
     sum.vision_ms_per_frame = 1000 * vision_s / sum.vision_frames;
     sum.render_ms_per_frame = 1000 * render_s / sum.vision_frames;
+    sum.silhouette_fit_ms_per_episode = sum.episodes > 0 ? 1000 * fit_s / sum.episodes : 0;
   }
   return sum;
 }

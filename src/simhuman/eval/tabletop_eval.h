@@ -43,6 +43,9 @@ struct TabletopEvalOptions {
   /// With "vision": the hand's touch also places the object it grasps and holds
   /// (VisionLoopOptions::touch); false: the camera and the grasp prior alone.
   bool touch = true;
+  /// With "vision": the task planner's estimates fitted to the objects' outlines
+  /// (VisionLoopOptions::silhouette); false: the network's estimates as they are.
+  bool silhouette = true;
   /// Grasps tried on one object before a miss ends the episode
   /// (control::manip::TabletopOptions::grasp_attempts).
   int grasp_attempts = 2;
@@ -98,9 +101,11 @@ struct TabletopEvalSummary {
   double sim_s = 0, wall_s = 0;  ///< simulated and wall time of the pipelines (real-time factor)
   std::string perception = "truth";
   bool touch = false;           ///< vision with touch (TabletopEvalOptions::touch)
+  bool silhouette = false;      ///< vision with the silhouette fit (TabletopEvalOptions)
   int perception_failures = 0;  ///< vision: the task's objects not seen at task planning
   int vision_frames = 0;
   double vision_ms_per_frame = 0, render_ms_per_frame = 0;
+  double silhouette_fit_ms_per_episode = 0;  ///< task planning's silhouette fit (vision)
   /// mj_step alone on the same model, same run: 1000 steps from every episode's start
   double raw_steps_per_s = 0;
   /// The same two speeds per second of CPU time (the pipeline's thread): what a core of its own

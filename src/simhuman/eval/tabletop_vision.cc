@@ -85,11 +85,18 @@ core::Status TabletopVision::Begin(world::SimWorld& world, const core::SceneCata
   SH_RETURN_IF_ERROR(camera_->Capture(d, cam, &rgb));
   render_s_ += Since(t0);
   t0 = Clock::now();
-  const std::vector<perceive::ObjectEstimate> est = model_->Estimate(rgb, cam);
+  std::vector<perceive::ObjectEstimate> est = model_->Estimate(rgb, cam);
   vision_s_ += Since(t0);
+  std::vector<perceive::SilhouetteFit> fits(est.size());
+  if (o_.silhouette) {
+    t0 = Clock::now();
+    fits = perceive::FitRestingSilhouettes(rgb, cam, model_->colours(), o_.silhouette_fit, &est);
+    fit_s_ += Since(t0);
+  }
   ++frames_;
   SH_ASSIGN_OR_RETURN(moved_, Find(catalog, object_id, est));
   planned_ = est[moved_];
+  moved_fit_ = fits[moved_];
   tracker_.Reset(est);
   height_m_ = planned_.height_m;
   goal->planned_pos = planned_.centre - 0.5 * planned_.height_m * planned_.up;

@@ -15,6 +15,7 @@
 #include "simhuman/core/status.h"
 #include "simhuman/perceive/touch.h"
 #include "simhuman/perceive/vision/associate.h"
+#include "simhuman/perceive/vision/silhouette.h"
 #include "simhuman/perceive/vision/vision_data.h"
 #include "simhuman/perceive/vision/vision_model.h"
 #include "simhuman/world/sim_world.h"
@@ -61,6 +62,10 @@ struct VisionLoopOptions {
   /// where the object is. Off by default: with it, over the same 400, stack 103 but place 117.
   bool touch_grasp = false;
   perceive::TouchRefineOptions touch_refine;
+  /// Task planning's estimates fitted to the outlines they cast in the frame
+  /// (perceive/vision/silhouette.h): the grasp and the stack target are planned from them.
+  bool silhouette = true;
+  perceive::SilhouetteOptions silhouette_fit;
 };
 
 /// The camera and the vision model across episodes (one OpenGL context; each episode's world is
@@ -96,6 +101,10 @@ class TabletopVision {
   double planned_width_m() const { return planned_.width_m; }
   double vision_s() const { return vision_s_; }
   double render_s() const { return render_s_; }
+  /// What task planning's silhouette fit did with the moved object's estimate (diagnostics)
+  const perceive::SilhouetteFit& moved_fit() const { return moved_fit_; }
+  /// The silhouette fits' time (once per episode, at task planning; not in vision_s)
+  double fit_s() const { return fit_s_; }
 
  private:
   struct Timed {
@@ -143,7 +152,8 @@ class TabletopVision {
   mutable std::optional<Eigen::Vector3d> anchor_;  // where the hand holds the object (hand frame)
   double next_t_ = 0;
   int frames_ = 0;
-  double vision_s_ = 0, render_s_ = 0;
+  double vision_s_ = 0, render_s_ = 0, fit_s_ = 0;
+  perceive::SilhouetteFit moved_fit_;
   double height_m_ = 0;
 };
 

@@ -78,6 +78,7 @@ struct VisionStageMetrics {
   double task_abs_err_cm[3] = {0, 0, 0};
   double frame_s = 0;   ///< vision inference time, sum over frames (one thread)
   double render_s = 0;  ///< the renderer's time, sum over frames
+  double fit_s = 0;     ///< planning: the silhouette fit's time (silhouette.h), sum over frames
   nlohmann::json ToJson() const;
 };
 
@@ -88,10 +89,14 @@ struct VisionEvalOptions {
   uint64_t seed = 1;
   int visible_pixels = 30;
   double match_m = 0.10;
+  /// Planning frames: the estimates fitted to their silhouettes (perceive/vision/silhouette.h), as
+  /// the task planner uses them; the network alone is scored beside them as "planning-network".
+  bool silhouette = true;
 };
 
 /// Scores `options.model` on held-out generated scenes (stream 1), per stage: "planning",
-/// "placing", "stacking". Errors: the model file (naming it), the renderer.
+/// "placing", "stacking" (and "planning-network" with options.silhouette). Errors: the model file
+/// (naming it), the renderer.
 core::StatusOr<std::map<std::string, VisionStageMetrics>> RunVisionEval(
     const VisionEvalOptions& options,
     const std::function<void(const VisionFrame& frame,
