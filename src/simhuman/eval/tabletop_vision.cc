@@ -6,6 +6,7 @@
 #include "absl/strings/str_cat.h"
 #include "simhuman/perceive/touch.h"
 #include "simhuman/perceive/vision/detect.h"
+#include "simhuman/world/scene.h"
 
 namespace simhuman::eval {
 
@@ -90,7 +91,12 @@ core::Status TabletopVision::Begin(world::SimWorld& world, const core::SceneCata
   std::vector<perceive::SilhouetteFit> fits(est.size());
   if (o_.silhouette) {
     t0 = Clock::now();
-    fits = perceive::FitRestingSilhouettes(rgb, cam, model_->colours(), o_.silhouette_fit, &est);
+    perceive::SilhouetteOptions fit = o_.silhouette_fit;
+    // the table's top: the fixed surroundings the human sits in (as a place task's location)
+    for (const core::CatalogObject& obj : catalog.objects) {
+      if (obj.type == "table") fit.table_z = world::WorldBounds(obj).second.z();
+    }
+    fits = perceive::FitRestingSilhouettes(rgb, cam, model_->colours(), fit, &est);
     fit_s_ += Since(t0);
   }
   ++frames_;

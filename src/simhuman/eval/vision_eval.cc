@@ -10,6 +10,7 @@
 #include "simhuman/core/geometry.h"
 #include "simhuman/perceive/vision/associate.h"
 #include "simhuman/perceive/vision/silhouette.h"
+#include "simhuman/world/tabletop.h"
 
 namespace simhuman::eval {
 
@@ -286,7 +287,9 @@ core::StatusOr<std::map<std::string, VisionStageMetrics>> RunVisionEval(
       net.render_s += f.render_s;
       ScoreFrame(f, est, o, &net);
       const auto t1 = Clock::now();
-      perceive::FitRestingSilhouettes(f.rgb, f.camera, model->colours(), {}, &est);
+      perceive::SilhouetteOptions fit;
+      fit.table_z = world::TableToWorld(Eigen::Vector3d::Zero()).z();  // the generator's table
+      perceive::FitRestingSilhouettes(f.rgb, f.camera, model->colours(), fit, &est);
       out[f.stage].fit_s += Since(t1);
     }
     VisionStageMetrics& m = out[f.stage];

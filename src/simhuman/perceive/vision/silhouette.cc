@@ -232,14 +232,14 @@ std::vector<SilhouetteFit> FitRestingSilhouettes(const std::vector<uint8_t>& rgb
                                                  const SilhouetteOptions& o,
                                                  std::vector<ObjectEstimate>* est) {
   std::vector<SilhouetteFit> fits(est->size());
-  // the table plane: the median base height of the upright estimates
+  // the table plane: known, or the median base height of the upright estimates
   std::vector<double> bases;
   for (const ObjectEstimate& e : *est) {
     if (Upright(e, o.max_tilt_deg)) bases.push_back(e.centre.z() - 0.5 * e.height_m);
   }
   if (bases.empty()) return fits;
   std::nth_element(bases.begin(), bases.begin() + bases.size() / 2, bases.end());
-  const double base_z = bases[bases.size() / 2];
+  const double base_z = std::isnan(o.table_z) ? bases[bases.size() / 2] : o.table_z;
   const std::vector<Blob> blobs = FindBlobs(rgb, cam.width, cam.height, table, 1);
   const int ss = std::max(1, o.supersample);
   for (size_t i = 0; i < est->size(); ++i) {

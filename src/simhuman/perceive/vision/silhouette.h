@@ -5,10 +5,11 @@
 /// issue 16, session 48). With the camera's pose known, the object's outline is fixed by its
 /// shape, size, yaw and place: the fit moves the estimate (horizontal position, width, height,
 /// a box's yaw) until the outline it casts, ray by ray, covers the object's blob, its base kept
-/// on the table plane the estimates of the frame agree on. Pixels of other objects may hide it
+/// on the table's plane. Pixels of other objects may hide it
 /// and count neither way. Torch-free.
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "simhuman/perceive/vision/detect.h"
@@ -18,6 +19,12 @@
 namespace simhuman::perceive {
 
 struct SilhouetteOptions {
+  /// The height (world z) of the surface the objects stand on, when known (the table a seated
+  /// human works at is part of its fixed surroundings, as a place task's location is): it sets
+  /// the scale a single view leaves open (an object twice as far and twice as large casts the
+  /// same outline). NaN: the median of the estimates' base heights (each errs by about 0.3 cm,
+  /// which moves a fit's distance along the view by as much).
+  double table_z = std::numeric_limits<double>::quiet_NaN();
   /// Estimates whose up axis is more than this from vertical are not resting upright: not fitted.
   double max_tilt_deg = 12;
   /// Rays per pixel along each image axis (coverage in steps of 1/supersample^2).

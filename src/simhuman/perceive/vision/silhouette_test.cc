@@ -119,6 +119,30 @@ TEST(SilhouetteTest, FitsEstimatesCentimetresOffToTheObjectsOutlines) {
   EXPECT_NEAR(std::remainder(est[0].yaw_rad - box.yaw_rad, M_PI / 2), 0, 2 * M_PI / 180);
 }
 
+TEST(SilhouetteTest, AKnownTablePlaneSetsTheScaleTheEstimatesBasesLeaveOpen) {
+  // all three estimates' bases 6 mm below the table (a bias the network can have): their median
+  // plane puts the fitted objects farther along the view; the table's known height does not
+  const PinholeCamera cam = LookAt({0.0, 0.0, 1.25}, {0.55, 0.0, 0.75}, 60, 240, 180);
+  std::vector<ObjectEstimate> truth = {Upright(0, {0.5, 0.12, 0.75 + 0.075}, 0.07, 0.15),
+                                       Upright(1, {0.56, -0.1, 0.75 + 0.08}, 0.09, 0.16),
+                                       Upright(1, {0.62, 0.02, 0.75 + 0.07}, 0.08, 0.14)};
+  for (int i = 0; i < 3; ++i) truth[i].colour = i;
+  const Drawn d = Draw(cam, truth);
+  std::vector<ObjectEstimate> guess;
+  for (const ObjectEstimate& t : truth) guess.push_back(Guess(d, cam, t, {0, 0, -0.006}, 0, 0));
+  std::vector<ObjectEstimate> median = guess, known = guess;
+  FitRestingSilhouettes(d.rgb, cam, d.table, {}, &median);
+  SilhouetteOptions o;
+  o.table_z = 0.75;
+  FitRestingSilhouettes(d.rgb, cam, d.table, o, &known);
+  for (int i = 0; i < 3; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_GT((median[i].centre - truth[i].centre).norm(), 0.004);
+    EXPECT_LT((known[i].centre - truth[i].centre).norm(), 0.003);
+    EXPECT_NEAR(known[i].height_m, truth[i].height_m, 0.003);
+  }
+}
+
 TEST(SilhouetteTest, AnObjectHalfHiddenByAnotherIsFittedAcrossTheViewOnly) {
   // the cylinder stands behind the box, which hides its lower part
   const PinholeCamera cam = LookAt({0.0, 0.0, 1.25}, {0.55, 0.0, 0.75}, 60, 240, 180);
