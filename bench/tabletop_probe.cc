@@ -5,7 +5,7 @@
 //
 //   simhuman_tabletop_probe --seed 1 --from 0 --to 80 [--shape sphere] [--kind place]
 //                           [--sheet-dir /tmp/sheets] [--frame-s 0.2] [--place-policy FILE]
-//                           [--vision assets/vision/vision.pt [--touch 0] [--touch-grasp 1]
+//                           [--vision assets/vision/vision.pt [--touch 0] [--touch-grasp 0]
 //                           [--silhouette 0]]
 // The episodes are those of `simhuman eval --suite tabletop --seed S` (same seeds, same kinds).
 
@@ -77,11 +77,11 @@ struct Args {
   int grasp_attempts = 0, guard_steps = -1;
   int shortcuts = -1, approach_steps = 0, thumb_delay = -1, grasp_steps = 0;
   bool no_spheres = false, profile = false;
-  bool touch = true;         // with --vision: the hand's touch too (VisionLoopOptions::touch)
-  bool silhouette = true;    // with --vision: the planning estimates fitted to their outlines
-  bool touch_grasp = false;  // ... also while the hand closes (VisionLoopOptions::touch_grasp)
-  std::string zero_shot;     // a shape of world::ZeroShotShapes() replaces the task object
-  std::string vision;        // a vision model file: the pipeline sees through the head camera
+  bool touch = true;        // with --vision: the hand's touch too (VisionLoopOptions::touch)
+  bool silhouette = true;   // with --vision: the planning estimates fitted to their outlines
+  bool touch_grasp = true;  // ... also while the hand grasps (VisionLoopOptions::touch_grasp)
+  std::string zero_shot;    // a shape of world::ZeroShotShapes() replaces the task object
+  std::string vision;       // a vision model file: the pipeline sees through the head camera
   std::string place = "scripted";  // a place policy file (simhuman train --task place)
 };
 

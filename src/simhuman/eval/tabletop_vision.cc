@@ -174,16 +174,6 @@ core::Status TabletopVision::OnStep(const mjData* d) {
     const Timed& a = queue_.front();
     arrived_.push_back(a.e);
     touch_ = a.touch;
-    if (o_.touch && o_.touch_grasp && !held_ && planned_.shape != 2 && !a.touch.empty()) {
-      // grasping: where the hand touches the object moves the planned estimate's centre (its up
-      // axis stays: turned by the touch of a closing hand, the grasp prior tipped placements)
-      std::vector<perceive::TouchContact> world_touch;
-      for (const perceive::TouchContact& c : a.touch)
-        world_touch.push_back({a.hand_rot * c.point + a.hand_pos, a.hand_rot * c.normal});
-      Eigen::Vector3d up = planned_.up;
-      perceive::RefineHeldByTouch(world_touch, 0.5 * planned_.width_m, o_.touch_refine,
-                                  &planned_.centre, &up);
-    }
     if (static_cast<int>(arrived_.size()) > std::max(1, o_.smooth_frames)) arrived_.pop_front();
     if (a.in_hand && o_.in_hand_frames > 0) {
       in_hand_.push_back({a.t, a.hand_rot.transpose() * (a.e.centre - a.hand_pos),
@@ -193,6 +183,24 @@ core::Status TabletopVision::OnStep(const mjData* d) {
     queue_.pop_front();
   }
   return absl::OkStatus();
+}
+
+control::manip::ObjectView TabletopVision::GraspView(const mjData* d) const {
+  perceive::ObjectEstimate e = planned_;
+  if (!o_.touch || !o_.touch_grasp || planned_.shape == 2) return ToView(e);
+  // the hand's touch now (a tactile sense, read with the hand's control: no camera delay)
+  const std::vector<perceive::TouchContact> felt =
+      perceive::HandTouch(world_->model(), d, hand_geom_, hand_body_, object_body_);
+  if (felt.empty()) return ToView(e);
+  const Eigen::Matrix3d r =
+      Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * hand_body_);
+  const Eigen::Vector3d p(d->xpos + 3 * hand_body_);
+  std::vector<perceive::TouchContact> world_touch;
+  for (const perceive::TouchContact& c : felt)
+    world_touch.push_back({r * c.point + p, r * c.normal});
+  perceive::RefineHeldByTouch(world_touch, 0.5 * planned_.width_m, o_.touch_refine, &e.centre,
+                              &e.up);
+  return ToView(e);
 }
 
 namespace {
@@ -214,7 +222,8 @@ void MedianInHand(const std::vector<const TabletopVision::InHand*>& frames, Eige
 control::manip::ObjectView TabletopVision::View(const mjData* d, bool held) const {
   if (held && !held_) held_since_ = d->time;
   held_ = held_ || held;
-  if (!held || arrived_.empty()) return ToView(planned_);
+  if (!held) return GraspView(d);
+  if (arrived_.empty()) return ToView(planned_);
   // in the hand's frame: the frames since the grip closed, carried by the hand's pose now
   std::vector<const InHand*> use;
   for (const InHand& h : in_hand_) {

@@ -57,10 +57,13 @@ struct VisionLoopOptions {
   /// and cylinders: place 122 / 134 and stack 101 / 138, against 121 and 97 without
   /// (docs/BENCHMARKS.md, issue 16 session 48).
   bool touch = true;
-  /// With touch, also while the hand closes: the touched side faces move the planned
-  /// estimate's centre (its up axis stays), so that the grasp and the grasp prior start from
-  /// where the object is. Off by default: with it, over the same 400, stack 103 but place 117.
-  bool touch_grasp = false;
+  /// With touch, also while the hand grasps: the object as the grasp sees it is the planned
+  /// estimate corrected by where the hand touches it now (its centre and up axis, as for the
+  /// held object), so that the grasp follows an object its palm pushes and its tilt guard sees
+  /// one that tips; the grasp prior keeps the planned estimate. Touch is read with the hand's
+  /// control, without the camera's delay. Over the tabletop suite's 400 boxes and cylinders
+  /// (docs/BENCHMARKS.md, issue 16 session 49): see there.
+  bool touch_grasp = true;
   perceive::TouchRefineOptions touch_refine;
   /// Task planning's estimates fitted to the outlines they cast in the frame
   /// (perceive/vision/silhouette.h): the grasp and the stack target are planned from them.
@@ -129,6 +132,8 @@ class TabletopVision {
  private:
   TabletopVision() = default;
   control::manip::ObjectView ToView(const perceive::ObjectEstimate& e) const;
+  /// What the grasp sees of the object before it is held (VisionLoopOptions::touch_grasp).
+  control::manip::ObjectView GraspView(const mjData* d) const;
 
   VisionLoopOptions o_;
   std::unique_ptr<perceive::VisionModel> model_;

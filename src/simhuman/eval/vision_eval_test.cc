@@ -229,8 +229,8 @@ TEST(TabletopVisionTest, TheHeldObjectsEstimateMovesWithTheHandIntegration) {
   }
 }
 
-// With touch_grasp, what the closing hand touches moves the planned estimate: the "hand" is another
-// object of the scene pressed against the moved one's side (its face square to the line
+// With touch_grasp, what the hand touches corrects the object the grasp sees: the "hand" is
+// another object of the scene pressed against the moved one's side (its face square to the line
 // between them); with touch the estimate's centre lies the object's half width behind the
 // touched face, without it the estimate stays the first frame's.
 TEST(TabletopVisionTest, TouchMovesTheGraspedObjectsEstimateOntoTheTouchedFaceIntegration) {
@@ -298,7 +298,7 @@ TEST(TabletopVisionTest, TouchMovesTheGraspedObjectsEstimateOntoTheTouchedFaceIn
     }
     const control::manip::ObjectView felt = goal.observe(d, false);
     if (touch) {
-      // (the first frame's estimate lies 2.9 mm off this) the estimate's centre lies a half width
+      // (the first frame's estimate lies 1.2 mm off this) the estimate's centre lies a half width
       // (as estimated) behind the touched face
       const double face = (at - pusher_half * side).dot(side) + 0.5 * depth;
       EXPECT_NEAR(face - felt.centre.dot(side), 0.5 * (*vision)->planned_width_m(), 0.0005);
