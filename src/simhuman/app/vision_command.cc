@@ -108,6 +108,8 @@ int VisionEvalCommand(const EvalFlags& flags, std::ostream& out, std::ostream& e
         for (const perceive::ObjectTruth& t : f.truth) {
           if (t.pixels > 0) truth.push_back(t.centre);
         }
+        // planning: the outlines the fitted estimates cast, then the estimates
+        if (f.stage == "planning" && o.silhouette) perceive::DrawOutlines(f.camera, est, &rgb);
         perceive::DrawEstimates(f.camera, est, truth, &rgb);
         sheet.push_back(std::move(rgb));
         w = f.camera.width;

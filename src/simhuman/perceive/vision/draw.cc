@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "simhuman/perceive/vision/silhouette.h"
+
 namespace simhuman::perceive {
 
 namespace {
@@ -62,6 +64,25 @@ void DrawEstimates(const PinholeCamera& cam, const std::vector<ObjectEstimate>& 
       // the shape as a mark beside the cross: box 2 dots, cylinder 3, sphere 1 (none in between)
       for (int k = 0; k <= e.shape; ++k)
         Dot(cam, static_cast<int>(u) - 7, static_cast<int>(v) - 4 + 3 * k, r, c, rgb);
+    }
+  }
+}
+
+void DrawOutlines(const PinholeCamera& cam, const std::vector<ObjectEstimate>& estimates,
+                  std::vector<uint8_t>* rgb) {
+  const int w = cam.width, h = cam.height;
+  for (const ObjectEstimate& e : estimates) {
+    std::vector<char> in(static_cast<size_t>(w) * h, 0);
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x)
+        in[y * w + x] = RayHitsUpright(e, cam.eye, cam.Ray(x + 0.5, y + 0.5));
+    }
+    for (int y = 1; y + 1 < h; ++y) {
+      for (int x = 1; x + 1 < w; ++x) {
+        const int i = y * w + x;
+        if (!in[i] || (in[i - 1] && in[i + 1] && in[i - w] && in[i + w])) continue;
+        for (int k = 0; k < 3; ++k) (*rgb)[3 * static_cast<size_t>(i) + k] = 255;
+      }
     }
   }
 }

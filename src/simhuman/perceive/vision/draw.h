@@ -15,4 +15,10 @@ namespace simhuman::perceive {
 void DrawEstimates(const PinholeCamera& cam, const std::vector<ObjectEstimate>& estimates,
                    const std::vector<Eigen::Vector3d>& true_centres, std::vector<uint8_t>* rgb);
 
+/// The outline each upright estimate casts (silhouette.h: the solid its shape, size, yaw and
+/// place give, ray by ray through pixel centres), drawn in white where a pixel the solid covers
+/// borders one it does not.
+void DrawOutlines(const PinholeCamera& cam, const std::vector<ObjectEstimate>& estimates,
+                  std::vector<uint8_t>* rgb);
+
 }  // namespace simhuman::perceive
