@@ -98,13 +98,18 @@ TEST(TouchTest, TouchThatWouldTurnOrShiftTooFarIsNotBelieved) {
   wide.max_turn_rad = 0.5;
   EXPECT_TRUE(RefineHeldByTouch(touch, kRadius, wide, &centre, &up));
   EXPECT_LT(AngleDeg(up, r.col(2)), 0.5);
-  // faces 4 cm from where the estimate puts them
-  touch = {OnFace(Eigen::Vector3d(0.04, 0, 0), Eigen::Matrix3d::Identity(),
+  // faces 9 cm from where the estimate puts them
+  touch = {OnFace(Eigen::Vector3d(0.09, 0, 0), Eigen::Matrix3d::Identity(),
                   Eigen::Vector3d::UnitX(), 0.0, 0.0)};
   centre = Eigen::Vector3d::Zero();
   up = Eigen::Vector3d::UnitZ();
   EXPECT_FALSE(RefineHeldByTouch(touch, kRadius, {}, &centre, &up));
   EXPECT_EQ(centre, Eigen::Vector3d::Zero());
+  // 5 cm is a slip in the grip, and believed: the face lies a half width from the new centre
+  touch = {OnFace(Eigen::Vector3d(0.05, 0, 0), Eigen::Matrix3d::Identity(),
+                  Eigen::Vector3d::UnitX(), 0.0, 0.0)};
+  EXPECT_TRUE(RefineHeldByTouch(touch, kRadius, {}, &centre, &up));
+  EXPECT_NEAR(centre.x(), 0.05, 0.005);
 }
 
 TEST(TouchTest, HandTouchReadsContactsInTheHandsFrameFacingOutOfTheObject) {
