@@ -60,6 +60,67 @@ core::StatusOr<std::unique_ptr<TabletopVision>> TabletopVision::Create(
   return v;
 }
 
+core::Status TabletopVision::Look(const world::SimWorld& world, const mjData* d,
+                                  const Eigen::Vector3d& gaze,
+                                  const perceive::SilhouetteOptions& fit, PlanningLook* look) {
+  look->cam = camera_->Aim(world, d, 0, gaze);
+  auto t0 = Clock::now();
+  SH_RETURN_IF_ERROR(camera_->Capture(d, look->cam, &look->rgb));
+  render_s_ += Since(t0);
+  t0 = Clock::now();
+  look->est = model_->Estimate(look->rgb, look->cam);
+  vision_s_ += Since(t0);
+  look->fits.assign(look->est.size(), perceive::SilhouetteFit());
+  if (o_.silhouette) {
+    t0 = Clock::now();
+    look->fits =
+        perceive::FitRestingSilhouettes(look->rgb, look->cam, model_->colours(), fit, &look->est);
+    fit_s_ += Since(t0);
+  }
+  ++frames_;
+  return absl::OkStatus();
+}
+
+core::Status TabletopVision::LookAtTable(const world::SimWorld& world, const mjData* d,
+                                         const perceive::SilhouetteOptions& fit,
+                                         std::vector<perceive::ObjectEstimate>* est,
+                                         std::vector<perceive::SilhouetteFit>* fits) {
+  PlanningLook first;
+  SH_RETURN_IF_ERROR(Look(world, d, perceive::PlanningGaze(), fit, &first));
+  *est = first.est;
+  *fits = first.fits;
+  if (!o_.second_look) return absl::OkStatus();
+  // objects the frame's edge cuts are not estimated (vision_model.h): look at each (the
+  // largest first, at most two), aiming where its blob's centre meets the table's top
+  std::vector<perceive::Blob> blobs = perceive::FindBlobs(
+      first.rgb, first.cam.width, first.cam.height, model_->colours(), model_->min_pixels);
+  const int w = first.cam.width, h = first.cam.height;
+  int looks = 0;
+  for (const perceive::Blob& b : blobs) {
+    if (looks == 2) break;
+    if (b.x0 > 0 && b.y0 > 0 && b.x1 < w - 1 && b.y1 < h - 1) continue;
+    const Eigen::Vector3d ray = first.cam.Ray(b.cu, b.cv);
+    if (ray.z() > -1e-3) continue;
+    const double s = (fit.table_z - first.cam.eye.z()) / ray.z();
+    if (s <= 0) continue;
+    PlanningLook again;
+    SH_RETURN_IF_ERROR(Look(world, d, first.cam.eye + s * ray, fit, &again));
+    ++looks;
+    for (size_t i = 0; i < again.est.size(); ++i) {
+      const perceive::ObjectEstimate& e = again.est[i];
+      const bool known =
+          std::any_of(est->begin(), est->end(), [&](const perceive::ObjectEstimate& k) {
+            return k.colour == e.colour && k.shape == e.shape &&
+                   (k.centre - e.centre).norm() < o_.same_object_m;
+          });
+      if (known) continue;
+      est->push_back(e);
+      fits->push_back(again.fits[i]);
+    }
+  }
+  return absl::OkStatus();
+}
+
 core::Status TabletopVision::Begin(world::SimWorld& world, const core::SceneCatalog& catalog,
                                    const std::string& object_id, const std::string& support_id,
                                    control::manip::TabletopGoal* goal, int hand_body) {
@@ -79,27 +140,15 @@ core::Status TabletopVision::Begin(world::SimWorld& world, const core::SceneCata
   held_ = false;
   const mjData* d = world.data();
   next_t_ = d->time;
-  // task planning: one frame of the table
-  const perceive::PinholeCamera cam = camera_->Aim(world, d, 0, perceive::PlanningGaze());
-  std::vector<uint8_t> rgb;
-  auto t0 = Clock::now();
-  SH_RETURN_IF_ERROR(camera_->Capture(d, cam, &rgb));
-  render_s_ += Since(t0);
-  t0 = Clock::now();
-  std::vector<perceive::ObjectEstimate> est = model_->Estimate(rgb, cam);
-  vision_s_ += Since(t0);
-  std::vector<perceive::SilhouetteFit> fits(est.size());
-  if (o_.silhouette) {
-    t0 = Clock::now();
-    perceive::SilhouetteOptions fit = o_.silhouette_fit;
-    // the table's top: the fixed surroundings the human sits in (as a place task's location)
-    for (const core::CatalogObject& obj : catalog.objects) {
-      if (obj.type == "table") fit.table_z = world::WorldBounds(obj).second.z();
-    }
-    fits = perceive::FitRestingSilhouettes(rgb, cam, model_->colours(), fit, &est);
-    fit_s_ += Since(t0);
+  // task planning: one frame of the table, and a second look at what its edge cuts
+  perceive::SilhouetteOptions fit = o_.silhouette_fit;
+  // the table's top: the fixed surroundings the human sits in (as a place task's location)
+  for (const core::CatalogObject& obj : catalog.objects) {
+    if (obj.type == "table") fit.table_z = world::WorldBounds(obj).second.z();
   }
-  ++frames_;
+  std::vector<perceive::ObjectEstimate> est;
+  std::vector<perceive::SilhouetteFit> fits;
+  SH_RETURN_IF_ERROR(LookAtTable(world, d, fit, &est, &fits));
   SH_ASSIGN_OR_RETURN(moved_, Find(catalog, object_id, est));
   planned_ = est[moved_];
   moved_fit_ = fits[moved_];

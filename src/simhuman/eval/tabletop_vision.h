@@ -69,6 +69,12 @@ struct VisionLoopOptions {
   /// (perceive/vision/silhouette.h): the grasp and the stack target are planned from them.
   bool silhouette = true;
   perceive::SilhouetteOptions silhouette_fit;
+  /// Task planning looks again at the objects its frame's edge cuts (the network estimates
+  /// only whole blobs): the camera turns to where each such blob meets the table's top (at
+  /// most two looks), and the objects that frame sees whole join the plan's estimates unless
+  /// one of their colour and shape is already estimated within `same_object_m`.
+  bool second_look = true;
+  double same_object_m = 0.05;
 };
 
 /// The camera and the vision model across episodes (one OpenGL context; each episode's world is
@@ -131,6 +137,21 @@ class TabletopVision {
 
  private:
   TabletopVision() = default;
+  struct PlanningLook {
+    perceive::PinholeCamera cam;
+    std::vector<uint8_t> rgb;
+    std::vector<perceive::ObjectEstimate> est;
+    std::vector<perceive::SilhouetteFit> fits;
+  };
+  /// One planning frame at `gaze`: captured, estimated and (with o_.silhouette) fitted.
+  core::Status Look(const world::SimWorld& world, const mjData* d, const Eigen::Vector3d& gaze,
+                    const perceive::SilhouetteOptions& fit, PlanningLook* look);
+  /// Task planning's estimates: the table from the planning gaze, then (o_.second_look) a look
+  /// at each object that frame's edge cuts, adding the objects not already seen.
+  core::Status LookAtTable(const world::SimWorld& world, const mjData* d,
+                           const perceive::SilhouetteOptions& fit,
+                           std::vector<perceive::ObjectEstimate>* est,
+                           std::vector<perceive::SilhouetteFit>* fits);
   control::manip::ObjectView ToView(const perceive::ObjectEstimate& e) const;
   /// What the grasp sees of the object before it is held (VisionLoopOptions::touch_grasp).
   control::manip::ObjectView GraspView(const mjData* d) const;
