@@ -86,7 +86,7 @@ TEST(TouchTest, WithoutSideContactsNothingChanges) {
 
 TEST(TouchTest, TouchThatWouldTurnOrShiftTooFarIsNotBelieved) {
   // a box tilted 17 degrees from the estimate (its faces within side_cos of square to it): a
-  // held box turns that far in the grip, and touch is believed; with a 12-degree bound it is not
+  // held box turns that far in the grip, and touch is believed; with a 0.2 rad bound it is not
   const Eigen::Matrix3d r = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()).toRotationMatrix();
   std::vector<TouchContact> touch = {
       OnFace(Eigen::Vector3d::Zero(), r, Eigen::Vector3d::UnitX(), 0.0, 0.0),
